@@ -1,0 +1,38 @@
+#include "fluid_forces.hpp"
+
+#include "sph_kernels.hpp"
+
+namespace mssph::reference {
+
+void compute_pressure_viscosity_forces(const ParticleSetup& setup, const NeighbourLists& neighbours,
+                                       ParticleState& state) {
+  const SpikyGradient grad_w(setup.smoothing_length);
+  const ViscosityLaplacian lap_w(setup.smoothing_length);
+  const std::size_t n = setup.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    Eigen::Vector3d internal = Eigen::Vector3d::Zero();
+    Eigen::Vector3d interaction = Eigen::Vector3d::Zero();
+    const BodySetup& body_i = setup.bodies[setup.body[i]];
+    if (body_i.kind != BodyKind::boundary) {
+      for (const std::size_t* jp = neighbours.begin(i); jp != neighbours.end(i); ++jp) {
+        const std::size_t j = *jp;
+        if (j == i) continue;
+        const bool same_body = setup.body[j] == setup.body[i];
+        if (same_body && body_i.kind != BodyKind::fluid) continue;
+        const BodySetup& body_j = setup.bodies[setup.body[j]];
+        const Eigen::Vector3d r_ij = state.position[i] - state.position[j];
+        const double volumes = state.volume[i] * state.volume[j];
+        const Eigen::Vector3d pressure = -volumes * (state.pressure[i] + state.pressure[j]) * grad_w(r_ij);
+        const double mu = 0.5 * (body_i.material.viscosity + body_j.material.viscosity);
+        const Eigen::Vector3d viscosity =
+            mu * volumes * lap_w(r_ij.norm()) * (state.velocity[j] - state.velocity[i]);
+        (same_body ? internal : interaction) += pressure + viscosity;
+      }
+    }
+    state.internal_force[i] = internal;
+    state.interaction_force[i] = interaction;
+  }
+}
+
+}  // namespace mssph::reference

@@ -1,0 +1,169 @@
+#include "reference_backend.hpp"
+
+#include "density.hpp"
+#include "fluid_forces.hpp"
+#include "rigid_body_dynamics.hpp"
+#include "util/errors.hpp"
+#include "util/host_info.hpp"
+
+namespace mssph::reference {
+namespace {
+
+class PhaseTimer {
+ public:
+  explicit PhaseTimer(double& seconds) : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
+  ~PhaseTimer() { seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  PhaseTimer(const PhaseTimer&) = delete;
+  PhaseTimer& operator=(const PhaseTimer&) = delete;
+
+ private:
+  double& seconds_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+ReferenceBackend::ReferenceBackend(ParticleSetup setup) : setup_(std::move(setup)) {
+  for (const BodySetup& body : setup_.bodies) {
+    if (body.kind == BodyKind::deformable) {
+      throw InputError("body \"" + body.name +
+                       "\": deformable bodies are not available yet in this build of the reference backend");
+    }
+  }
+  particles_.resize(setup_.size());
+  particles_.position = setup_.position;
+  particles_.velocity = setup_.velocity;
+  for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
+    if (setup_.bodies[b].moves_as_rigid_body()) rigid_bodies_.push_back(make_rigid_body_state(setup_.bodies[b], b));
+  }
+}
+
+BackendInfo ReferenceBackend::info() const { return {"reference", host_cpu_name(), "float64"}; }
+
+RigidBodyState* ReferenceBackend::rigid_body_of(std::size_t body) {
+  for (RigidBodyState& r : rigid_bodies_) {
+    if (r.body == body) return &r;
+  }
+  return nullptr;
+}
+
+void ReferenceBackend::set_external_wrench(std::size_t body, const Eigen::Vector3d& force,
+                                           const Eigen::Vector3d& torque) {
+  RigidBodyState* rigid = rigid_body_of(body);
+  if (!rigid) throw std::invalid_argument("external wrench on a body that is not a movable rigid body");
+  rigid->external_force = force;
+  rigid->external_torque = torque;
+}
+
+void ReferenceBackend::compute_forces() {
+  {
+    PhaseTimer timer(phase_seconds_[kNeighbours]);
+    neighbours_ = find_neighbours(particles_.position, setup_.smoothing_length);
+  }
+  {
+    PhaseTimer timer(phase_seconds_[kDensity]);
+    compute_densities(setup_, neighbours_, particles_);
+  }
+  {
+    PhaseTimer timer(phase_seconds_[kForces]);
+    compute_pressure_viscosity_forces(setup_, neighbours_, particles_);
+    for (RigidBodyState& body : rigid_bodies_) sum_interaction_wrench(setup_, particles_, body);
+  }
+}
+
+// Paper 3.2: (1) rotations of deformable particles [with the deformable bodies], (2) densities,
+// (3) internal and interaction forces, (4) integration: leap-frog for fluid particles, rigid-body
+// dynamics for rigid bodies.
+void ReferenceBackend::step() {
+  compute_forces();
+  PhaseTimer timer(phase_seconds_[kIntegrate]);
+  integrate();
+  time_ += setup_.dt;
+}
+
+// Leap-frog with staggered velocities: v_{n+1/2} = v_{n-1/2} + a_n dt, x_{n+1} = x_n + v_{n+1/2} dt,
+// where a_n = f_n / m + g. Boundary and fixed particles do not move; rigid particles follow their
+// body.
+void ReferenceBackend::integrate() {
+  const double dt = setup_.dt;
+  const std::size_t n = setup_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const BodySetup& body = setup_.bodies[setup_.body[i]];
+    if (body.kind != BodyKind::fluid && body.kind != BodyKind::deformable) continue;
+    if (setup_.fixed[i]) {
+      particles_.velocity[i].setZero();
+      continue;
+    }
+    const Eigen::Vector3d force = particles_.internal_force[i] + particles_.interaction_force[i];
+    particles_.velocity[i] += (force / setup_.mass[i] + setup_.gravity) * dt;
+    particles_.position[i] += particles_.velocity[i] * dt;
+  }
+  for (RigidBodyState& body : rigid_bodies_) {
+    integrate_rigid_body(body, setup_.gravity, dt);
+    place_rigid_particles(setup_, body, particles_);
+  }
+}
+
+std::vector<BodyState> ReferenceBackend::body_states() {
+  std::vector<BodyState> states(setup_.bodies.size());
+  for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
+    const BodySetup& body = setup_.bodies[b];
+    BodyState& s = states[b];
+    for (std::size_t i = body.first; i < body.first + body.count; ++i) {
+      s.max_speed = std::max(s.max_speed, particles_.velocity[i].norm());
+      s.interaction_force += particles_.interaction_force[i];
+    }
+    if (const RigidBodyState* rigid = rigid_body_of(b)) {
+      s.mass = rigid->mass;
+      s.centre_of_mass = rigid->position;
+      s.linear_momentum = rigid->mass * rigid->velocity;
+      s.angular_momentum = rigid->angular_momentum;
+      s.orientation = rigid->orientation;
+      s.angular_velocity = rigid->angular_velocity();
+      s.kinetic_energy = 0.5 * rigid->mass * rigid->velocity.squaredNorm() + 0.5 * s.angular_velocity.dot(s.angular_momentum);
+      s.interaction_force = rigid->interaction_force;
+      s.interaction_torque = rigid->interaction_torque;
+      continue;
+    }
+    // Particle bodies (and static ones): mass-weighted sums with the SPH masses.
+    for (std::size_t i = body.first; i < body.first + body.count; ++i) {
+      s.mass += setup_.mass[i];
+      s.centre_of_mass += setup_.mass[i] * particles_.position[i];
+    }
+    s.centre_of_mass /= s.mass;
+    if (body.kind == BodyKind::rigid) s.orientation = body.orientation;  // fixed rigid body
+    for (std::size_t i = body.first; i < body.first + body.count; ++i) {
+      const Eigen::Vector3d arm = particles_.position[i] - s.centre_of_mass;
+      s.linear_momentum += setup_.mass[i] * particles_.velocity[i];
+      s.angular_momentum += setup_.mass[i] * arm.cross(particles_.velocity[i]);
+      s.kinetic_energy += 0.5 * setup_.mass[i] * particles_.velocity[i].squaredNorm();
+      s.interaction_torque += arm.cross(particles_.interaction_force[i]);
+    }
+  }
+  return states;
+}
+
+ParticleSnapshot ReferenceBackend::snapshot() {
+  ParticleSnapshot out;
+  const std::size_t n = setup_.size();
+  out.position.reserve(3 * n);
+  out.velocity.reserve(3 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int a = 0; a < 3; ++a) {
+      out.position.push_back(static_cast<float>(particles_.position[i][a]));
+      out.velocity.push_back(static_cast<float>(particles_.velocity[i][a]));
+    }
+    out.density.push_back(static_cast<float>(particles_.density[i]));
+    out.pressure.push_back(static_cast<float>(particles_.pressure[i]));
+  }
+  return out;
+}
+
+std::vector<std::string> ReferenceBackend::phase_names() const { return {"neighbours", "density", "forces", "integrate"}; }
+
+std::vector<double> ReferenceBackend::last_phase_seconds() const {
+  return {phase_seconds_.begin(), phase_seconds_.end()};
+}
+
+}  // namespace mssph::reference

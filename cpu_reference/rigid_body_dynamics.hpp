@@ -1,0 +1,26 @@
+#pragma once
+// Rigid bodies as particle sets (Solenthaler et al. 2007 unified model; paper 3.1.1 and eq. 8,
+// 9): the forces on a body's particles are summed into one wrench, the body is integrated as a
+// rigid body, and its particles are placed back from their body-frame offsets.
+#include "particle_state.hpp"
+#include "scene/particle_setup.hpp"
+
+namespace mssph::reference {
+
+RigidBodyState make_rigid_body_state(const BodySetup& body, std::size_t index);
+
+// Paper eq. 8, 9 without the device term: F = sum_i f_i, tau = sum_i (x_i - x_com) x f_i over the
+// body's particles, from the interaction forces (a rigid body has no internal forces).
+void sum_interaction_wrench(const ParticleSetup& setup, const ParticleState& particles, RigidBodyState& body);
+
+// Semi-implicit (symplectic) Euler, the rigid-body counterpart of the particles' leap-frog:
+//   v += (F_interaction + F_external) / M dt + g dt,   L += (tau_interaction + tau_external) dt,
+//   x += v dt,   q = exp(omega dt) q with omega = I_world^-1 L (I_world = R I_body R^T).
+// Integrating the angular momentum L rather than omega keeps L exactly constant without torque
+// and carries the gyroscopic term omega x I omega implicitly.
+void integrate_rigid_body(RigidBodyState& body, const Eigen::Vector3d& gravity, double dt);
+
+// x_i = x_com + R r0_i, v_i = v + omega x (x_i - x_com) for the body's particles.
+void place_rigid_particles(const ParticleSetup& setup, const RigidBodyState& body, ParticleState& particles);
+
+}  // namespace mssph::reference

@@ -1,0 +1,11 @@
+#pragma once
+// The subcommands of the mssph command line. Each registers itself on the CLI11 app and returns
+// the callback's exit code through the shared slot.
+#include <CLI/CLI.hpp>
+
+namespace mssph::cli {
+
+void add_run_command(CLI::App& app, int& exit_code);
+void add_info_command(CLI::App& app, int& exit_code);
+
+}  // namespace mssph::cli

@@ -1,0 +1,101 @@
+#pragma once
+// A scene as read from its JSON file: typed, validated, SI units throughout. The keys and their
+// units are documented in configs/README.md and checked by configs/scene.schema.json.
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mssph {
+
+enum class BodyKind { fluid, deformable, rigid, boundary };
+enum class ShapeType { box, sphere, container };
+enum class StrainMeasure { green_saint_venant, cauchy };
+
+const char* to_string(BodyKind kind);
+const char* to_string(StrainMeasure strain);
+
+struct Shape {
+  ShapeType type = ShapeType::box;
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();  // box: full edge lengths; container: inner size [m]
+  double radius = 0.0;                             // sphere [m]
+  int wall_layers = 0;                             // container: wall thickness in particle layers
+  bool open_top = true;                            // container
+};
+
+// Material parameters of one body (any subset may be irrelevant to its kind).
+struct Material {
+  double rest_density = 0.0;        // rho0 [kg/m^3], SPH rest density of the EOS
+  double pressure_stiffness = 0.0;  // k [m^2/s^2] in P = k (rho - rho0); sound speed c = sqrt(k)
+  double viscosity = 0.0;           // mu [Pa s], paper eq. 3 (and eq. 7 between bodies)
+  // Deformable bodies only (paper eq. 4-6):
+  double young_modulus = 0.0;       // E [Pa]
+  double poisson_ratio = 0.0;       // nu [-], in (-1, 0.5)
+  StrainMeasure strain = StrainMeasure::green_saint_venant;
+  double damping = 0.0;                   // mass-proportional damping rate [1/s], 0 = off
+  double zero_energy_stiffness = 0.0;     // hourglass control coefficient [-], 0 = off
+  bool kernel_gradient_correction = false;
+};
+
+// An axis-aligned region in world coordinates [m]; particles of a deformable body inside it are
+// held in place (e.g. a block glued to the ground).
+struct Region {
+  Eigen::Vector3d min = Eigen::Vector3d::Zero();
+  Eigen::Vector3d max = Eigen::Vector3d::Zero();
+  bool contains(const Eigen::Vector3d& p) const {
+    return (p.array() >= min.array()).all() && (p.array() <= max.array()).all();
+  }
+};
+
+struct BodyConfig {
+  std::string name;
+  BodyKind kind = BodyKind::fluid;
+  Shape shape;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // centre of the shape [m]
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // [m/s]
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rigid bodies [rad/s]
+  Material material;
+  double density = 0.0;  // rigid bodies: physical density for mass and inertia [kg/m^3]
+  bool fixed = false;    // rigid bodies: immovable (then it acts as a boundary)
+  std::vector<Region> fixed_regions;  // deformable bodies
+};
+
+struct SimulationConfig {
+  double dt = 0.0;                 // [s]
+  double duration = 0.0;           // [s]
+  Eigen::Vector3d gravity{0.0, 0.0, -9.81};  // [m/s^2]
+  double particle_spacing = 0.0;   // lattice spacing dx [m]
+  double smoothing_length = 0.0;   // kernel support radius h [m]
+  std::uint64_t seed = 0;          // for the lattice jitter
+  double jitter = 0.0;             // random lattice perturbation, fraction of dx
+  double max_speed = 0.0;          // blow-up bound on any particle's speed [m/s]
+};
+
+struct ProxyConfig {
+  std::string body;  // the rigid body the haptic device drives
+};
+
+struct OutputConfig {
+  double log_interval = 0.0;       // time-series sampling interval [s]; 0 = every step
+  double snapshot_interval = 0.0;  // particle snapshots [s]; 0 = none
+  double flush_interval = 2.0;     // wall-clock seconds between HDF5 flushes
+};
+
+struct Scene {
+  std::string name;
+  std::string description;
+  std::string source_file;    // the file it was read from
+  nlohmann::json document;    // the document after --set overrides, recorded verbatim in the log
+  SimulationConfig simulation;
+  std::vector<BodyConfig> bodies;
+  std::optional<ProxyConfig> proxy;
+  OutputConfig output;
+
+  const BodyConfig* find_body(const std::string& body_name) const;
+};
+
+}  // namespace mssph

@@ -1,0 +1,342 @@
+#include "config/scene_loader.hpp"
+
+#include "config/json_reader.hpp"
+#include "util/errors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace mssph {
+namespace {
+
+using Eigen::Vector3d;
+
+// Material keys that only deformable bodies may carry inline.
+constexpr const char* kElasticKeys[] = {"young_modulus", "poisson_ratio", "strain", "damping",
+                                        "zero_energy_stiffness", "kernel_gradient_correction"};
+
+bool is_elastic_key(const std::string& key) {
+  for (const char* k : kElasticKeys) {
+    if (key == k) return true;
+  }
+  return false;
+}
+
+// Reads the material keys present in `reader` on top of `material`.
+void read_material_keys(const JsonReader& reader, Material& material) {
+  material.rest_density = reader.number_or("rest_density", material.rest_density, Interval::positive());
+  material.pressure_stiffness =
+      reader.number_or("pressure_stiffness", material.pressure_stiffness, Interval::positive());
+  material.viscosity = reader.number_or("viscosity", material.viscosity, Interval::non_negative());
+  material.young_modulus = reader.number_or("young_modulus", material.young_modulus, Interval::positive());
+  material.poisson_ratio = reader.number_or("poisson_ratio", material.poisson_ratio, Interval::open(-1.0, 0.5));
+  if (reader.has("strain")) {
+    material.strain = reader.choice("strain", {"green_saint_venant", "cauchy"}) == "cauchy"
+                          ? StrainMeasure::cauchy
+                          : StrainMeasure::green_saint_venant;
+  }
+  material.damping = reader.number_or("damping", material.damping, Interval::non_negative());
+  material.zero_energy_stiffness =
+      reader.number_or("zero_energy_stiffness", material.zero_energy_stiffness, Interval::non_negative());
+  material.kernel_gradient_correction =
+      reader.boolean_or("kernel_gradient_correction", material.kernel_gradient_correction);
+}
+
+struct MaterialEntry {
+  Material material;
+  bool has_young = false;
+  bool has_poisson = false;
+};
+
+std::map<std::string, MaterialEntry> read_materials(const JsonReader& root) {
+  std::map<std::string, MaterialEntry> materials;
+  const auto section = root.optional_child("materials");
+  if (!section) return materials;
+  for (const auto& [name, reader] : section->members()) {
+    reader.allow_only({"rest_density", "pressure_stiffness", "viscosity", "young_modulus", "poisson_ratio",
+                       "strain", "damping", "zero_energy_stiffness", "kernel_gradient_correction",
+                       "description"});
+    MaterialEntry entry;
+    read_material_keys(reader, entry.material);
+    entry.has_young = reader.has("young_modulus");
+    entry.has_poisson = reader.has("poisson_ratio");
+    materials.emplace(name, entry);
+  }
+  return materials;
+}
+
+SimulationConfig read_simulation(const JsonReader& root) {
+  const JsonReader s = root.child("simulation");
+  s.allow_only({"dt", "duration", "gravity", "particle_spacing", "smoothing_length", "seed", "jitter",
+                "max_speed"});
+  SimulationConfig sim;
+  sim.dt = s.number("dt", Interval::positive());
+  sim.duration = s.number("duration", Interval::positive());
+  if (sim.dt > sim.duration) s.fail("dt", "expected dt <= duration (" + std::to_string(sim.duration) + " s)");
+  sim.gravity = s.vec3_or("gravity", sim.gravity);
+  sim.particle_spacing = s.number("particle_spacing", Interval::positive());
+  sim.smoothing_length = s.number_or("smoothing_length", 2.0 * sim.particle_spacing, Interval::positive());
+  if (sim.smoothing_length < sim.particle_spacing || sim.smoothing_length > 4.0 * sim.particle_spacing) {
+    s.fail("smoothing_length", "expected a support radius h between 1 and 4 particle spacings (" +
+                                   std::to_string(sim.particle_spacing) + " m), got " +
+                                   std::to_string(sim.smoothing_length));
+  }
+  sim.seed = static_cast<std::uint64_t>(s.integer_or("seed", 0, Interval::non_negative()));
+  sim.jitter = s.number_or("jitter", 0.0, Interval{0.0, 0.25, false, false});
+  sim.max_speed = s.number_or("max_speed", 50.0, Interval::positive());
+  return sim;
+}
+
+Shape read_shape(const JsonReader& body, double smoothing_length, double spacing) {
+  const JsonReader s = body.child("shape");
+  if (!s.value().is_object()) s.fail_here("expected an object with a \"type\"");
+  const std::string type = s.choice("type", {"box", "sphere", "container"});
+  Shape shape;
+  if (type == "box") {
+    s.allow_only({"type", "size"});
+    shape.type = ShapeType::box;
+    shape.size = s.vec3("size", Interval::positive());
+  } else if (type == "sphere") {
+    s.allow_only({"type", "radius"});
+    shape.type = ShapeType::sphere;
+    shape.radius = s.number("radius", Interval::positive());
+  } else {
+    s.allow_only({"type", "inner_size", "wall_layers", "open_top"});
+    shape.type = ShapeType::container;
+    shape.size = s.vec3("inner_size", Interval::positive());
+    // Enough layers that a particle touching the wall sees a full kernel support of wall.
+    const auto default_layers = static_cast<long long>(std::ceil(smoothing_length / spacing - 1e-9));
+    shape.wall_layers = static_cast<int>(s.integer_or("wall_layers", default_layers, Interval::closed(1, 16)));
+    shape.open_top = s.boolean_or("open_top", true);
+  }
+  return shape;
+}
+
+BodyKind read_kind(const JsonReader& body) {
+  const std::string kind = body.choice("kind", {"fluid", "deformable", "rigid", "boundary"});
+  if (kind == "fluid") return BodyKind::fluid;
+  if (kind == "deformable") return BodyKind::deformable;
+  if (kind == "rigid") return BodyKind::rigid;
+  return BodyKind::boundary;
+}
+
+BodyConfig read_body(const std::string& name, const JsonReader& reader,
+                     const std::map<std::string, MaterialEntry>& materials, const SimulationConfig& sim) {
+  reader.allow_only({"kind", "shape", "position", "orientation", "velocity", "angular_velocity", "material",
+                     "rest_density", "pressure_stiffness", "viscosity", "young_modulus", "poisson_ratio",
+                     "strain", "damping", "zero_energy_stiffness", "kernel_gradient_correction", "density",
+                     "fixed", "fixed_regions", "description"});
+  BodyConfig body;
+  body.name = name;
+  body.kind = read_kind(reader);
+
+  // Keys that only mean something for some kinds are rejected elsewhere, so a typo in intent
+  // ("young_modulus" on a fluid) is caught instead of silently ignored.
+  for (const auto& [key, unused] : reader.value().items()) {
+    (void)unused;
+    if (is_elastic_key(key) && body.kind != BodyKind::deformable) {
+      reader.fail(key, std::string("applies to deformable bodies only (this body is ") + to_string(body.kind) + ")");
+    }
+    if ((key == "density" || key == "fixed" || key == "angular_velocity") && body.kind != BodyKind::rigid) {
+      reader.fail(key, std::string("applies to rigid bodies only (this body is ") + to_string(body.kind) + ")");
+    }
+    if (key == "fixed_regions" && body.kind != BodyKind::deformable) {
+      reader.fail(key, std::string("applies to deformable bodies only (this body is ") + to_string(body.kind) + ")");
+    }
+    if (key == "velocity" && body.kind == BodyKind::boundary) {
+      reader.fail(key, "a boundary does not move");
+    }
+  }
+
+  body.shape = read_shape(reader, sim.smoothing_length, sim.particle_spacing);
+  if (body.shape.type == ShapeType::container && body.kind != BodyKind::boundary) {
+    reader.child("shape").fail("type", "a container is a boundary shape; use kind \"boundary\"");
+  }
+  body.position = reader.vec3_or("position", body.position);
+  body.orientation = reader.quaternion_or("orientation", body.orientation);
+  body.velocity = reader.vec3_or("velocity", body.velocity);
+  body.angular_velocity = reader.vec3_or("angular_velocity", body.angular_velocity);
+
+  bool has_young = reader.has("young_modulus");
+  bool has_poisson = reader.has("poisson_ratio");
+  if (reader.has("material")) {
+    const std::string material_name = reader.string("material");
+    const auto it = materials.find(material_name);
+    if (it == materials.end()) {
+      std::string known;
+      for (const auto& [n, unused] : materials) known += (known.empty() ? "" : ", ") + n;
+      reader.fail("material", "no material named \"" + material_name + "\" in /materials" +
+                                  (known.empty() ? std::string(" (there are none)") : " (known: " + known + ")"));
+    }
+    body.material = it->second.material;
+    has_young = has_young || it->second.has_young;
+    has_poisson = has_poisson || it->second.has_poisson;
+  }
+  read_material_keys(reader, body.material);
+
+  const auto require = [&](bool present, const char* key, const char* why) {
+    if (!present) reader.fail(key, std::string("missing (inline or through \"material\"): ") + why);
+  };
+  const Material& m = body.material;
+  require(m.rest_density > 0.0, "rest_density", "the SPH rest density rho0 [kg/m^3] of every body");
+  require(m.pressure_stiffness > 0.0, "pressure_stiffness",
+          "the pressure stiffness k [m^2/s^2] of every body, used by interaction forces (paper eq. 7)");
+  if (body.kind == BodyKind::deformable) {
+    require(has_young, "young_modulus", "Young's modulus E [Pa] of a deformable body");
+    require(has_poisson, "poisson_ratio", "Poisson's ratio nu of a deformable body");
+  }
+  if (body.kind == BodyKind::rigid) {
+    body.density = reader.number("density", Interval::positive());
+    body.fixed = reader.boolean_or("fixed", false);
+  }
+  if (const auto regions = reader.optional_child("fixed_regions")) {
+    for (const JsonReader& r : regions->elements()) {
+      r.allow_only({"min", "max"});
+      Region region{r.vec3("min"), r.vec3("max")};
+      if ((region.min.array() > region.max.array()).any()) r.fail("max", "expected max >= min in every axis");
+      body.fixed_regions.push_back(region);
+    }
+  }
+  return body;
+}
+
+std::optional<ProxyConfig> read_proxy(const JsonReader& root, const std::vector<BodyConfig>& bodies) {
+  const auto section = root.optional_child("proxy");
+  if (!section) return std::nullopt;
+  section->allow_only({"body"});
+  ProxyConfig proxy;
+  proxy.body = section->string("body");
+  const auto it = std::find_if(bodies.begin(), bodies.end(), [&](const BodyConfig& b) { return b.name == proxy.body; });
+  if (it == bodies.end()) section->fail("body", "no body named \"" + proxy.body + "\" in /bodies");
+  if (it->kind != BodyKind::rigid || it->fixed) {
+    section->fail("body", "the proxy must be a movable rigid body; \"" + proxy.body + "\" is " +
+                              (it->fixed ? std::string("a fixed rigid body") : std::string(to_string(it->kind))));
+  }
+  return proxy;
+}
+
+OutputConfig read_output(const JsonReader& root, const SimulationConfig& sim) {
+  OutputConfig out;
+  const auto section = root.optional_child("output");
+  if (!section) return out;
+  section->allow_only({"log_interval", "snapshot_interval", "flush_interval"});
+  out.log_interval = section->number_or("log_interval", 0.0, Interval::non_negative());
+  if (out.log_interval > 0.0 && out.log_interval < sim.dt) {
+    section->fail("log_interval", "expected 0 (every step) or at least dt = " + std::to_string(sim.dt) + " s");
+  }
+  out.snapshot_interval = section->number_or("snapshot_interval", 0.0, Interval::non_negative());
+  out.flush_interval = section->number_or("flush_interval", 2.0, Interval::positive());
+  return out;
+}
+
+nlohmann::json parse_json_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open scene file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    // Turn the byte offset into a line and column, which is what an editor shows.
+    std::size_t line = 1;
+    std::size_t column = 1;
+    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: " +
+                     e.what());
+  }
+}
+
+}  // namespace
+
+const char* to_string(BodyKind kind) {
+  switch (kind) {
+    case BodyKind::fluid: return "fluid";
+    case BodyKind::deformable: return "deformable";
+    case BodyKind::rigid: return "rigid";
+    case BodyKind::boundary: return "boundary";
+  }
+  return "?";
+}
+
+const char* to_string(StrainMeasure strain) {
+  return strain == StrainMeasure::cauchy ? "cauchy" : "green_saint_venant";
+}
+
+const BodyConfig* Scene::find_body(const std::string& body_name) const {
+  for (const BodyConfig& b : bodies) {
+    if (b.name == body_name) return &b;
+  }
+  return nullptr;
+}
+
+void apply_override(nlohmann::json& document, const std::string& assignment) {
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos || equals == 0) {
+    throw InputError("--set " + assignment + ": expected PATH=VALUE, e.g. bodies/block/young_modulus=5e4");
+  }
+  std::string path = assignment.substr(0, equals);
+  const std::string text = assignment.substr(equals + 1);
+  if (path.front() != '/') path = "/" + path;
+
+  nlohmann::json value;
+  try {
+    value = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error&) {
+    value = text;  // a bare word, e.g. strain=cauchy
+  }
+  nlohmann::json::json_pointer pointer;
+  try {
+    pointer = nlohmann::json::json_pointer(path);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError("--set " + assignment + ": invalid path: " + e.what());
+  }
+  const auto parent = pointer.parent_pointer();
+  if (!document.contains(parent) || !document.at(parent).is_object()) {
+    throw InputError("--set " + assignment + ": " + parent.to_string() + " is not an object in the scene");
+  }
+  document[pointer] = value;
+}
+
+Scene parse_scene(const nlohmann::json& document, const std::string& file) {
+  const JsonReader root(document, file);
+  if (!document.is_object()) root.fail_here("expected a scene object");
+  root.allow_only({"$schema", "name", "description", "simulation", "materials", "bodies", "proxy", "output"});
+
+  Scene scene;
+  scene.source_file = file;
+  scene.document = document;
+  scene.name = root.string("name");
+  if (scene.name.empty() || scene.name.find_first_of("/\\ ") != std::string::npos) {
+    root.fail("name", "expected a non-empty name without spaces or slashes (it names output files)");
+  }
+  scene.description = root.string_or("description", "");
+  scene.simulation = read_simulation(root);
+  const auto materials = read_materials(root);
+  const JsonReader bodies = root.child("bodies");
+  for (const auto& [name, reader] : bodies.members()) {
+    scene.bodies.push_back(read_body(name, reader, materials, scene.simulation));
+  }
+  if (scene.bodies.empty()) bodies.fail_here("expected at least one body");
+  scene.proxy = read_proxy(root, scene.bodies);
+  scene.output = read_output(root, scene.simulation);
+  return scene;
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  nlohmann::json document = parse_json_file(path);
+  for (const std::string& assignment : overrides) apply_override(document, assignment);
+  return parse_scene(document, path);
+}
+
+}  // namespace mssph

@@ -1,0 +1,98 @@
+#include "io/hdf5_handle.hpp"
+
+#include <sstream>
+
+namespace mssph::h5 {
+namespace {
+
+Handle variable_string_type() {
+  Handle type = datatype(H5Tcopy(H5T_C_S1), "copy string type");
+  check(H5Tset_size(type.id(), H5T_VARIABLE), "set variable string size");
+  check(H5Tset_cset(type.id(), H5T_CSET_UTF8), "set UTF-8");
+  return type;
+}
+
+void remove_if_present(hid_t object, const std::string& name) {
+  if (check(H5Aexists(object, name.c_str()), "look up attribute " + name) > 0) {
+    check(H5Adelete(object, name.c_str()), "replace attribute " + name);
+  }
+}
+
+}  // namespace
+
+Handle open_or_create_group(hid_t file, const std::string& path) {
+  std::string partial;
+  std::istringstream parts(path);
+  Handle current = group(H5Gopen2(file, "/", H5P_DEFAULT), "open root group");
+  for (std::string part; std::getline(parts, part, '/');) {
+    if (part.empty()) continue;
+    partial += "/" + part;
+    const htri_t exists = H5Lexists(file, partial.c_str(), H5P_DEFAULT);
+    current = exists > 0 ? group(H5Gopen2(file, partial.c_str(), H5P_DEFAULT), "open group " + partial)
+                         : group(H5Gcreate2(file, partial.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                                 "create group " + partial);
+  }
+  return current;
+}
+
+void write_attribute(hid_t object, const std::string& name, const std::string& value) {
+  remove_if_present(object, name);
+  Handle type = variable_string_type();
+  Handle space = dataspace(H5Screate(H5S_SCALAR), "scalar space");
+  Handle attr = attribute(H5Acreate2(object, name.c_str(), type.id(), space.id(), H5P_DEFAULT, H5P_DEFAULT),
+                          "create attribute " + name);
+  const char* data = value.c_str();
+  check(H5Awrite(attr.id(), type.id(), &data), "write attribute " + name);
+}
+
+void write_attribute(hid_t object, const std::string& name, double value) {
+  remove_if_present(object, name);
+  Handle space = dataspace(H5Screate(H5S_SCALAR), "scalar space");
+  Handle attr = attribute(H5Acreate2(object, name.c_str(), H5T_IEEE_F64LE, space.id(), H5P_DEFAULT, H5P_DEFAULT),
+                          "create attribute " + name);
+  check(H5Awrite(attr.id(), H5T_NATIVE_DOUBLE, &value), "write attribute " + name);
+}
+
+void write_attribute(hid_t object, const std::string& name, long long value) {
+  remove_if_present(object, name);
+  Handle space = dataspace(H5Screate(H5S_SCALAR), "scalar space");
+  Handle attr = attribute(H5Acreate2(object, name.c_str(), H5T_STD_I64LE, space.id(), H5P_DEFAULT, H5P_DEFAULT),
+                          "create attribute " + name);
+  check(H5Awrite(attr.id(), H5T_NATIVE_LLONG, &value), "write attribute " + name);
+}
+
+void write_attribute(hid_t object, const std::string& name, const std::vector<std::string>& values) {
+  remove_if_present(object, name);
+  Handle type = variable_string_type();
+  const hsize_t count = values.size();
+  // An empty list is an attribute with a null dataspace (h5py reads it as h5py.Empty).
+  Handle space = values.empty() ? dataspace(H5Screate(H5S_NULL), "empty space")
+                                : dataspace(H5Screate_simple(1, &count, nullptr), "string list space");
+  Handle attr = attribute(H5Acreate2(object, name.c_str(), type.id(), space.id(), H5P_DEFAULT, H5P_DEFAULT),
+                          "create attribute " + name);
+  if (values.empty()) return;
+  std::vector<const char*> data;
+  for (const std::string& v : values) data.push_back(v.c_str());
+  check(H5Awrite(attr.id(), type.id(), data.data()), "write attribute " + name);
+}
+
+std::string read_string_attribute(hid_t object, const std::string& name) {
+  Handle attr = attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), "open attribute " + name);
+  Handle type = variable_string_type();
+  char* data = nullptr;
+  check(H5Aread(attr.id(), type.id(), &data), "read attribute " + name);
+  std::string value = data ? data : "";
+  H5free_memory(data);
+  return value;
+}
+
+double read_double_attribute(hid_t object, const std::string& name) {
+  Handle attr = attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), "open attribute " + name);
+  double value = 0.0;
+  check(H5Aread(attr.id(), H5T_NATIVE_DOUBLE, &value), "read attribute " + name);
+  return value;
+}
+
+void silence_error_printing() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+}  // namespace mssph::h5

@@ -1,0 +1,80 @@
+#pragma once
+// RAII ownership of HDF5 C API identifiers, and checked calls: every failing HDF5 call becomes
+// an exception naming what was being done.
+#include <hdf5.h>
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mssph::h5 {
+
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws h5::Error("HDF5: <what>") when status < 0.
+inline herr_t check(herr_t status, const std::string& what) {
+  if (status < 0) throw Error("HDF5: " + what);
+  return status;
+}
+
+// Owns one identifier and closes it with the matching H5?close.
+class Handle {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  Handle() = default;
+  Handle(hid_t id, Closer closer, const std::string& what) : id_(id), closer_(closer) {
+    if (id_ < 0) throw Error("HDF5: " + what);
+  }
+  ~Handle() { reset(); }
+  Handle(Handle&& other) noexcept : id_(std::exchange(other.id_, H5I_INVALID_HID)), closer_(other.closer_) {}
+  Handle& operator=(Handle&& other) noexcept {
+    if (this != &other) {
+      reset();
+      id_ = std::exchange(other.id_, H5I_INVALID_HID);
+      closer_ = other.closer_;
+    }
+    return *this;
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+
+  hid_t id() const { return id_; }
+  explicit operator bool() const { return id_ >= 0; }
+  void reset() {
+    if (id_ >= 0 && closer_) closer_(id_);
+    id_ = H5I_INVALID_HID;
+  }
+
+ private:
+  hid_t id_ = H5I_INVALID_HID;
+  Closer closer_ = nullptr;
+};
+
+inline Handle file(hid_t id, const std::string& what) { return Handle(id, H5Fclose, what); }
+inline Handle group(hid_t id, const std::string& what) { return Handle(id, H5Gclose, what); }
+inline Handle dataset(hid_t id, const std::string& what) { return Handle(id, H5Dclose, what); }
+inline Handle dataspace(hid_t id, const std::string& what) { return Handle(id, H5Sclose, what); }
+inline Handle datatype(hid_t id, const std::string& what) { return Handle(id, H5Tclose, what); }
+inline Handle attribute(hid_t id, const std::string& what) { return Handle(id, H5Aclose, what); }
+inline Handle property_list(hid_t id, const std::string& what) { return Handle(id, H5Pclose, what); }
+
+// Opens the group at `path`, creating it and any missing parents.
+Handle open_or_create_group(hid_t file, const std::string& path);
+
+// Attributes on any object (file, group, dataset); an existing attribute of the name is replaced.
+void write_attribute(hid_t object, const std::string& name, const std::string& value);
+void write_attribute(hid_t object, const std::string& name, double value);
+void write_attribute(hid_t object, const std::string& name, long long value);
+void write_attribute(hid_t object, const std::string& name, const std::vector<std::string>& values);
+
+std::string read_string_attribute(hid_t object, const std::string& name);
+double read_double_attribute(hid_t object, const std::string& name);
+
+// Silences HDF5's automatic error stack printing: errors surface as h5::Error instead.
+void silence_error_printing();
+
+}  // namespace mssph::h5

@@ -1,0 +1,227 @@
+#include "io/run_log.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace mssph {
+namespace {
+
+constexpr hsize_t kChunkRows = 1024;
+constexpr std::size_t kMaxPendingRows = 4096;
+
+std::string utc_now() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  std::ostringstream out;
+  out << std::put_time(&tm, "%Y-%m-%dT%H:%M:%SZ");
+  return out.str();
+}
+
+std::string parent_path(const std::string& dataset_path) {
+  const auto slash = dataset_path.find_last_of('/');
+  return slash == 0 || slash == std::string::npos ? "/" : dataset_path.substr(0, slash);
+}
+
+std::string snapshot_group(long long step) {
+  std::ostringstream name;
+  name << "/snapshots/" << std::setw(8) << std::setfill('0') << step;
+  return name.str();
+}
+
+void write_float_dataset(hid_t file, const std::string& path, std::span<const float> values, hsize_t columns,
+                         const std::string& units) {
+  const hsize_t dims[2] = {values.size() / columns, columns};
+  h5::Handle space = h5::dataspace(H5Screate_simple(columns == 1 ? 1 : 2, dims, nullptr), "snapshot space " + path);
+  h5::Handle set = h5::dataset(
+      H5Dcreate2(file, path.c_str(), H5T_IEEE_F32LE, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+      "create " + path);
+  h5::check(H5Dwrite(set.id(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + path);
+  h5::write_attribute(set.id(), "units", units);
+}
+
+}  // namespace
+
+RunLog::RunLog(const std::string& path, const RunMetadata& metadata) : path_(path) {
+  h5::silence_error_printing();
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  file_ = h5::file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create " + path);
+  const hid_t root = file_.id();
+  h5::write_attribute(root, "mssph_version", metadata.version);
+  h5::write_attribute(root, "git_commit", metadata.git_commit);
+  h5::write_attribute(root, "backend", metadata.backend);
+  h5::write_attribute(root, "device", metadata.device);
+  h5::write_attribute(root, "precision", metadata.precision);
+  h5::write_attribute(root, "scene", metadata.scene_name);
+  h5::write_attribute(root, "config_path", metadata.config_path);
+  h5::write_attribute(root, "config", metadata.config_json);
+  h5::write_attribute(root, "seed", metadata.seed);
+  h5::write_attribute(root, "command_line", metadata.command_line);
+  h5::write_attribute(root, "start_time", utc_now());
+  set_status("running");
+  flush();
+}
+
+RunLog::~RunLog() {
+  // A log destroyed without finish_*() keeps status "running": whoever reads it knows the run
+  // did not end normally. Pending rows are still written so nothing logged is lost.
+  try {
+    flush();
+  } catch (const std::exception&) {
+    // A destructor must not throw; the file's status already tells the story.
+  }
+}
+
+std::size_t RunLog::add_series(const std::string& dataset_path, std::size_t columns, const std::string& units,
+                               const std::string& description, const std::vector<std::string>& column_names) {
+  h5::open_or_create_group(file_.id(), parent_path(dataset_path));
+  const int rank = columns == 1 ? 1 : 2;
+  const hsize_t initial[2] = {0, columns};
+  const hsize_t maximum[2] = {H5S_UNLIMITED, columns};
+  const hsize_t chunk[2] = {kChunkRows, columns};
+  h5::Handle space = h5::dataspace(H5Screate_simple(rank, initial, maximum), "series space " + dataset_path);
+  h5::Handle properties = h5::property_list(H5Pcreate(H5P_DATASET_CREATE), "dataset properties");
+  h5::check(H5Pset_chunk(properties.id(), rank, chunk), "chunk " + dataset_path);
+  Series series;
+  series.path = dataset_path;
+  series.columns = columns;
+  series.dataset = h5::dataset(H5Dcreate2(file_.id(), dataset_path.c_str(), H5T_IEEE_F64LE, space.id(), H5P_DEFAULT,
+                                          properties.id(), H5P_DEFAULT),
+                               "create " + dataset_path);
+  h5::write_attribute(series.dataset.id(), "units", units);
+  h5::write_attribute(series.dataset.id(), "description", description);
+  if (!column_names.empty()) h5::write_attribute(series.dataset.id(), "columns", column_names);
+  series_.push_back(std::move(series));
+  return series_.size() - 1;
+}
+
+void RunLog::append(std::size_t series, std::span<const double> row) {
+  Series& s = series_.at(series);
+  if (row.size() != s.columns) {
+    throw std::invalid_argument("row of " + std::to_string(row.size()) + " values for " + s.path + " (" +
+                                std::to_string(s.columns) + " columns)");
+  }
+  s.pending.insert(s.pending.end(), row.begin(), row.end());
+  if (s.pending.size() >= kMaxPendingRows * s.columns) write_pending(s);
+}
+
+void RunLog::write_pending(Series& s) {
+  const hsize_t rows = s.pending.size() / s.columns;
+  if (rows == 0) return;
+  const int rank = s.columns == 1 ? 1 : 2;
+  const hsize_t new_size[2] = {s.rows_written + rows, s.columns};
+  h5::check(H5Dset_extent(s.dataset.id(), new_size), "extend " + s.path);
+  h5::Handle file_space = h5::dataspace(H5Dget_space(s.dataset.id()), "space of " + s.path);
+  const hsize_t start[2] = {s.rows_written, 0};
+  const hsize_t count[2] = {rows, s.columns};
+  h5::check(H5Sselect_hyperslab(file_space.id(), H5S_SELECT_SET, start, nullptr, count, nullptr), "select " + s.path);
+  h5::Handle memory_space = h5::dataspace(H5Screate_simple(rank, count, nullptr), "memory space");
+  h5::check(H5Dwrite(s.dataset.id(), H5T_NATIVE_DOUBLE, memory_space.id(), file_space.id(), H5P_DEFAULT,
+                     s.pending.data()),
+            "append to " + s.path);
+  s.rows_written += rows;
+  s.pending.clear();
+}
+
+void RunLog::write_array(const std::string& dataset_path, std::span<const int> values, const std::string& description) {
+  h5::open_or_create_group(file_.id(), parent_path(dataset_path));
+  const hsize_t dims[1] = {values.size()};
+  h5::Handle space = h5::dataspace(H5Screate_simple(1, dims, nullptr), "array space " + dataset_path);
+  h5::Handle set = h5::dataset(H5Dcreate2(file_.id(), dataset_path.c_str(), H5T_STD_I32LE, space.id(), H5P_DEFAULT,
+                                          H5P_DEFAULT, H5P_DEFAULT),
+                               "create " + dataset_path);
+  h5::check(H5Dwrite(set.id(), H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + dataset_path);
+  h5::write_attribute(set.id(), "description", description);
+}
+
+void RunLog::set_attribute(const std::string& object_path, const std::string& name, const std::string& value) {
+  h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, value);
+}
+void RunLog::set_attribute(const std::string& object_path, const std::string& name, double value) {
+  h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, value);
+}
+void RunLog::set_attribute(const std::string& object_path, const std::string& name, long long value) {
+  h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, value);
+}
+void RunLog::set_attribute(const std::string& object_path, const std::string& name,
+                           const std::vector<std::string>& values) {
+  h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, values);
+}
+
+void RunLog::add_snapshot(long long step, double time, const SnapshotFields& fields) {
+  const std::string group_path = snapshot_group(step);
+  h5::Handle group = h5::open_or_create_group(file_.id(), group_path);
+  h5::write_attribute(group.id(), "time", time);
+  h5::write_attribute(group.id(), "step", step);
+  write_float_dataset(file_.id(), group_path + "/position", fields.position, 3, "m");
+  write_float_dataset(file_.id(), group_path + "/velocity", fields.velocity, 3, "m/s");
+  write_float_dataset(file_.id(), group_path + "/density", fields.density, 1, "kg/m^3");
+  write_float_dataset(file_.id(), group_path + "/pressure", fields.pressure, 1, "Pa");
+  snapshots_.push_back({step, time, fields.density.size()});
+  flush();
+  write_xdmf();
+}
+
+// XDMF 3: a temporal collection of polyvertex grids whose heavy data are the HDF5 datasets.
+void RunLog::write_xdmf() const {
+  const std::string h5_name = std::filesystem::path(path_).filename().string();
+  const std::string xdmf_path = path_ + ".xdmf";
+  const std::string partial = xdmf_path + ".partial";
+  {
+    std::ofstream out(partial);
+    out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+        << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (const SnapshotRecord& s : snapshots_) {
+      const std::string group = snapshot_group(s.step);
+      const std::string n = std::to_string(s.particles);
+      const auto item = [&](const std::string& field, bool vector) {
+        return "<DataItem Dimensions=\"" + n + (vector ? " 3" : "") +
+               "\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">" + h5_name + ":" + group + "/" + field +
+               "</DataItem>";
+      };
+      out << "   <Grid Name=\"step" << s.step << "\" GridType=\"Uniform\">\n"
+          << "    <Time Value=\"" << std::setprecision(17) << s.time << "\"/>\n"
+          << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\"/>\n"
+          << "    <Geometry GeometryType=\"XYZ\">" << item("position", true) << "</Geometry>\n"
+          << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">" << item("velocity", true)
+          << "</Attribute>\n"
+          << "    <Attribute Name=\"density\" AttributeType=\"Scalar\" Center=\"Node\">" << item("density", false)
+          << "</Attribute>\n"
+          << "    <Attribute Name=\"pressure\" AttributeType=\"Scalar\" Center=\"Node\">" << item("pressure", false)
+          << "</Attribute>\n"
+          << "    <Attribute Name=\"body\" AttributeType=\"Scalar\" Center=\"Node\"><DataItem Dimensions=\"" << n
+          << "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5_name
+          << ":/particles/body</DataItem></Attribute>\n"
+          << "   </Grid>\n";
+    }
+    out << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  }
+  std::filesystem::rename(partial, xdmf_path);  // never leave a half-written sidecar
+}
+
+void RunLog::flush() {
+  for (Series& s : series_) write_pending(s);
+  h5::check(H5Fflush(file_.id(), H5F_SCOPE_GLOBAL), "flush " + path_);
+}
+
+void RunLog::set_status(const std::string& status) { h5::write_attribute(file_.id(), "status", status); }
+
+void RunLog::finish_completed() {
+  h5::write_attribute(file_.id(), "end_time", utc_now());
+  set_status("completed");
+  flush();
+}
+
+void RunLog::finish_failed(const std::string& reason) {
+  h5::write_attribute(file_.id(), "end_time", utc_now());
+  set_status("failed: " + reason);
+  flush();
+}
+
+}  // namespace mssph

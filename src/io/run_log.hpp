@@ -1,0 +1,94 @@
+#pragma once
+// One HDF5 file per run (DESIGN.md section 5). Root attributes say what ran and how it ended
+// (`status`: "running", then "completed" or "failed: <reason>"); time series are chunked,
+// extensible float64 datasets with a `units` attribute, flushed periodically so that a killed
+// run leaves a readable file whose status still says "running". Optional particle snapshots get
+// an XDMF sidecar (<file>.xdmf) that ParaView opens.
+#include "io/hdf5_handle.hpp"
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace mssph {
+
+struct RunMetadata {
+  std::string version;
+  std::string git_commit;
+  std::string backend;
+  std::string device;
+  std::string precision;
+  std::string scene_name;
+  std::string config_path;
+  std::string config_json;  // the scene after overrides, verbatim
+  long long seed = 0;
+  std::string command_line;
+};
+
+// Particle fields of one snapshot, in particle order (float32: what a viewer needs).
+struct SnapshotFields {
+  std::span<const float> position;  // 3 per particle [m]
+  std::span<const float> velocity;  // 3 per particle [m/s]
+  std::span<const float> density;   // [kg/m^3]
+  std::span<const float> pressure;  // [Pa]
+};
+
+class RunLog {
+ public:
+  // Creates (or truncates) `path` and writes the metadata with status "running".
+  RunLog(const std::string& path, const RunMetadata& metadata);
+  ~RunLog();
+  RunLog(const RunLog&) = delete;
+  RunLog& operator=(const RunLog&) = delete;
+
+  const std::string& path() const { return path_; }
+
+  // A time series at `dataset_path` with `columns` values per row (a 1-D dataset when 1). Returns
+  // its handle for append(). `column_names` (optional) become the `columns` attribute.
+  std::size_t add_series(const std::string& dataset_path, std::size_t columns, const std::string& units,
+                         const std::string& description, const std::vector<std::string>& column_names = {});
+  void append(std::size_t series, std::span<const double> row);
+
+  // Whole arrays written once, e.g. /particles/body.
+  void write_array(const std::string& dataset_path, std::span<const int> values, const std::string& description);
+
+  void set_attribute(const std::string& object_path, const std::string& name, const std::string& value);
+  void set_attribute(const std::string& object_path, const std::string& name, double value);
+  void set_attribute(const std::string& object_path, const std::string& name, long long value);
+  void set_attribute(const std::string& object_path, const std::string& name, const std::vector<std::string>& values);
+
+  // /snapshots/<step, 8 digits> with attributes time and step; the XDMF sidecar is rewritten so
+  // it always lists every snapshot written so far.
+  void add_snapshot(long long step, double time, const SnapshotFields& fields);
+
+  // Writes buffered rows and asks HDF5 to flush the file to disk.
+  void flush();
+
+  // Final status; "completed" only for a run that reached its end.
+  void finish_completed();
+  void finish_failed(const std::string& reason);
+
+ private:
+  struct Series {
+    std::string path;
+    std::size_t columns = 0;
+    hsize_t rows_written = 0;
+    std::vector<double> pending;  // rows not yet written, row-major
+    h5::Handle dataset;
+  };
+  struct SnapshotRecord {
+    long long step;
+    double time;
+    std::size_t particles;
+  };
+  void write_pending(Series& series);
+  void write_xdmf() const;
+  void set_status(const std::string& status);
+
+  std::string path_;
+  h5::Handle file_;
+  std::vector<Series> series_;
+  std::vector<SnapshotRecord> snapshots_;
+};
+
+}  // namespace mssph

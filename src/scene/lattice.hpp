@@ -1,0 +1,24 @@
+#pragma once
+// Lattice sampling of shapes in their local frame (centred at the origin), spacing dx.
+#include "config/scene.hpp"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace mssph {
+
+// A box of full edge lengths `size`: cell centres, round(size / dx) particles per axis (at least
+// one), so N dx^3 is the box volume when size is a multiple of dx.
+std::vector<Eigen::Vector3d> sample_box(const Eigen::Vector3d& size, double dx);
+
+// A ball of `radius`: lattice nodes (one at the centre) strictly inside the sphere.
+std::vector<Eigen::Vector3d> sample_sphere(double radius, double dx);
+
+// The walls (and floor, and lid when closed) of a container of inner size `inner`, `layers`
+// particles thick, on the cell-centred lattice that continues the inner box's lattice.
+std::vector<Eigen::Vector3d> sample_container(const Eigen::Vector3d& inner, int layers, bool open_top, double dx);
+
+std::vector<Eigen::Vector3d> sample_shape(const Shape& shape, double dx);
+
+}  // namespace mssph

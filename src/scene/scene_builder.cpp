@@ -1,0 +1,148 @@
+#include "scene/scene_builder.hpp"
+
+#include "scene/lattice.hpp"
+#include "sph_kernels.hpp"
+#include "util/errors.hpp"
+
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <unordered_map>
+
+namespace mssph {
+namespace {
+
+using Eigen::Vector3d;
+
+// Rigid-body mass properties from equal-mass particles of physical mass m each. Each particle
+// also carries the inertia of its own cube of side dx (m dx^2 / 6 about each axis), so that the
+// sum converges to the continuum inertia and a thin body is never singular.
+void set_rigid_mass_properties(BodySetup& body, const std::vector<Vector3d>& world, double density, double dx) {
+  const double particle_mass = density * dx * dx * dx;
+  Vector3d com = Vector3d::Zero();
+  for (const Vector3d& x : world) com += x;
+  com /= static_cast<double>(world.size());
+  const Eigen::Matrix3d rotation = body.orientation.toRotationMatrix();
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Identity() * (static_cast<double>(world.size()) * particle_mass * dx * dx / 6.0);
+  for (const Vector3d& x : world) {
+    const Vector3d r = rotation.transpose() * (x - com);  // body frame
+    inertia += particle_mass * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
+  }
+  body.mass = particle_mass * static_cast<double>(world.size());
+  body.centre_of_mass = com;
+  body.inertia_body = inertia;
+}
+
+// Rejects particles of different bodies closer than half a spacing: such a start state would
+// explode at the first step. A hash grid of cell size dx keeps this linear.
+void check_overlaps(const ParticleSetup& setup) {
+  const double dx = setup.spacing;
+  const double min_distance = 0.5 * dx;
+  struct KeyHash {
+    std::size_t operator()(const Eigen::Vector3i& c) const {
+      return (static_cast<std::size_t>(c.x()) * 73856093u) ^ (static_cast<std::size_t>(c.y()) * 19349663u) ^
+             (static_cast<std::size_t>(c.z()) * 83492791u);
+    }
+  };
+  std::unordered_map<Eigen::Vector3i, std::vector<std::size_t>, KeyHash> cells;
+  const auto cell_of = [&](const Vector3d& x) { return Eigen::Vector3i((x / dx).array().floor().cast<int>()); };
+  for (std::size_t i = 0; i < setup.size(); ++i) cells[cell_of(setup.position[i])].push_back(i);
+  for (std::size_t i = 0; i < setup.size(); ++i) {
+    const Eigen::Vector3i c = cell_of(setup.position[i]);
+    for (int dz = -1; dz <= 1; ++dz) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dxc = -1; dxc <= 1; ++dxc) {
+          const auto it = cells.find(c + Eigen::Vector3i(dxc, dy, dz));
+          if (it == cells.end()) continue;
+          for (std::size_t j : it->second) {
+            if (setup.body[j] <= setup.body[i]) continue;  // each pair of bodies once
+            if ((setup.position[i] - setup.position[j]).norm() < min_distance) {
+              std::ostringstream where;
+              where << "[" << setup.position[i].x() << ", " << setup.position[i].y() << ", "
+                    << setup.position[i].z() << "]";
+              throw InputError(
+                  "bodies \"" + setup.bodies[setup.body[i]].name + "\" and \"" + setup.bodies[setup.body[j]].name +
+                  "\" overlap: particles closer than half a particle spacing near " + where.str() +
+                  " m; move them apart");
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+ParticleSetup build_particles(const Scene& scene) {
+  const SimulationConfig& sim = scene.simulation;
+  ParticleSetup setup;
+  setup.spacing = sim.particle_spacing;
+  setup.smoothing_length = sim.smoothing_length;
+  setup.rest_number_density = reference::lattice_number_density(sim.particle_spacing, sim.smoothing_length);
+  setup.gravity = sim.gravity;
+  setup.dt = sim.dt;
+  setup.max_speed = sim.max_speed;
+
+  std::mt19937_64 random(sim.seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double jitter = sim.jitter * sim.particle_spacing;
+
+  for (const BodyConfig& config : scene.bodies) {
+    const std::vector<Vector3d> local = sample_shape(config.shape, sim.particle_spacing);
+    if (local.empty()) {
+      throw InputError(scene.source_file + ": /bodies/" + config.name +
+                       "/shape: the shape holds no particle at particle_spacing " +
+                       std::to_string(sim.particle_spacing) + " m; make it larger or the spacing smaller");
+    }
+    BodySetup body;
+    body.name = config.name;
+    body.kind = config.kind;
+    body.material = config.material;
+    body.first = setup.size();
+    body.count = local.size();
+    body.orientation = config.orientation;
+    body.velocity = config.velocity;
+    body.angular_velocity = config.angular_velocity;
+    body.fixed = config.fixed;
+
+    const Eigen::Matrix3d rotation = config.orientation.toRotationMatrix();
+    std::vector<Vector3d> world;
+    world.reserve(local.size());
+    for (const Vector3d& p : local) {
+      Vector3d x = config.position + rotation * p;
+      if (jitter > 0.0) x += jitter * Vector3d(unit(random), unit(random), unit(random));
+      world.push_back(x);
+    }
+    if (config.kind == BodyKind::rigid) set_rigid_mass_properties(body, world, config.density, sim.particle_spacing);
+
+    const double sph_mass = config.material.rest_density / setup.rest_number_density;
+    const std::uint32_t body_index = static_cast<std::uint32_t>(setup.bodies.size());
+    for (const Vector3d& x : world) {
+      Vector3d v = Vector3d::Zero();
+      if (config.kind == BodyKind::rigid && !config.fixed) {
+        v = config.velocity + config.angular_velocity.cross(x - body.centre_of_mass);
+      } else if (config.kind == BodyKind::fluid || config.kind == BodyKind::deformable) {
+        v = config.velocity;
+      }
+      const bool held = std::any_of(config.fixed_regions.begin(), config.fixed_regions.end(),
+                                    [&](const Region& r) { return r.contains(x); });
+      if (held) {
+        v = Vector3d::Zero();
+        ++body.fixed_count;
+      }
+      setup.position.push_back(x);
+      setup.velocity.push_back(v);
+      setup.mass.push_back(sph_mass);
+      setup.body.push_back(body_index);
+      setup.fixed.push_back(held ? 1 : 0);
+      setup.rest_offset.push_back(config.kind == BodyKind::rigid ? Vector3d(rotation.transpose() * (x - body.centre_of_mass))
+                                                                 : Vector3d::Zero());
+    }
+    setup.bodies.push_back(body);
+  }
+  check_overlaps(setup);
+  return setup;
+}
+
+}  // namespace mssph

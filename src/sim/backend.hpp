@@ -1,0 +1,69 @@
+#pragma once
+// What every backend (reference, cpu, cuda) offers the simulation driver: one step of the
+// paper's loop (section 3.2), body-level state for logs and haptics, and particle snapshots.
+#include "scene/particle_setup.hpp"
+
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mssph {
+
+struct BackendInfo {
+  std::string name;       // "reference", "cpu", "cuda"
+  std::string device;     // CPU or GPU model
+  std::string precision;  // "float64" or "float32"
+};
+
+// Body-level state at the current time, world frame, SI units.
+struct BodyState {
+  double mass = 0.0;                                            // [kg]
+  Eigen::Vector3d centre_of_mass = Eigen::Vector3d::Zero();    // [m]
+  Eigen::Vector3d linear_momentum = Eigen::Vector3d::Zero();   // [kg m/s]
+  Eigen::Vector3d angular_momentum = Eigen::Vector3d::Zero();  // about the centre of mass [kg m^2/s]
+  double kinetic_energy = 0.0;                                  // [J]
+  double max_speed = 0.0;                                       // fastest particle [m/s]
+  // Rigid bodies: orientation and angular velocity (identity and zero for other kinds).
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // [rad/s]
+  // Sum of the forces other bodies exert on this body's particles (paper eq. 7), and their
+  // torque about the centre of mass (paper eq. 8, 9 without the device term) [N], [N m].
+  Eigen::Vector3d interaction_force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d interaction_torque = Eigen::Vector3d::Zero();
+};
+
+// Particle fields for snapshots, in particle order.
+struct ParticleSnapshot {
+  std::vector<float> position;  // 3 per particle [m]
+  std::vector<float> velocity;  // 3 per particle [m/s]
+  std::vector<float> density;   // [kg/m^3]
+  std::vector<float> pressure;  // [Pa]
+};
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+
+  virtual BackendInfo info() const = 0;
+  virtual std::size_t particle_count() const = 0;
+  virtual double time() const = 0;  // simulated time [s]
+
+  // An external wrench on a movable rigid body (the haptic coupling, paper eq. 8, 9), applied at
+  // its centre of mass in every step until it is set again [N], [N m].
+  virtual void set_external_wrench(std::size_t body, const Eigen::Vector3d& force, const Eigen::Vector3d& torque) = 0;
+
+  // One time step dt: neighbour search, rotations, densities, forces, integration.
+  virtual void step() = 0;
+
+  virtual std::vector<BodyState> body_states() = 0;
+  virtual ParticleSnapshot snapshot() = 0;
+
+  // Wall-clock seconds of each phase of the last step, in the order of phase_names().
+  virtual std::vector<std::string> phase_names() const = 0;
+  virtual std::vector<double> last_phase_seconds() const = 0;
+};
+
+}  // namespace mssph

@@ -1,0 +1,195 @@
+#include "sim/simulation_run.hpp"
+
+#include "sim/interrupt.hpp"
+#include "sim/progress.hpp"
+#include "util/errors.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace mssph {
+namespace {
+
+// The datasets of one body under /bodies/<name>.
+struct BodySeries {
+  std::size_t centre_of_mass, linear_momentum, angular_momentum, kinetic_energy, max_speed;
+  std::size_t interaction_force, interaction_torque;
+  std::size_t orientation = 0, angular_velocity = 0;  // rigid bodies
+  bool rigid = false;
+};
+
+std::size_t steps_per(double interval, double dt) {
+  return interval <= 0.0 ? 1 : std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(interval / dt)));
+}
+
+std::vector<BodySeries> add_body_series(RunLog& log, const ParticleSetup& setup) {
+  std::vector<BodySeries> out;
+  const std::vector<std::string> xyz{"x", "y", "z"};
+  for (const BodySetup& body : setup.bodies) {
+    const std::string g = "/bodies/" + body.name;
+    log.set_attribute(g, "kind", std::string(to_string(body.kind)));
+    log.set_attribute(g, "particle_count", static_cast<long long>(body.count));
+    log.set_attribute(g, "first_particle", static_cast<long long>(body.first));
+    BodySeries s;
+    s.centre_of_mass = log.add_series(g + "/centre_of_mass", 3, "m", "centre of mass", xyz);
+    s.linear_momentum = log.add_series(g + "/linear_momentum", 3, "kg m/s", "linear momentum", xyz);
+    s.angular_momentum = log.add_series(g + "/angular_momentum", 3, "kg m^2/s", "angular momentum about the centre of mass", xyz);
+    s.kinetic_energy = log.add_series(g + "/kinetic_energy", 1, "J", "kinetic energy");
+    s.max_speed = log.add_series(g + "/max_speed", 1, "m/s", "fastest particle's speed");
+    s.interaction_force = log.add_series(g + "/interaction_force", 3, "N",
+                                         "sum of forces from other bodies on this body's particles (paper eq. 7, 8)", xyz);
+    s.interaction_torque = log.add_series(g + "/interaction_torque", 3, "N m",
+                                          "torque of the interaction forces about the centre of mass (paper eq. 9)", xyz);
+    if (body.moves_as_rigid_body()) {
+      s.rigid = true;
+      log.set_attribute(g, "mass", body.mass);
+      s.orientation = log.add_series(g + "/orientation", 4, "1", "orientation quaternion", {"qx", "qy", "qz", "qw"});
+      s.angular_velocity = log.add_series(g + "/angular_velocity", 3, "rad/s", "angular velocity, world frame", xyz);
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+void append_vec3(RunLog& log, std::size_t series, const Eigen::Vector3d& v) {
+  const double row[3] = {v.x(), v.y(), v.z()};
+  log.append(series, row);
+}
+
+void append_scalar(RunLog& log, std::size_t series, double v) { log.append(series, std::span<const double>(&v, 1)); }
+
+void check_for_blow_up(const std::vector<BodyState>& states, const ParticleSetup& setup, double time) {
+  for (std::size_t b = 0; b < states.size(); ++b) {
+    const BodyState& s = states[b];
+    const bool finite = std::isfinite(s.max_speed) && s.centre_of_mass.allFinite() && s.interaction_force.allFinite();
+    if (!finite || s.max_speed > setup.max_speed) {
+      std::ostringstream message;
+      message << "blow-up at t = " << time << " s: body \"" << setup.bodies[b].name << "\" ";
+      if (!finite) {
+        message << "has non-finite state (NaN or infinity)";
+      } else {
+        message << "has a particle at " << s.max_speed << " m/s, beyond simulation/max_speed = " << setup.max_speed
+                << " m/s";
+      }
+      message << "; reduce dt or stiffness (see the start-up warnings)";
+      throw SimulationFailure(message.str());
+    }
+  }
+}
+
+}  // namespace
+
+RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backend& backend, RunLog& log,
+                          const RunOptions& options) {
+  const double dt = scene.simulation.dt;
+  const std::size_t total_steps = static_cast<std::size_t>(std::llround(scene.simulation.duration / dt));
+  const std::size_t log_every = steps_per(scene.output.log_interval, dt);
+  const std::size_t snapshot_every = scene.output.snapshot_interval > 0.0 ? steps_per(scene.output.snapshot_interval, dt) : 0;
+  // Blow-ups are looked for at least this often even when logging is sparse.
+  const std::size_t check_every = std::min<std::size_t>(log_every, 100);
+
+  std::vector<int> body_of_particle(setup.body.begin(), setup.body.end());
+  log.write_array("/particles/body", body_of_particle, "body index of each particle (order of /bodies attributes)");
+  std::vector<std::string> body_names;
+  for (const BodySetup& b : setup.bodies) body_names.push_back(b.name);
+  log.set_attribute("/particles", "body_names", body_names);
+  log.set_attribute("/", "particle_count", static_cast<long long>(setup.size()));
+  log.set_attribute("/", "dt", dt);
+
+  const std::size_t time_series = log.add_series("/time", 1, "s", "simulated time of each logged sample");
+  const std::vector<BodySeries> body_series = add_body_series(log, setup);
+  const std::vector<std::string> phases = backend.phase_names();
+  log.set_attribute("/timing", "phase_names", phases);
+  const std::size_t step_time_series = log.add_series("/timing/step_wall_time", 1, "s", "wall-clock time of each step");
+  const std::size_t phase_series =
+      log.add_series("/timing/phases", phases.size(), "s", "wall-clock time of each phase of each step", phases);
+
+  std::size_t force_body = setup.bodies.size();
+  if (scene.proxy) {
+    for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
+      if (setup.bodies[b].name == scene.proxy->body) force_body = b;
+    }
+  }
+
+  RunSummary summary;
+  summary.force_body = force_body < setup.bodies.size() ? setup.bodies[force_body].name : "";
+  ProgressReporter progress(total_steps, dt, options.quiet);
+  auto last_flush = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
+
+  const auto write_snapshot = [&](std::size_t step) {
+    const ParticleSnapshot snap = backend.snapshot();
+    log.add_snapshot(static_cast<long long>(step), backend.time(),
+                     SnapshotFields{snap.position, snap.velocity, snap.density, snap.pressure});
+  };
+
+  try {
+    if (snapshot_every > 0) write_snapshot(0);
+    for (std::size_t step = 1; step <= total_steps; ++step) {
+      const auto step_start = std::chrono::steady_clock::now();
+      backend.step();
+      const double step_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
+      append_scalar(log, step_time_series, step_seconds);
+      log.append(phase_series, backend.last_phase_seconds());
+
+      const bool log_now = step % log_every == 0 || step == total_steps;
+      if (log_now || step % check_every == 0) {
+        const std::vector<BodyState> states = backend.body_states();
+        check_for_blow_up(states, setup, backend.time());
+        if (force_body < states.size()) {
+          summary.peak_force = std::max(summary.peak_force, states[force_body].interaction_force.norm());
+        }
+        if (log_now) {
+          append_scalar(log, time_series, backend.time());
+          for (std::size_t b = 0; b < states.size(); ++b) {
+            const BodyState& s = states[b];
+            const BodySeries& series = body_series[b];
+            append_vec3(log, series.centre_of_mass, s.centre_of_mass);
+            append_vec3(log, series.linear_momentum, s.linear_momentum);
+            append_vec3(log, series.angular_momentum, s.angular_momentum);
+            append_scalar(log, series.kinetic_energy, s.kinetic_energy);
+            append_scalar(log, series.max_speed, s.max_speed);
+            append_vec3(log, series.interaction_force, s.interaction_force);
+            append_vec3(log, series.interaction_torque, s.interaction_torque);
+            if (series.rigid) {
+              const double q[4] = {s.orientation.x(), s.orientation.y(), s.orientation.z(), s.orientation.w()};
+              log.append(series.orientation, q);
+              append_vec3(log, series.angular_velocity, s.angular_velocity);
+            }
+          }
+        }
+      }
+      if (snapshot_every > 0 && step % snapshot_every == 0) write_snapshot(step);
+
+      const auto now = std::chrono::steady_clock::now();
+      if (std::chrono::duration<double>(now - last_flush).count() > scene.output.flush_interval) {
+        log.flush();
+        last_flush = now;
+      }
+      summary.steps = step;
+      progress.update(step);
+      if (interrupt_requested()) throw RunInterrupted("interrupted by a signal at t = " + std::to_string(backend.time()) + " s");
+    }
+  } catch (const std::exception& failure) {
+    // Any failure inside the loop (blow-up, interruption, I/O) is recorded before it propagates.
+    log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
+    log.finish_failed(failure.what());
+    throw;
+  }
+  summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary.simulated_time = backend.time();
+
+  log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
+  log.set_attribute("/", "simulated_time", summary.simulated_time);
+  log.set_attribute("/", "wall_time", summary.wall_seconds);
+  if (!summary.force_body.empty()) {
+    log.set_attribute("/", "peak_force_body", summary.force_body);
+    log.set_attribute("/", "peak_interaction_force", summary.peak_force);
+  }
+  log.finish_completed();
+  return summary;
+}
+
+}  // namespace mssph

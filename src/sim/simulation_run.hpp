@@ -1,0 +1,31 @@
+#pragma once
+// Drives a backend through a scene's duration: logs body states and per-phase timings to the run
+// log at the scene's log rate, writes snapshots, watches for blow-ups, reports progress, and
+// marks the log completed or failed.
+#include "config/scene.hpp"
+#include "io/run_log.hpp"
+#include "scene/particle_setup.hpp"
+#include "sim/backend.hpp"
+
+#include <string>
+
+namespace mssph {
+
+struct RunOptions {
+  bool quiet = false;
+};
+
+struct RunSummary {
+  std::size_t steps = 0;
+  double simulated_time = 0.0;   // [s]
+  double wall_seconds = 0.0;     // [s] the stepping loop alone
+  std::string force_body;        // the body whose peak force is reported (the proxy, if any)
+  double peak_force = 0.0;       // max |interaction force| on force_body [N]
+};
+
+// Runs to the end of the scene. On a blow-up the log is marked "failed: ..." and the
+// SimulationFailure propagates.
+RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backend& backend, RunLog& log,
+                          const RunOptions& options);
+
+}  // namespace mssph

@@ -1,0 +1,19 @@
+#pragma once
+// Start-up checks of the explicit time step against the CFL-type bounds of DESIGN.md section 1:
+// acoustic 0.25 h / (c + v), viscous 0.125 h^2 rho / mu, body force 0.25 sqrt(h / |g|) and
+// elastic 0.25 h / c_p. A violated bound is a warning (the run may still be stable); a run that
+// then blows up fails with exit code 3.
+#include "scene/particle_setup.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mssph {
+
+std::vector<std::string> stability_warnings(const ParticleSetup& setup);
+
+// Lame parameters of an isotropic material: mu_L = E / (2 (1 + nu)), lambda = E nu / ((1 + nu)(1 - 2 nu)).
+double lame_mu(const Material& m);
+double lame_lambda(const Material& m);
+
+}  // namespace mssph
