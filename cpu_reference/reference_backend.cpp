@@ -105,26 +105,36 @@ void ReferenceBackend::integrate() {
   }
 }
 
+BodyState ReferenceBackend::rigid_body_state(std::size_t body) {
+  const RigidBodyState* rigid = rigid_body_of(body);
+  if (!rigid) throw std::invalid_argument("body " + std::to_string(body) + " is not a movable rigid body");
+  BodyState s;
+  s.mass = rigid->mass;
+  s.centre_of_mass = rigid->position;
+  s.linear_momentum = rigid->mass * rigid->velocity;
+  s.angular_momentum = rigid->angular_momentum;
+  s.orientation = rigid->orientation;
+  s.angular_velocity = rigid->angular_velocity();
+  s.kinetic_energy = 0.5 * rigid->mass * rigid->velocity.squaredNorm() + 0.5 * s.angular_velocity.dot(s.angular_momentum);
+  s.interaction_force = rigid->interaction_force;
+  s.interaction_torque = rigid->interaction_torque;
+  const BodySetup& b = setup_.bodies[body];
+  for (std::size_t i = b.first; i < b.first + b.count; ++i) s.max_speed = std::max(s.max_speed, particles_.velocity[i].norm());
+  return s;
+}
+
 std::vector<BodyState> ReferenceBackend::body_states() {
   std::vector<BodyState> states(setup_.bodies.size());
   for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
+    if (rigid_body_of(b)) {
+      states[b] = rigid_body_state(b);
+      continue;
+    }
     const BodySetup& body = setup_.bodies[b];
     BodyState& s = states[b];
     for (std::size_t i = body.first; i < body.first + body.count; ++i) {
       s.max_speed = std::max(s.max_speed, particles_.velocity[i].norm());
       s.interaction_force += particles_.interaction_force[i];
-    }
-    if (const RigidBodyState* rigid = rigid_body_of(b)) {
-      s.mass = rigid->mass;
-      s.centre_of_mass = rigid->position;
-      s.linear_momentum = rigid->mass * rigid->velocity;
-      s.angular_momentum = rigid->angular_momentum;
-      s.orientation = rigid->orientation;
-      s.angular_velocity = rigid->angular_velocity();
-      s.kinetic_energy = 0.5 * rigid->mass * rigid->velocity.squaredNorm() + 0.5 * s.angular_velocity.dot(s.angular_momentum);
-      s.interaction_force = rigid->interaction_force;
-      s.interaction_torque = rigid->interaction_torque;
-      continue;
     }
     // Particle bodies (and static ones): mass-weighted sums with the SPH masses.
     for (std::size_t i = body.first; i < body.first + body.count; ++i) {

@@ -20,6 +20,7 @@ class ReferenceBackend final : public Backend {
   void set_external_wrench(std::size_t body, const Eigen::Vector3d& force, const Eigen::Vector3d& torque) override;
   void step() override;
   std::vector<BodyState> body_states() override;
+  BodyState rigid_body_state(std::size_t body) override;
   ParticleSnapshot snapshot() override;
   std::vector<std::string> phase_names() const override;
   std::vector<double> last_phase_seconds() const override;

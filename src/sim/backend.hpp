@@ -58,7 +58,11 @@ class Backend {
   // One time step dt: neighbour search, rotations, densities, forces, integration.
   virtual void step() = 0;
 
+  // State of every body (one reduction over all particles).
   virtual std::vector<BodyState> body_states() = 0;
+  // State of one movable rigid body, e.g. the haptic proxy: cheap enough to call every haptic
+  // tick (a GPU backend copies one small record).
+  virtual BodyState rigid_body_state(std::size_t body) = 0;
   virtual ParticleSnapshot snapshot() = 0;
 
   // Wall-clock seconds of each phase of the last step, in the order of phase_names().
