@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 
 namespace mssph {
@@ -165,13 +166,25 @@ double JsonReader::number_or(const std::string& key, double fallback, Interval r
 long long JsonReader::integer_or(const std::string& key, long long fallback, Interval range) const {
   if (!has(key)) return fallback;
   const nlohmann::json& v = at(key);
-  if (!v.is_number_integer()) {
-    fail(key, "expected an integer " + range.describe() + ", got " + describe_json(v));
+  const auto reject = [&] { fail(key, "expected an integer " + range.describe() + ", got " + describe_json(v)); };
+  // JSON has one number type: 3 and 3.0 (or 3e0) are the same value, and JSON Schema's "integer"
+  // accepts all three, so any number without a fractional part that a long long holds is taken.
+  constexpr double kTwoToThe63 = 9223372036854775808.0;
+  long long x = 0;
+  if (v.is_number_unsigned()) {
+    const auto u = v.get<std::uint64_t>();
+    if (u > static_cast<std::uint64_t>(std::numeric_limits<long long>::max())) reject();
+    x = static_cast<long long>(u);
+  } else if (v.is_number_integer()) {
+    x = v.get<long long>();
+  } else if (v.is_number_float()) {
+    const double d = v.get<double>();
+    if (!(std::trunc(d) == d && d >= -kTwoToThe63 && d < kTwoToThe63)) reject();
+    x = static_cast<long long>(d);
+  } else {
+    reject();
   }
-  const long long x = v.get<long long>();
-  if (!range.contains(static_cast<double>(x))) {
-    fail(key, "expected an integer " + range.describe() + ", got " + std::to_string(x));
-  }
+  if (!range.contains(static_cast<double>(x))) reject();
   return x;
 }
 

@@ -59,6 +59,7 @@ std::map<std::string, MaterialEntry> read_materials(const JsonReader& root) {
     reader.allow_only({"rest_density", "pressure_stiffness", "viscosity", "young_modulus", "poisson_ratio",
                        "strain", "damping", "zero_energy_stiffness", "kernel_gradient_correction",
                        "description"});
+    reader.string_or("description", "");  // documentation only, but a string like everywhere else
     MaterialEntry entry;
     read_material_keys(reader, entry.material);
     entry.has_young = reader.has("young_modulus");
@@ -129,6 +130,11 @@ BodyConfig read_body(const std::string& name, const JsonReader& reader,
                      "rest_density", "pressure_stiffness", "viscosity", "young_modulus", "poisson_ratio",
                      "strain", "damping", "zero_energy_stiffness", "kernel_gradient_correction", "density",
                      "fixed", "fixed_regions", "description"});
+  // The name becomes the run log's HDF5 group /bodies/<name>, where '/' would nest groups.
+  if (name.empty() || name.find('/') != std::string::npos) {
+    reader.fail_here("expected a body name that is non-empty and has no '/' (it names the HDF5 group /bodies/<name>)");
+  }
+  reader.string_or("description", "");  // documentation only, but a string like everywhere else
   BodyConfig body;
   body.name = name;
   body.kind = read_kind(reader);
@@ -313,6 +319,7 @@ Scene parse_scene(const nlohmann::json& document, const std::string& file) {
   if (!document.is_object()) root.fail_here("expected a scene object");
   root.allow_only({"$schema", "name", "description", "simulation", "materials", "bodies", "proxy", "output"});
 
+  root.string_or("$schema", "");  // only for editors, which expect a string (a schema URI or path)
   Scene scene;
   scene.source_file = file;
   scene.document = document;
@@ -335,7 +342,13 @@ Scene parse_scene(const nlohmann::json& document, const std::string& file) {
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
   nlohmann::json document = parse_json_file(path);
-  for (const std::string& assignment : overrides) apply_override(document, assignment);
+  for (const std::string& assignment : overrides) {
+    try {
+      apply_override(document, assignment);
+    } catch (const InputError& e) {
+      throw InputError(path + ": " + e.what());  // which scene the override was meant for
+    }
+  }
   return parse_scene(document, path);
 }
 

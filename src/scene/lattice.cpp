@@ -5,7 +5,10 @@
 namespace mssph {
 namespace {
 
-int cells_along(double length, double dx) { return std::max(1, static_cast<int>(std::lround(length / dx))); }
+// Cells of width dx that best fill `length`. A length under half a spacing rounds to none: the
+// lattice cannot resolve it, and inflating it to a full cell would silently change the body's
+// volume (and a rigid body's mass) by more than a factor of two.
+int cells_along(double length, double dx) { return static_cast<int>(std::lround(length / dx)); }
 
 // Cell centres of n cells of width dx centred on 0.
 double cell_centre(int i, int n, double dx) { return (i - 0.5 * (n - 1)) * dx; }
@@ -46,6 +49,8 @@ std::vector<Eigen::Vector3d> sample_container(const Eigen::Vector3d& inner, int 
   // Inner cells per axis, then `layers` more on each side; the floor (and lid) likewise.
   int n_inner[3];
   for (int a = 0; a < 3; ++a) n_inner[a] = cells_along(inner[a], dx);
+  // Without an inner cell along some axis the walls would merge into a solid block: not a container.
+  if (n_inner[0] == 0 || n_inner[1] == 0 || n_inner[2] == 0) return {};
   const int nx = n_inner[0] + 2 * layers;
   const int ny = n_inner[1] + 2 * layers;
   const int nz = n_inner[2] + layers + (open_top ? 0 : layers);
