@@ -1,10 +1,14 @@
 #include "reference_backend.hpp"
 
+#include "deformable_damping.hpp"
 #include "density.hpp"
+#include "elastic_forces.hpp"
 #include "fluid_forces.hpp"
 #include "rigid_body_dynamics.hpp"
-#include "util/errors.hpp"
+#include "zero_energy_control.hpp"
 #include "util/host_info.hpp"
+
+#include <stdexcept>
 
 namespace mssph::reference {
 namespace {
@@ -23,14 +27,10 @@ class PhaseTimer {
 
 }  // namespace
 
-ReferenceBackend::ReferenceBackend(ParticleSetup setup) : setup_(std::move(setup)) {
-  for (const BodySetup& body : setup_.bodies) {
-    if (body.kind == BodyKind::deformable) {
-      throw InputError("body \"" + body.name +
-                       "\": deformable bodies are not available yet in this build of the reference backend");
-    }
-  }
+ReferenceBackend::ReferenceBackend(ParticleSetup setup)
+    : setup_(std::move(setup)), deformable_rest_(build_deformable_rest_state(setup_)) {
   particles_.resize(setup_.size());
+  deformables_.resize(setup_.size());
   particles_.position = setup_.position;
   particles_.velocity = setup_.velocity;
   for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
@@ -61,19 +61,40 @@ void ReferenceBackend::compute_forces() {
     neighbours_ = find_neighbours(particles_.position, setup_.smoothing_length);
   }
   {
+    PhaseTimer timer(phase_seconds_[kRotations]);
+    compute_rotations(setup_, deformable_rest_, particles_.position, deformables_);
+  }
+  {
     PhaseTimer timer(phase_seconds_[kDensity]);
     compute_densities(setup_, neighbours_, particles_);
+    compute_elastic_stresses(setup_, deformable_rest_, particles_.position, deformables_);
   }
   {
     PhaseTimer timer(phase_seconds_[kForces]);
     compute_pressure_viscosity_forces(setup_, neighbours_, particles_);
+    add_deformable_forces();
     for (RigidBodyState& body : rigid_bodies_) sum_interaction_wrench(setup_, particles_, body);
   }
 }
 
-// Paper 3.2: (1) rotations of deformable particles [with the deformable bodies], (2) densities,
-// (3) internal and interaction forces, (4) integration: leap-frog for fluid particles, rigid-body
-// dynamics for rigid bodies.
+// The internal forces of deformable bodies: elasticity (eq. 5, 6) and, where configured,
+// zero-energy-mode control and damping. They act within a body and go to internal_force.
+void ReferenceBackend::add_deformable_forces() {
+  compute_elastic_forces(setup_, deformable_rest_, deformables_);
+  compute_zero_energy_forces(setup_, deformable_rest_, particles_.position, deformables_);
+  compute_damping_forces(setup_, particles_, deformables_);
+  for (const BodySetup& body : setup_.bodies) {
+    if (body.kind != BodyKind::deformable) continue;
+    for (std::size_t i = body.first; i < body.first + body.count; ++i) {
+      particles_.internal_force[i] +=
+          deformables_.elastic_force[i] + deformables_.hourglass_force[i] + deformables_.damping_force[i];
+    }
+  }
+}
+
+// Paper 3.2: (1) rotations of deformable particles, (2) densities and elastic stresses,
+// (3) internal and interaction forces, (4) integration: leap-frog for fluid and deformable
+// particles, rigid-body dynamics for rigid bodies.
 void ReferenceBackend::step() {
   compute_forces();
   PhaseTimer timer(phase_seconds_[kIntegrate]);
@@ -170,7 +191,7 @@ ParticleSnapshot ReferenceBackend::snapshot() {
   return out;
 }
 
-std::vector<std::string> ReferenceBackend::phase_names() const { return {"neighbours", "density", "forces", "integrate"}; }
+std::vector<std::string> ReferenceBackend::phase_names() const { return {"neighbours", "rotations", "density", "forces", "integrate"}; }
 
 std::vector<double> ReferenceBackend::last_phase_seconds() const {
   return {phase_seconds_.begin(), phase_seconds_.end()};

@@ -1,6 +1,8 @@
 #pragma once
 // The double-precision reference backend: the oracle every other backend is checked against.
 // step() is the paper's four-step loop (section 3.2), written for reading.
+#include "deformable_body.hpp"
+#include "deformable_state.hpp"
 #include "neighbour_search.hpp"
 #include "particle_state.hpp"
 #include "sim/backend.hpp"
@@ -31,19 +33,26 @@ class ReferenceBackend final : public Backend {
   ParticleState& particles() { return particles_; }
   const std::vector<RigidBodyState>& rigid_bodies() const { return rigid_bodies_; }
   std::vector<RigidBodyState>& rigid_bodies() { return rigid_bodies_; }
+  // Deformable bodies: the rest configuration and the last step's rotations, strains, stresses,
+  // strain energies and forces.
+  const DeformableRestState& deformable_rest() const { return deformable_rest_; }
+  const DeformableState& deformables() const { return deformables_; }
 
-  // Steps 0-3 of a step without integrating: neighbours, densities and forces for the current
-  // positions and velocities (used by step() and by one-step comparisons between backends).
+  // Steps 1-3 of a step without integrating: neighbours, rotations, densities and forces for the
+  // current positions and velocities (used by step() and by one-step comparisons between backends).
   void compute_forces();
 
  private:
-  enum Phase { kNeighbours, kDensity, kForces, kIntegrate, kPhaseCount };
+  enum Phase { kNeighbours, kRotations, kDensity, kForces, kIntegrate, kPhaseCount };
+  void add_deformable_forces();
   void integrate();
   RigidBodyState* rigid_body_of(std::size_t body);
 
   ParticleSetup setup_;
   ParticleState particles_;
   std::vector<RigidBodyState> rigid_bodies_;  // movable rigid bodies only
+  DeformableRestState deformable_rest_;
+  DeformableState deformables_;
   NeighbourLists neighbours_;
   double time_ = 0.0;
   std::array<double, kPhaseCount> phase_seconds_{};

@@ -1,0 +1,78 @@
+#include "deformable_body.hpp"
+
+#include "sim/stability.hpp"
+#include "sph_kernels.hpp"
+
+#include <Eigen/SVD>
+
+namespace mssph::reference {
+namespace {
+
+bool is_deformable(const ParticleSetup& setup, std::size_t i) {
+  return setup.bodies[setup.body[i]].kind == BodyKind::deformable;
+}
+
+}  // namespace
+
+Eigen::Matrix3d kernel_gradient_correction(const Eigen::Matrix3d& b) {
+  // Below this relative singular value a direction is unsampled: inverting it would amplify
+  // rounding into forces.
+  constexpr double kCutoff = 1e-6;
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(b, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::Vector3d sigma = svd.singularValues();
+  Eigen::Vector3d inverse = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 3; ++k) {
+    if (sigma(k) > kCutoff * sigma(0)) inverse(k) = 1.0 / sigma(k);
+  }
+  // B = U S V^T, B^+ = V S^+ U^T, L = (B^+)^T = U S^+ V^T.
+  return svd.matrixU() * inverse.asDiagonal() * svd.matrixV().transpose();
+}
+
+DeformableRestState build_deformable_rest_state(const ParticleSetup& setup) {
+  const std::size_t n = setup.size();
+  const double h = setup.smoothing_length;
+  const Poly6Kernel w(h);
+  const SpikyGradient grad_w(h);
+  DeformableRestState rest;
+  rest.position = setup.position;
+  rest.volume.assign(n, 0.0);
+  rest.correction.assign(n, Eigen::Matrix3d::Identity());
+  rest.lame.assign(n, LameParameters{});
+
+  // Same-body pairs of deformable particles within h, self excluded.
+  const NeighbourLists all = find_neighbours(setup.position, h);
+  rest.neighbours.offsets.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    rest.neighbours.offsets[i + 1] = rest.neighbours.offsets[i];
+    if (!is_deformable(setup, i)) continue;
+    for (const std::size_t* j = all.begin(i); j != all.end(i); ++j) {
+      if (*j == i || setup.body[*j] != setup.body[i]) continue;
+      rest.neighbours.indices.push_back(*j);
+      ++rest.neighbours.offsets[i + 1];
+    }
+  }
+
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_deformable(setup, i)) continue;
+    const Material& material = setup.bodies[setup.body[i]].material;
+    rest.lame[i] = LameParameters{lame_lambda(material), lame_mu(material)};
+    double mass_density = setup.mass[i] * w(0.0);
+    for (const std::size_t* j = rest.neighbours.begin(i); j != rest.neighbours.end(i); ++j) {
+      mass_density += setup.mass[*j] * w((setup.position[*j] - setup.position[i]).squaredNorm());
+    }
+    rest.volume[i] = setup.mass[i] / mass_density;
+  }
+
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_deformable(setup, i) || !setup.bodies[setup.body[i]].material.kernel_gradient_correction) continue;
+    Eigen::Matrix3d b = Eigen::Matrix3d::Zero();
+    for (const std::size_t* j = rest.neighbours.begin(i); j != rest.neighbours.end(i); ++j) {
+      const Eigen::Vector3d rest_x_ij = setup.position[*j] - setup.position[i];
+      b += rest.volume[*j] * rest_x_ij * grad_w(-rest_x_ij).transpose();
+    }
+    rest.correction[i] = kernel_gradient_correction(b);
+  }
+  return rest;
+}
+
+}  // namespace mssph::reference

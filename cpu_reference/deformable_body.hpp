@@ -1,0 +1,38 @@
+#pragma once
+// The rest configuration of deformable bodies (paper 3.1.2), found once at start: rest positions,
+// rest neighbour sets, rest volumes and kernel-gradient corrections. Indexed by particle over the
+// whole scene; particles of other kinds have no rest neighbours.
+#include "elasticity.hpp"
+#include "neighbour_search.hpp"
+#include "scene/particle_setup.hpp"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace mssph::reference {
+
+struct DeformableRestState {
+  std::vector<Eigen::Vector3d> position;  // X_i, the initial positions [m]
+  // Rest neighbours of i: particles j != i of the same deformable body with |X_ij| < h. Kept for
+  // the whole run: a body's particles interact through these bonds only, whatever their distance
+  // later (eq. 7 acts between bodies, not within one).
+  NeighbourLists neighbours;
+  // V0_i = m_i / sum_j m_j W(|X_ij|), j over the body's own particles, i included [m^3].
+  std::vector<double> volume;
+  // L_i = (sum_j V0_j grad W(X_i - X_j) (x) X_ij)^-1 with kernel-gradient correction, else I.
+  std::vector<Eigen::Matrix3d> correction;
+  std::vector<LameParameters> lame;  // per particle, from its body's material
+};
+
+// Builds the rest state from the initial particles. O(N) through the grid neighbour search.
+DeformableRestState build_deformable_rest_state(const ParticleSetup& setup);
+
+// Kernel-gradient correction (Bonet and Lok 1999; Peer et al. 2018): L_i = B_i^-T with
+// B_i = sum_j V0_j X_ij (x) grad W(X_i - X_j), so that sum_j X_ij (x) V0_j L_i grad W = I and the
+// gradient of any linear field is exact. B_i is inverted through its SVD; singular values below
+// 1e-6 of the largest (a flat or linear neighbourhood: one layer, one row) are left out
+// (pseudo-inverse), so the correction acts in the directions the neighbourhood samples.
+Eigen::Matrix3d kernel_gradient_correction(const Eigen::Matrix3d& b);
+
+}  // namespace mssph::reference

@@ -1,0 +1,32 @@
+#pragma once
+// The loops of corotated SPH elasticity (paper 3.1.2, eq. 4-6) over the deformable particles:
+// step 1 (rotations), the elastic part of step 2 (strain and stress) and of step 3 (forces).
+// The per-particle math is in corotation.hpp and elasticity.hpp.
+#include "deformable_body.hpp"
+#include "deformable_state.hpp"
+#include "scene/particle_setup.hpp"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace mssph::reference {
+
+// Step 1: R_i = rotational part of A_i = sum_j m_j W(|X_ij|) x_ij X_ij^T over i's rest
+// neighbours (state.rotation holds last step's R_i on entry, used only for degenerate A_i).
+void compute_rotations(const ParticleSetup& setup, const DeformableRestState& rest,
+                       const std::vector<Eigen::Vector3d>& positions, DeformableState& state);
+
+// Step 2, elastic properties: grad u_i (eq. 4), strain, stress, K_i = V0_i R_i P_i and the
+// strain energy V0_i psi_i, from the rotations of step 1.
+void compute_elastic_stresses(const ParticleSetup& setup, const DeformableRestState& rest,
+                              const std::vector<Eigen::Vector3d>& positions, DeformableState& state);
+
+// Step 3: the symmetrised elastic forces of eq. 6, f_i = sum_j (K_i d_ij - K_j d_ji), gathered
+// per particle (no scattered writes).
+void compute_elastic_forces(const ParticleSetup& setup, const DeformableRestState& rest, DeformableState& state);
+
+// Total strain energy sum_i V0_i psi_i of one body [J] (from the last compute_elastic_stresses).
+double body_strain_energy(const ParticleSetup& setup, const DeformableState& state, std::size_t body);
+
+}  // namespace mssph::reference
