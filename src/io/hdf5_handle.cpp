@@ -35,6 +35,29 @@ Handle open_or_create_group(hid_t file, const std::string& path) {
   return current;
 }
 
+bool object_exists(hid_t file, const std::string& path) {
+  // H5Lexists fails (rather than answering false) when an intermediate group is missing, so
+  // every prefix is looked up in turn.
+  std::string partial;
+  std::istringstream parts(path);
+  for (std::string part; std::getline(parts, part, '/');) {
+    if (part.empty()) continue;
+    partial += "/" + part;
+    if (check(H5Lexists(file, partial.c_str(), H5P_DEFAULT), "look up " + partial) == 0) return false;
+  }
+  return true;
+}
+
+std::vector<hsize_t> dataset_shape(hid_t file, const std::string& path) {
+  Handle set = dataset(H5Dopen2(file, path.c_str(), H5P_DEFAULT), "open " + path);
+  Handle space = dataspace(H5Dget_space(set.id()), "space of " + path);
+  const int rank = H5Sget_simple_extent_ndims(space.id());
+  check(rank, "rank of " + path);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  check(H5Sget_simple_extent_dims(space.id(), dims.data(), nullptr), "dimensions of " + path);
+  return dims;
+}
+
 void write_attribute(hid_t object, const std::string& name, const std::string& value) {
   remove_if_present(object, name);
   Handle type = variable_string_type();

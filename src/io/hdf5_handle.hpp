@@ -65,6 +65,12 @@ inline Handle property_list(hid_t id, const std::string& what) { return Handle(i
 // Opens the group at `path`, creating it and any missing parents.
 Handle open_or_create_group(hid_t file, const std::string& path);
 
+// Whether an object exists at the absolute `path` (false, not an error, when a parent is missing).
+bool object_exists(hid_t file, const std::string& path);
+
+// The dimensions of the dataset at `path`, e.g. {rows, columns}.
+std::vector<hsize_t> dataset_shape(hid_t file, const std::string& path);
+
 // Attributes on any object (file, group, dataset); an existing attribute of the name is replaced.
 void write_attribute(hid_t object, const std::string& name, const std::string& value);
 void write_attribute(hid_t object, const std::string& name, double value);

@@ -1,18 +1,17 @@
 #include "io/run_log.hpp"
 
 #include <chrono>
-#include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 namespace mssph {
 namespace {
 
 constexpr hsize_t kChunkRows = 1024;
-constexpr std::size_t kMaxPendingRows = 4096;
 
 std::string utc_now() {
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
@@ -21,6 +20,25 @@ std::string utc_now() {
   std::ostringstream out;
   out << std::put_time(&tm, "%Y-%m-%dT%H:%M:%SZ");
   return out.str();
+}
+
+// Snapshots show each particle's body index when the driver has written it here.
+constexpr const char* kBodyPath = "/particles/body";
+
+// The five characters XML reserves, as entities.
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += c;
+    }
+  }
+  return out;
 }
 
 std::string parent_path(const std::string& dataset_path) {
@@ -51,21 +69,35 @@ RunLog::RunLog(const std::string& path, const RunMetadata& metadata) : path_(pat
   h5::silence_error_printing();
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
-  file_ = h5::file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create " + path);
-  const hid_t root = file_.id();
-  h5::write_attribute(root, "mssph_version", metadata.version);
-  h5::write_attribute(root, "git_commit", metadata.git_commit);
-  h5::write_attribute(root, "backend", metadata.backend);
-  h5::write_attribute(root, "device", metadata.device);
-  h5::write_attribute(root, "precision", metadata.precision);
-  h5::write_attribute(root, "scene", metadata.scene_name);
-  h5::write_attribute(root, "config_path", metadata.config_path);
-  h5::write_attribute(root, "config", metadata.config_json);
-  h5::write_attribute(root, "seed", metadata.seed);
-  h5::write_attribute(root, "command_line", metadata.command_line);
-  h5::write_attribute(root, "start_time", utc_now());
-  set_status("running");
-  flush();
+  // Built under a temporary name and renamed once flushed, so `path` never names a file that
+  // HDF5 cannot open, even if the process dies while the file is being created.
+  const std::string partial = path + ".partial";
+  file_ = h5::file(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create " + partial);
+  try {
+    const hid_t root = file_.id();
+    h5::write_attribute(root, "mssph_version", metadata.version);
+    h5::write_attribute(root, "git_commit", metadata.git_commit);
+    h5::write_attribute(root, "backend", metadata.backend);
+    h5::write_attribute(root, "device", metadata.device);
+    h5::write_attribute(root, "precision", metadata.precision);
+    h5::write_attribute(root, "scene", metadata.scene_name);
+    h5::write_attribute(root, "config_path", metadata.config_path);
+    h5::write_attribute(root, "config", metadata.config_json);
+    h5::write_attribute(root, "config_file", metadata.config_file);
+    h5::write_attribute(root, "seed", metadata.seed);
+    h5::write_attribute(root, "command_line", metadata.command_line);
+    h5::write_attribute(root, "start_time", utc_now());
+    set_status("running");
+    flush();
+    std::filesystem::rename(partial, path);
+  } catch (...) {
+    file_.reset();
+    std::error_code ignored;  // the original failure is the one worth reporting
+    std::filesystem::remove(partial, ignored);
+    throw;
+  }
+  // The sidecar of a file this one replaced would point at snapshots that no longer exist.
+  std::filesystem::remove(xdmf_path());
 }
 
 RunLog::~RunLog() {
@@ -98,6 +130,7 @@ std::size_t RunLog::add_series(const std::string& dataset_path, std::size_t colu
   h5::write_attribute(series.dataset.id(), "description", description);
   if (!column_names.empty()) h5::write_attribute(series.dataset.id(), "columns", column_names);
   series_.push_back(std::move(series));
+  structure_changed_ = true;
   return series_.size() - 1;
 }
 
@@ -107,8 +140,12 @@ void RunLog::append(std::size_t series, std::span<const double> row) {
     throw std::invalid_argument("row of " + std::to_string(row.size()) + " values for " + s.path + " (" +
                                 std::to_string(s.columns) + " columns)");
   }
+  // A killed run's file must list every series even before its first periodic flush.
+  if (structure_changed_) flush();
   s.pending.insert(s.pending.end(), row.begin(), row.end());
-  if (s.pending.size() >= kMaxPendingRows * s.columns) write_pending(s);
+  // A full buffer flushes every series, not just this one: the file then stays consistent on
+  // disk (no half-applied extension) and the series stay row-aligned.
+  if (s.pending.size() >= kBufferedRows * s.columns) flush();
 }
 
 void RunLog::write_pending(Series& s) {
@@ -138,23 +175,35 @@ void RunLog::write_array(const std::string& dataset_path, std::span<const int> v
                                "create " + dataset_path);
   h5::check(H5Dwrite(set.id(), H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + dataset_path);
   h5::write_attribute(set.id(), "description", description);
+  structure_changed_ = true;
 }
 
 void RunLog::set_attribute(const std::string& object_path, const std::string& name, const std::string& value) {
   h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, value);
+  structure_changed_ = true;
 }
 void RunLog::set_attribute(const std::string& object_path, const std::string& name, double value) {
   h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, value);
+  structure_changed_ = true;
 }
 void RunLog::set_attribute(const std::string& object_path, const std::string& name, long long value) {
   h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, value);
+  structure_changed_ = true;
 }
 void RunLog::set_attribute(const std::string& object_path, const std::string& name,
                            const std::vector<std::string>& values) {
   h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, values);
+  structure_changed_ = true;
 }
 
 void RunLog::add_snapshot(long long step, double time, const SnapshotFields& fields) {
+  const std::size_t n = fields.density.size();
+  if (fields.position.size() != 3 * n || fields.velocity.size() != 3 * n || fields.pressure.size() != n) {
+    throw std::invalid_argument("snapshot of step " + std::to_string(step) + ": " + std::to_string(n) +
+                                " densities but " + std::to_string(fields.position.size()) + " position, " +
+                                std::to_string(fields.velocity.size()) + " velocity and " +
+                                std::to_string(fields.pressure.size()) + " pressure values");
+  }
   const std::string group_path = snapshot_group(step);
   h5::Handle group = h5::open_or_create_group(file_.id(), group_path);
   h5::write_attribute(group.id(), "time", time);
@@ -163,16 +212,18 @@ void RunLog::add_snapshot(long long step, double time, const SnapshotFields& fie
   write_float_dataset(file_.id(), group_path + "/velocity", fields.velocity, 3, "m/s");
   write_float_dataset(file_.id(), group_path + "/density", fields.density, 1, "kg/m^3");
   write_float_dataset(file_.id(), group_path + "/pressure", fields.pressure, 1, "Pa");
-  snapshots_.push_back({step, time, fields.density.size()});
+  const bool with_body = h5::object_exists(file_.id(), kBodyPath) &&
+                         h5::dataset_shape(file_.id(), kBodyPath) == std::vector<hsize_t>{n};
+  snapshots_.push_back({step, time, n, with_body});
   flush();
   write_xdmf();
 }
 
-// XDMF 3: a temporal collection of polyvertex grids whose heavy data are the HDF5 datasets.
+// XDMF 3: a temporal collection of polyvertex grids whose heavy data are the HDF5 datasets,
+// named relative to the sidecar, which lies next to the HDF5 file.
 void RunLog::write_xdmf() const {
-  const std::string h5_name = std::filesystem::path(path_).filename().string();
-  const std::string xdmf_path = path_ + ".xdmf";
-  const std::string partial = xdmf_path + ".partial";
+  const std::string h5_name = xml_escape(std::filesystem::path(path_).filename().string());
+  const std::string partial = xdmf_path() + ".partial";
   {
     std::ofstream out(partial);
     out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
@@ -180,34 +231,35 @@ void RunLog::write_xdmf() const {
     for (const SnapshotRecord& s : snapshots_) {
       const std::string group = snapshot_group(s.step);
       const std::string n = std::to_string(s.particles);
-      const auto item = [&](const std::string& field, bool vector) {
-        return "<DataItem Dimensions=\"" + n + (vector ? " 3" : "") +
-               "\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">" + h5_name + ":" + group + "/" + field +
-               "</DataItem>";
+      const auto item = [&](const std::string& path, bool vector, const char* type) {
+        return "<DataItem Dimensions=\"" + n + (vector ? " 3" : "") + "\" NumberType=\"" + type +
+               "\" Precision=\"4\" Format=\"HDF\">" + h5_name + ":" + path + "</DataItem>";
+      };
+      const auto attribute = [&](const char* name, bool vector, const std::string& data_item) {
+        return std::string("    <Attribute Name=\"") + name + "\" AttributeType=\"" + (vector ? "Vector" : "Scalar") +
+               "\" Center=\"Node\">" + data_item + "</Attribute>\n";
       };
       out << "   <Grid Name=\"step" << s.step << "\" GridType=\"Uniform\">\n"
           << "    <Time Value=\"" << std::setprecision(17) << s.time << "\"/>\n"
           << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\"/>\n"
-          << "    <Geometry GeometryType=\"XYZ\">" << item("position", true) << "</Geometry>\n"
-          << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">" << item("velocity", true)
-          << "</Attribute>\n"
-          << "    <Attribute Name=\"density\" AttributeType=\"Scalar\" Center=\"Node\">" << item("density", false)
-          << "</Attribute>\n"
-          << "    <Attribute Name=\"pressure\" AttributeType=\"Scalar\" Center=\"Node\">" << item("pressure", false)
-          << "</Attribute>\n"
-          << "    <Attribute Name=\"body\" AttributeType=\"Scalar\" Center=\"Node\"><DataItem Dimensions=\"" << n
-          << "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5_name
-          << ":/particles/body</DataItem></Attribute>\n"
-          << "   </Grid>\n";
+          << "    <Geometry GeometryType=\"XYZ\">" << item(group + "/position", true, "Float") << "</Geometry>\n"
+          << attribute("velocity", true, item(group + "/velocity", true, "Float"))
+          << attribute("density", false, item(group + "/density", false, "Float"))
+          << attribute("pressure", false, item(group + "/pressure", false, "Float"));
+      if (s.with_body) out << attribute("body", false, item(kBodyPath, false, "Int"));
+      out << "   </Grid>\n";
     }
     out << "  </Grid>\n </Domain>\n</Xdmf>\n";
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + partial);
   }
-  std::filesystem::rename(partial, xdmf_path);  // never leave a half-written sidecar
+  std::filesystem::rename(partial, xdmf_path());  // never leave a half-written sidecar
 }
 
 void RunLog::flush() {
   for (Series& s : series_) write_pending(s);
   h5::check(H5Fflush(file_.id(), H5F_SCOPE_GLOBAL), "flush " + path_);
+  structure_changed_ = false;
 }
 
 void RunLog::set_status(const std::string& status) { h5::write_attribute(file_.id(), "status", status); }

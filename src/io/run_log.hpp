@@ -1,9 +1,15 @@
 #pragma once
 // One HDF5 file per run (DESIGN.md section 5). Root attributes say what ran and how it ended
 // (`status`: "running", then "completed" or "failed: <reason>"); time series are chunked,
-// extensible float64 datasets with a `units` attribute, flushed periodically so that a killed
-// run leaves a readable file whose status still says "running". Optional particle snapshots get
-// an XDMF sidecar (<file>.xdmf) that ParaView opens.
+// extensible float64 datasets with a `units` attribute. Optional particle snapshots get an XDMF
+// sidecar (<file>.xdmf) that ParaView opens.
+//
+// A run killed at any moment leaves either no file or a readable one whose status still says
+// "running": the file is created under <path>.partial and renamed only once its metadata is on
+// disk, rows are buffered in memory and reach the file only through flush() (called by the
+// driver every few seconds and whenever a buffer fills), and a change of the file's structure
+// (a new series, array or attribute) is flushed before the next row is buffered. Rows appended
+// since the last flush are what such a kill loses.
 #include "io/hdf5_handle.hpp"
 
 #include <span>
@@ -20,7 +26,8 @@ struct RunMetadata {
   std::string precision;
   std::string scene_name;
   std::string config_path;
-  std::string config_json;  // the scene after overrides, verbatim
+  std::string config_json;  // the scene after overrides: what the run used
+  std::string config_file;  // the scene file's text, verbatim
   long long seed = 0;
   std::string command_line;
 };
@@ -35,7 +42,11 @@ struct SnapshotFields {
 
 class RunLog {
  public:
-  // Creates (or truncates) `path` and writes the metadata with status "running".
+  // Rows each series buffers before a full buffer flushes the file.
+  static constexpr std::size_t kBufferedRows = 4096;
+
+  // Creates `path` (and its missing parent directories) with the metadata and status "running",
+  // replacing an existing file and removing its now stale XDMF sidecar.
   RunLog(const std::string& path, const RunMetadata& metadata);
   ~RunLog();
   RunLog(const RunLog&) = delete;
@@ -49,7 +60,7 @@ class RunLog {
                          const std::string& description, const std::vector<std::string>& column_names = {});
   void append(std::size_t series, std::span<const double> row);
 
-  // Whole arrays written once, e.g. /particles/body.
+  // Whole arrays written once, e.g. /particles/body (which snapshots then show as `body`).
   void write_array(const std::string& dataset_path, std::span<const int> values, const std::string& description);
 
   void set_attribute(const std::string& object_path, const std::string& name, const std::string& value);
@@ -58,7 +69,8 @@ class RunLog {
   void set_attribute(const std::string& object_path, const std::string& name, const std::vector<std::string>& values);
 
   // /snapshots/<step, 8 digits> with attributes time and step; the XDMF sidecar is rewritten so
-  // it always lists every snapshot written so far.
+  // it always lists every snapshot written so far. Throws std::invalid_argument when the fields
+  // disagree on the particle count.
   void add_snapshot(long long step, double time, const SnapshotFields& fields);
 
   // Writes buffered rows and asks HDF5 to flush the file to disk.
@@ -80,15 +92,18 @@ class RunLog {
     long long step;
     double time;
     std::size_t particles;
+    bool with_body;  // /particles/body holds one entry per particle of this snapshot
   };
   void write_pending(Series& series);
   void write_xdmf() const;
+  std::string xdmf_path() const { return path_ + ".xdmf"; }
   void set_status(const std::string& status);
 
   std::string path_;
   h5::Handle file_;
   std::vector<Series> series_;
   std::vector<SnapshotRecord> snapshots_;
+  bool structure_changed_ = false;  // since the last flush
 };
 
 }  // namespace mssph
