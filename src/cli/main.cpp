@@ -9,10 +9,14 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"mssph " + mssph::build_info().version +
-               ": multistate SPH (fluid, deformable, rigid) with a 6DoF haptic proxy.\n"
-               "Exit codes: 0 ok, 1 other error, 2 bad input (config, arguments, trajectory file), "
-               "3 simulation failure (blow-up)."};
+               ": multistate SPH (fluid, deformable, rigid) with a 6DoF haptic proxy."};
   app.require_subcommand(1);
+  app.footer(
+      "Run 'mssph run --help' for scenes, --set overrides, the HDF5 run log and its default path.\n"
+      "\n"
+      "Exit codes: 0 ok; 1 other error (an interrupted run, I/O failure); 2 bad input (config,\n"
+      "arguments, trajectory file): no output is written; 3 simulation failure (blow-up): the run\n"
+      "log is kept, marked \"failed: ...\".");
   app.set_version_flag("--version", mssph::build_info().version + " (" + mssph::build_info().git_commit + ")");
   int exit_code = mssph::kExitOk;
   mssph::cli::add_run_command(app, exit_code);

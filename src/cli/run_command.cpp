@@ -2,6 +2,7 @@
 #include "backend_factory.hpp"
 #include "commands.hpp"
 #include "config/scene_loader.hpp"
+#include "output_path.hpp"
 #include "scene/scene_builder.hpp"
 #include "sim/interrupt.hpp"
 #include "sim/simulation_run.hpp"
@@ -10,8 +11,9 @@
 #include "util/errors.hpp"
 
 #include <cstdio>
-#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace mssph::cli {
 namespace {
@@ -31,16 +33,26 @@ std::string command_line_of(const RunArguments& a) {
   return line;
 }
 
+// The scene file as the user wrote it, recorded next to the parsed scene.
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 int run(const RunArguments& args) {
   // Everything that can be wrong with the input is found before the log file exists.
   const Scene scene = load_scene(args.scene_path, args.overrides);
+  const std::string scene_text = read_text(args.scene_path);
   const std::string backend_name = resolve_backend_name(args.backend);
+  const std::string output = args.output.empty() ? default_output_path(scene.name, backend_name) : args.output;
+  check_output_path(output);
   ParticleSetup setup = build_particles(scene);
   const std::vector<std::string> warnings = stability_warnings(setup);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
 
-  const std::string output =
-      args.output.empty() ? "results/runs/" + scene.name + "_" + backend_name + ".h5" : args.output;
   if (!args.quiet) {
     std::cerr << "mssph: " << scene.name << ": " << setup.size() << " particles (";
     for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
@@ -62,14 +74,17 @@ int run(const RunArguments& args) {
   metadata.scene_name = scene.name;
   metadata.config_path = scene.source_file;
   metadata.config_json = scene.document.dump(2);
+  metadata.config_file = scene_text;
   metadata.seed = static_cast<long long>(scene.simulation.seed);
   metadata.command_line = command_line_of(args);
+  // From here on an interrupt ends the run through the log (status "failed: interrupted ...")
+  // rather than killing the process with the log still saying "running".
+  install_interrupt_handlers();
   RunLog log(output, metadata);
   std::string joined_warnings;
   for (const std::string& w : warnings) joined_warnings += w + "\n";
   log.set_attribute("/", "warnings", joined_warnings);
 
-  install_interrupt_handlers();
   try {
     const RunSummary summary = run_simulation(scene, setup_for_log, *backend, log, RunOptions{args.quiet});
     std::printf("%s: %zu steps, %.3f s simulated in %.2f s wall on %s (%s)", output.c_str(), summary.steps,
@@ -96,13 +111,42 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("scene", args->scene_path, "Scene file (JSON; keys and units in configs/README.md)")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--backend", args->backend, "reference (float64), cpu (float32 kernels on the host), cuda, or auto")
+  std::string built;
+  for (const std::string& name : available_backends()) built += (built.empty() ? "" : ", ") + name;
+  cmd->add_option("--backend", args->backend,
+                  "reference (float64), cpu (float32 kernels on the host), cuda (GPU), or auto (the fastest "
+                  "available); this build has: " + built)
       ->check(CLI::IsMember({"reference", "cpu", "cuda", "auto"}))
       ->capture_default_str();
-  cmd->add_option("--out", args->output, "Output HDF5 file (default results/runs/<scene>_<backend>.h5)");
+  cmd->add_option("--out", args->output,
+                   "Output HDF5 file (default " + default_output_path("<scene>", "<backend>") +
+                       "); missing directories are created, an existing file is replaced");
+  // One PATH=VALUE per --set, so that `--set a=1 scene.json` leaves the scene file positional.
   cmd->add_option("--set", args->overrides,
-                  "Override a scene value by JSON path, e.g. --set bodies/block/young_modulus=5e4 (repeatable)");
+                  "Override a scene value: --set PATH=VALUE, e.g. --set bodies/block/young_modulus=5e4 "
+                  "(repeatable; see below)")
+      ->allow_extra_args(false);
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or start-up lines (warnings and errors still print)");
+  cmd->footer(
+      "The run log: one HDF5 file per run. Root attributes record the version, git commit, backend,\n"
+      "device, precision, the scene (config: after --set; config_file: the file verbatim), seed, start\n"
+      "time and status: \"running\" while the run lasts, then \"completed\" or \"failed: <reason>\". Time\n"
+      "series (with units) reach the disk every output/flush_interval seconds of wall time, so a\n"
+      "killed run leaves a readable file. With output/snapshot_interval > 0, particle snapshots are\n"
+      "written too, with an XDMF sidecar <file>.xdmf that ParaView opens. The summary line on stdout\n"
+      "names the file.\n"
+      "\n"
+      "--set PATH=VALUE: PATH is a JSON path into the scene, '/'-separated with or without a leading\n"
+      "'/' (simulation/dt, bodies/block/young_modulus); its parent must exist. VALUE is read as JSON\n"
+      "when it is valid JSON (5e4, true, [0,0,-9.81], '\"text\"'), otherwise as a plain string\n"
+      "(strain=cauchy). Overrides apply in order, before the scene is validated.\n"
+      "\n"
+      "Progress goes to stderr every few seconds once a run has lasted a few seconds. SIGINT or\n"
+      "SIGTERM stops the run after the current step; its log is marked \"failed: interrupted ...\".\n"
+      "\n"
+      "Exit codes: 0 completed; 1 other error (interrupted, I/O failure); 2 bad input (scene file,\n"
+      "--set, --backend, --out): no output is written; 3 simulation failure (blow-up): the log is\n"
+      "kept, marked \"failed: ...\".");
   cmd->callback([args, &exit_code] {
     try {
       exit_code = run(*args);
