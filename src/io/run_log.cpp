@@ -70,7 +70,9 @@ RunLog::RunLog(const std::string& path, const RunMetadata& metadata) : path_(pat
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
   // Built under a temporary name and renamed once flushed, so `path` never names a file that
-  // HDF5 cannot open, even if the process dies while the file is being created.
+  // HDF5 cannot open, even if the process dies while the file is being created. The default
+  // (oldest compatible) file format matters too: it has no "open for writing" flag, which newer
+  // formats leave set in a killed run's file, making readers refuse it until h5clear is run.
   const std::string partial = path + ".partial";
   file_ = h5::file(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create " + partial);
   try {

@@ -1,0 +1,89 @@
+// Bad input to `mssph run`: exit code 2, an error that names the file and the key or argument,
+// and nothing written (the working directory, where the default output would go, stays empty).
+#include "backend_factory.hpp"
+#include "cli_fixture.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fstream>
+
+namespace mssph::test {
+namespace {
+
+class BadInput : public Cli {
+ protected:
+  // Runs mssph with `args` and checks the outcome; `names` must all appear on stderr.
+  void expect_rejected(const std::vector<std::string>& args, const std::vector<std::string>& names) {
+    const std::vector<std::string> before = work_entries();
+    const ProcessResult r = mssph(args);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    for (const std::string& name : names) EXPECT_NE(r.err.find(name), std::string::npos) << name << " in\n" << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(work_entries(), before) << "bad input must not leave output behind";
+  }
+};
+
+const std::string kScene = data_file("tiny_drop.json");
+
+TEST_F(BadInput, MissingSceneFile) {
+  expect_rejected({"run", data_file("no_such_scene.json")}, {"no_such_scene.json"});
+}
+
+TEST_F(BadInput, InvalidJson) {
+  expect_rejected({"run", data_file("bad_syntax.json")}, {"bad_syntax.json:", "invalid JSON"});
+}
+
+TEST_F(BadInput, UnknownKey) {
+  expect_rejected({"run", data_file("unknown_key.json")}, {"unknown_key.json", "/simulation/time_step"});
+}
+
+TEST_F(BadInput, SetValueOutOfRange) {
+  expect_rejected({"run", kScene, "--set", "simulation/dt=-1"}, {"tiny_drop.json", "/simulation/dt"});
+}
+
+TEST_F(BadInput, SetPathWithoutParent) {
+  expect_rejected({"run", kScene, "--set", "simulation_settings/dt=1e-4"}, {"simulation_settings"});
+}
+
+TEST_F(BadInput, SetWithoutValue) {
+  expect_rejected({"run", kScene, "--set", "simulation/dt"}, {"--set simulation/dt", "PATH=VALUE"});
+}
+
+TEST_F(BadInput, UnknownBackend) {
+  expect_rejected({"run", kScene, "--backend", "quantum"}, {"--backend", "quantum"});
+}
+
+TEST_F(BadInput, BackendNotBuilt) {
+  const std::vector<std::string> built = available_backends();
+  bool tried = false;
+  for (const std::string name : {"reference", "cpu", "cuda"}) {
+    if (std::find(built.begin(), built.end(), name) != built.end()) continue;
+    SCOPED_TRACE(name);
+    expect_rejected({"run", kScene, "--backend", name}, {"--backend " + std::string(name)});
+    tried = true;
+  }
+  if (!tried) GTEST_SKIP() << "this build has every backend";
+}
+
+TEST_F(BadInput, OutIsADirectory) {
+  std::filesystem::create_directory(work("runs"));
+  expect_rejected({"run", kScene, "--out", work("runs")}, {"--out " + work("runs"), "is a directory"});
+  expect_rejected({"run", kScene, "--out", work("runs") + "/"}, {"is a directory"});
+}
+
+TEST_F(BadInput, OutUnderARegularFile) {
+  { std::ofstream(work("notes.txt")) << "not a directory"; }
+  expect_rejected({"run", kScene, "--out", work("notes.txt/sub/run.h5")}, {work("notes.txt"), "not a directory"});
+}
+
+TEST_F(BadInput, OutInAnUnwritableDirectory) {
+  if (geteuid() == 0) GTEST_SKIP() << "running as root, which may write anywhere";
+  std::filesystem::create_directory(work("locked"));
+  std::filesystem::permissions(work("locked"), std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+  expect_rejected({"run", kScene, "--out", work("locked/new/run.h5")}, {work("locked"), "cannot create files"});
+  std::filesystem::permissions(work("locked"), std::filesystem::perms::owner_all);  // so it can be removed
+}
+
+}  // namespace
+}  // namespace mssph::test

@@ -1,0 +1,59 @@
+#pragma once
+// Runs the built mssph binary in a fresh temporary working directory, so default output paths
+// land there and "no output was written" means that directory is still empty.
+#include "child_process.hpp"
+#include "h5_read.hpp"
+#include "temp_dir.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mssph::test {
+
+// A scene under tests/data, by absolute path (the binary runs elsewhere).
+inline std::string data_file(const std::string& name) { return MSSPH_SOURCE_DIR "/tests/data/" + name; }
+
+inline nlohmann::json read_json(const std::string& path) { return nlohmann::json::parse(read_file(path)); }
+
+class Cli : public ::testing::Test {
+ protected:
+  std::string work(const std::string& name) const { return (work_ / name).string(); }
+
+  ProcessResult mssph(const std::vector<std::string>& args) const {
+    std::vector<std::string> argv{MSSPH_BINARY};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return run_process(argv, work_.path());
+  }
+
+  // Starts mssph without waiting; stdout and stderr are captured in their own directory.
+  std::unique_ptr<ChildProcess> start(const std::vector<std::string>& args) const {
+    std::vector<std::string> argv{MSSPH_BINARY};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return std::make_unique<ChildProcess>(argv, work_.path(), capture_.path());
+  }
+
+  // Every path under the working directory, relative to it.
+  std::vector<std::string> work_entries() const {
+    std::vector<std::string> entries;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(work_.path())) {
+      entries.push_back(std::filesystem::relative(e.path(), work_.path()).string());
+    }
+    std::sort(entries.begin(), entries.end());
+    return entries;
+  }
+
+  std::string status_of(const std::string& h5_path) const {
+    return h5::read_string_attribute(open_read_only(h5_path).id(), "status");
+  }
+
+  TempDir work_;
+  TempDir capture_;
+};
+
+}  // namespace mssph::test

@@ -1,0 +1,94 @@
+// `mssph run` on a tiny scene: what a successful run prints and writes.
+#include "cli_fixture.hpp"
+#include "python_tools.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mssph::test {
+namespace {
+
+const std::string kScene = data_file("tiny_drop.json");
+
+std::size_t steps_of(const nlohmann::json& scene) {
+  return static_cast<std::size_t>(std::llround(scene["simulation"]["duration"].get<double>() /
+                                               scene["simulation"]["dt"].get<double>()));
+}
+
+using RunCommand = Cli;
+
+TEST_F(RunCommand, CompletesAndNamesTheLogOnStdout) {
+  const std::string out = work("run.h5");
+  const ProcessResult r = mssph({"run", kScene, "--backend", "reference", "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << "one summary line:\n" << r.out;
+  EXPECT_EQ(r.out.rfind(out + ": ", 0), 0u) << r.out;
+  EXPECT_NE(r.err.find("tiny_drop"), std::string::npos) << "start-up line expected without -q:\n" << r.err;
+
+  const nlohmann::json scene = read_json(kScene);
+  const h5::Handle file = open_read_only(out);
+  EXPECT_EQ(h5::read_string_attribute(file.id(), "status"), "completed");
+  EXPECT_EQ(h5::read_string_attribute(file.id(), "backend"), "reference");
+  EXPECT_EQ(h5::read_string_attribute(file.id(), "config_path"), kScene);
+  EXPECT_EQ(h5::read_string_attribute(file.id(), "config_file"), read_file(kScene));
+  EXPECT_EQ(nlohmann::json::parse(h5::read_string_attribute(file.id(), "config")), scene);
+  EXPECT_EQ(read_integer_attribute(file.id(), "seed"), scene["simulation"]["seed"].get<long long>());
+  EXPECT_EQ(read_integer_attribute(file.id(), "steps"), static_cast<long long>(steps_of(scene)));
+  const std::vector<double> time = read_doubles(file.id(), "/time");
+  ASSERT_FALSE(time.empty());
+  // The last sample is taken at the last step: the end of the run within rounding of the sum
+  // of steps, far below a step.
+  const double dt = scene["simulation"]["dt"].get<double>();
+  EXPECT_NEAR(time.back(), scene["simulation"]["duration"].get<double>(), 1e-6 * dt);
+}
+
+TEST_F(RunCommand, QuietPrintsOnlyTheSummary) {
+  const ProcessResult r = mssph({"run", kScene, "--out", work("quiet.h5"), "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "") << "-q leaves stderr to warnings and errors; this scene has none";
+  EXPECT_EQ(r.out.rfind(work("quiet.h5") + ": ", 0), 0u) << r.out;
+}
+
+TEST_F(RunCommand, WritesToTheDocumentedDefaultPath) {
+  const ProcessResult r = mssph({"run", kScene, "--backend", "reference", "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string expected = "results/runs/tiny_drop_reference.h5";  // `mssph run --help`
+  EXPECT_EQ(r.out.rfind(expected + ": ", 0), 0u) << r.out;
+  EXPECT_EQ(work_entries(), (std::vector<std::string>{"results", "results/runs", expected}));
+  EXPECT_EQ(status_of(work(expected)), "completed");
+}
+
+TEST_F(RunCommand, SetOverridesReachTheLoggedConfig) {
+  const std::string out = work("overridden.h5");
+  // --set before the scene: each --set takes exactly one PATH=VALUE.
+  const ProcessResult r = mssph({"run", "--set", "simulation/duration=0.01", "--set", "/simulation/seed=99", kScene,
+                                 "--out", out, "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json expected = read_json(kScene);
+  expected["simulation"]["duration"] = 0.01;
+  expected["simulation"]["seed"] = 99;
+  const h5::Handle file = open_read_only(out);
+  EXPECT_EQ(nlohmann::json::parse(h5::read_string_attribute(file.id(), "config")), expected);
+  EXPECT_EQ(h5::read_string_attribute(file.id(), "config_file"), read_file(kScene)) << "the file as written";
+  EXPECT_EQ(read_integer_attribute(file.id(), "seed"), 99);
+  EXPECT_EQ(read_integer_attribute(file.id(), "steps"), static_cast<long long>(steps_of(expected)));
+  const std::string command_line = h5::read_string_attribute(file.id(), "command_line");
+  EXPECT_NE(command_line.find("--set simulation/duration=0.01"), std::string::npos) << command_line;
+}
+
+TEST_F(RunCommand, SnapshotsComeWithAValidXdmfSidecar) {
+  const std::string out = work("snapshots.h5");
+  const ProcessResult r = mssph({"run", kScene, "--out", out, "--set", "output/snapshot_interval=0.01", "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const ProcessResult check = check_xdmf(out + ".xdmf");
+  EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
+  // One snapshot at the start and one per interval: 0, 0.01 and 0.02 s.
+  const nlohmann::json scene = read_json(kScene);
+  const long long expected =
+      1 + std::llround(scene["simulation"]["duration"].get<double>() / 0.01);
+  EXPECT_NE(check.out.find("grids " + std::to_string(expected)), std::string::npos) << check.out;
+  EXPECT_NE(read_file(out + ".xdmf").find("/particles/body"), std::string::npos) << "body index per particle";
+}
+
+}  // namespace
+}  // namespace mssph::test

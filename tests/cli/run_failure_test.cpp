@@ -1,0 +1,119 @@
+// Runs that do not complete: a blow-up (exit 3), SIGTERM (status "failed: interrupted"), and
+// SIGKILL at any moment (a file h5py opens, status "running", the rows flushed so far).
+#include "cli_fixture.hpp"
+#include "python_tools.hpp"
+
+#include <algorithm>
+#include <csignal>
+#include <functional>
+#include <thread>
+
+namespace mssph::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+const std::string kScene = data_file("tiny_drop.json");
+// Long enough that a run is still going when the test signals it; the scene's
+// output/flush_interval of 0.1 s puts rows on disk many times a second meanwhile.
+const std::vector<std::string> kLongRun{"--set", "simulation/duration=1000"};
+
+std::vector<std::string> concat(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+// Waits until `ready` holds; false after `limit`.
+template <typename Condition>
+bool wait_for(Condition ready, std::chrono::milliseconds limit) {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  while (!ready()) {
+    if (std::chrono::steady_clock::now() > deadline) return false;
+    std::this_thread::sleep_for(1ms);
+  }
+  return true;
+}
+
+// Every body series holds as many rows as /time (they are appended and flushed together), and
+// the times increase.
+void expect_consistent_series(const nlohmann::json& summary) {
+  const nlohmann::json& time = summary["objects"]["/time"];
+  const auto rows = time["shape"][0].get<std::size_t>();
+  for (const auto& [path, object] : summary["objects"].items()) {
+    if (path.rfind("/bodies/", 0) == 0 && object["kind"] == "dataset") {
+      EXPECT_EQ(object["shape"][0].get<std::size_t>(), rows) << path;
+    }
+  }
+  const std::vector<double> t = time["data"].get<std::vector<double>>();
+  EXPECT_TRUE(std::is_sorted(t.begin(), t.end(), std::less_equal<>())) << "times must increase";
+}
+
+using RunFailure = Cli;
+
+TEST_F(RunFailure, SpeedBeyondMaxSpeedIsABlowUp) {
+  const std::string out = work("blow_up.h5");
+  const ProcessResult r = mssph({"run", kScene, "--out", out, "--set", "simulation/max_speed=1e-4", "-q"});
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("blow-up"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(out), std::string::npos) << "the kept log is named:\n" << r.err;
+  EXPECT_EQ(status_of(out).rfind("failed: blow-up", 0), 0u) << status_of(out);
+}
+
+TEST_F(RunFailure, AnAbsurdTimeStepIsABlowUp) {
+  const std::string out = work("absurd_dt.h5");
+  // Far beyond the scene's acoustic bound 0.25 h / sqrt(k) of about 1 ms; the start-up warning
+  // says so.
+  const ProcessResult r = mssph({"run", kScene, "--out", out, "--set", "simulation/dt=0.02", "--set",
+                                 "simulation/duration=2", "--set", "output/log_interval=0", "-q"});
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("warning: "), std::string::npos) << r.err;
+  EXPECT_EQ(status_of(out).rfind("failed: blow-up", 0), 0u) << status_of(out);
+  expect_consistent_series(h5py_summary(out));
+}
+
+TEST_F(RunFailure, SigtermMarksTheLogInterrupted) {
+  const std::string out = work("terminated.h5");
+  const auto run = start(concat({"run", kScene, "--out", out}, kLongRun));
+  // The progress line (after a few seconds) shows the run is well under way.
+  ASSERT_TRUE(wait_for([&] { return run->stderr_so_far().find("  step ") != std::string::npos; }, 60s))
+      << "no progress line on stderr:\n" << run->stderr_so_far();
+  run->send(SIGTERM);
+  const ProcessResult r = run->wait();
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find(out), std::string::npos) << "the kept log is named:\n" << r.err;
+  EXPECT_EQ(status_of(out).rfind("failed: interrupted", 0), 0u) << status_of(out);
+  const nlohmann::json summary = h5py_summary(out);
+  EXPECT_GT(summary["objects"]["/time"]["shape"][0].get<std::size_t>(), 0u);
+  EXPECT_GT(summary["attributes"]["steps"].get<long long>(), 0);
+  expect_consistent_series(summary);
+}
+
+TEST_F(RunFailure, SigkillLeavesARunningLogWithTheFlushedRows) {
+  const std::string out = work("killed.h5");
+  const auto run = start(concat({"run", kScene, "--out", out, "-q"}, kLongRun));
+  // Past the first progress report (due after 3 s without -q), so the quiet check below means
+  // something, and many flush intervals.
+  std::this_thread::sleep_for(4s);
+  ASSERT_TRUE(run->running()) << run->wait().err;
+  run->send(SIGKILL);
+  const ProcessResult r = run->wait();
+  EXPECT_EQ(r.signal, SIGKILL);
+  EXPECT_EQ(r.err, "") << "-q prints no progress";
+  const nlohmann::json summary = h5py_summary(out);
+  EXPECT_EQ(summary["attributes"]["status"], "running");
+  EXPECT_GT(summary["objects"]["/time"]["shape"][0].get<std::size_t>(), 0u) << "rows flushed before the kill";
+  expect_consistent_series(summary);
+}
+
+TEST_F(RunFailure, SigkillAsSoonAsTheLogAppearsLeavesAReadableFile) {
+  const std::string out = work("killed_at_start.h5");
+  const auto run = start(concat({"run", kScene, "--out", out, "-q"}, kLongRun));
+  ASSERT_TRUE(wait_for([&] { return std::filesystem::exists(out) || !run->running(); }, 60s));
+  run->send(SIGKILL);
+  EXPECT_EQ(run->wait().signal, SIGKILL);
+  const nlohmann::json summary = h5py_summary(out);
+  EXPECT_EQ(summary["attributes"]["status"], "running");
+}
+
+}  // namespace
+}  // namespace mssph::test
