@@ -23,7 +23,8 @@ void compute_pressure_viscosity_forces(const ParticleSetup& setup, const Neighbo
         const BodySetup& body_j = setup.bodies[setup.body[j]];
         const Eigen::Vector3d r_ij = state.position[i] - state.position[j];
         const double volumes = state.volume[i] * state.volume[j];
-        const Eigen::Vector3d pressure = -volumes * (state.pressure[i] + state.pressure[j]) * grad_w(r_ij);
+        const Eigen::Vector3d pressure =
+            -(volumes / setup.gradient_consistency) * (state.pressure[i] + state.pressure[j]) * grad_w(r_ij);
         const double mu = 0.5 * (body_i.material.viscosity + body_j.material.viscosity);
         const Eigen::Vector3d viscosity =
             mu * volumes * lap_w(r_ij.norm()) * (state.velocity[j] - state.velocity[i]);

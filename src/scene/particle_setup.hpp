@@ -37,6 +37,7 @@ struct ParticleSetup {
   double spacing = 0.0;               // lattice spacing dx [m]
   double smoothing_length = 0.0;      // support radius h [m]
   double rest_number_density = 0.0;   // delta0 = sum_j W_ij in a rest lattice [1/m^3]
+  double gradient_consistency = 1.0;  // c = sum_j V_j x_ji (x) grad W_ij in a rest lattice (x I) [-]
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   double dt = 0.0;
   double max_speed = 0.0;

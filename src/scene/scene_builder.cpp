@@ -80,6 +80,7 @@ ParticleSetup build_particles(const Scene& scene) {
   setup.spacing = sim.particle_spacing;
   setup.smoothing_length = sim.smoothing_length;
   setup.rest_number_density = reference::lattice_number_density(sim.particle_spacing, sim.smoothing_length);
+  setup.gradient_consistency = reference::lattice_gradient_consistency(sim.particle_spacing, sim.smoothing_length);
   setup.gravity = sim.gravity;
   setup.dt = sim.dt;
   setup.max_speed = sim.max_speed;
