@@ -1,6 +1,8 @@
 #pragma once
 // A scene as read from its JSON file: typed, validated, SI units throughout. The keys and their
 // units are documented in configs/README.md and checked by configs/scene.schema.json.
+#include "haptics/haptics_config.hpp"
+
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
@@ -76,7 +78,8 @@ struct SimulationConfig {
 };
 
 struct ProxyConfig {
-  std::string body;  // the rigid body the haptic device drives
+  std::string body;       // the rigid body the haptic device drives
+  HapticsConfig haptics;  // coupling, device and trajectory (src/haptics/haptics_config.hpp)
 };
 
 struct OutputConfig {

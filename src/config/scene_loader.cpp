@@ -1,6 +1,7 @@
 #include "config/scene_loader.hpp"
 
 #include "config/json_reader.hpp"
+#include "haptics/haptics_config.hpp"
 #include "util/errors.hpp"
 
 #include <algorithm>
@@ -212,8 +213,8 @@ BodyConfig read_body(const std::string& name, const JsonReader& reader,
 std::optional<ProxyConfig> read_proxy(const JsonReader& root, const std::vector<BodyConfig>& bodies) {
   const auto section = root.optional_child("proxy");
   if (!section) return std::nullopt;
-  section->allow_only({"body"});
   ProxyConfig proxy;
+  proxy.haptics = read_haptics_config(*section);
   proxy.body = section->string("body");
   const auto it = std::find_if(bodies.begin(), bodies.end(), [&](const BodyConfig& b) { return b.name == proxy.body; });
   if (it == bodies.end()) section->fail("body", "no body named \"" + proxy.body + "\" in /bodies");

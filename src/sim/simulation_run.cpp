@@ -1,5 +1,6 @@
 #include "sim/simulation_run.hpp"
 
+#include "haptics/haptics_run.hpp"
 #include "sim/interrupt.hpp"
 #include "sim/progress.hpp"
 #include "util/errors.hpp"
@@ -113,6 +114,9 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
     }
   }
 
+  std::optional<HapticsRun> haptics;
+  if (scene.proxy) haptics.emplace(scene, setup, log, options.record_device);
+
   RunSummary summary;
   summary.force_body = force_body < setup.bodies.size() ? setup.bodies[force_body].name : "";
   ProgressReporter progress(total_steps, dt, options.quiet);
@@ -129,6 +133,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
     if (snapshot_every > 0) write_snapshot(0);
     for (std::size_t step = 1; step <= total_steps; ++step) {
       const auto step_start = std::chrono::steady_clock::now();
+      if (haptics) haptics->before_step(backend, step - 1);  // ticks of this step, and its coupling wrench
       backend.step();
       const double step_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
       append_scalar(log, step_time_series, step_seconds);
@@ -175,11 +180,19 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
   } catch (const std::exception& failure) {
     // Any failure inside the loop (blow-up, interruption, I/O) is recorded before it propagates.
     log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
+    if (haptics) {
+      haptics->finish_failed(summary.steps,
+                             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
     log.finish_failed(failure.what());
     throw;
   }
   summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.simulated_time = backend.time();
+  if (haptics) {
+    haptics->finish(backend, summary.steps, summary.wall_seconds);
+    summary.peak_rendered_force = haptics->peak_rendered_force();
+  }
 
   log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
   log.set_attribute("/", "simulated_time", summary.simulated_time);

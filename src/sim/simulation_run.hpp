@@ -1,18 +1,20 @@
 #pragma once
 // Drives a backend through a scene's duration: logs body states and per-phase timings to the run
-// log at the scene's log rate, writes snapshots, watches for blow-ups, reports progress, and
-// marks the log completed or failed.
+// log at the scene's log rate, runs the haptic loop of a scene with a proxy (src/haptics), writes
+// snapshots, watches for blow-ups, reports progress, and marks the log completed or failed.
 #include "config/scene.hpp"
 #include "io/run_log.hpp"
 #include "scene/particle_setup.hpp"
 #include "sim/backend.hpp"
 
+#include <optional>
 #include <string>
 
 namespace mssph {
 
 struct RunOptions {
   bool quiet = false;
+  std::string record_device;  // write the haptic device's trajectory here (.csv or .h5); "" for none
 };
 
 struct RunSummary {
@@ -21,6 +23,7 @@ struct RunSummary {
   double wall_seconds = 0.0;     // [s] the stepping loop alone
   std::string force_body;        // the body whose peak force is reported (the proxy, if any)
   double peak_force = 0.0;       // max |interaction force| on force_body [N]
+  std::optional<double> peak_rendered_force;  // max |force| the haptic device rendered [N]; runs with a proxy
 };
 
 // Runs to the end of the scene. On a blow-up the log is marked "failed: ..." and the

@@ -1,0 +1,66 @@
+#include "haptics/haptics_run.hpp"
+
+#include "haptics/coupling_stability.hpp"
+#include "util/errors.hpp"
+
+#include <algorithm>
+
+namespace mssph {
+
+ProxyModel proxy_model_of(const Scene& scene, const ParticleSetup& setup) {
+  const auto it = std::find_if(setup.bodies.begin(), setup.bodies.end(),
+                               [&](const BodySetup& b) { return b.name == scene.proxy->body; });
+  ProxyModel model;
+  model.body = static_cast<std::size_t>(it - setup.bodies.begin());
+  model.mass = it->mass;
+  model.inertia_body = it->inertia_body;
+  model.gravity = setup.gravity;
+  return model;
+}
+
+std::vector<std::string> haptic_warnings(const Scene& scene, const ParticleSetup& setup) {
+  if (!scene.proxy) return {};
+  return coupling_stability_warnings(scene.proxy->haptics, scene.proxy->body, proxy_model_of(scene, setup), setup.dt);
+}
+
+void check_device_recording_request(const Scene& scene, const std::string& path) {
+  if (!scene.proxy) {
+    throw InputError("--record-device " + path + ": scene " + scene.source_file +
+                     " has no \"proxy\", so there is no haptic device to record");
+  }
+  check_recording_path(path);
+}
+
+HapticsRun::HapticsRun(const Scene& scene, const ParticleSetup& setup, RunLog& log, std::string record_device)
+    : session_(scene.proxy->haptics, proxy_model_of(scene, setup), setup.dt),
+      log_(log),
+      record_device_(std::move(record_device)),
+      dt_(setup.dt) {
+  session_.add_sink(log_);
+  session_.add_sink(metrics_);
+  if (!record_device_.empty()) session_.add_sink(recorder_);
+  log.set_attribute("/haptics", "proxy_body", scene.proxy->body);
+  log.set_attribute("/haptics", "trajectory", std::string(to_string(scene.proxy->haptics.trajectory.source)));
+  log.set_attribute("/haptics", "haptic_period_s", session_.period());
+}
+
+void HapticsRun::write_results(std::size_t steps, double wall_seconds) {
+  log_.write_summary(metrics_, HapticRunTotals{steps, session_.state_queries(), static_cast<double>(steps) * dt_,
+                                               wall_seconds});
+  if (!record_device_.empty()) write_device_recording(record_device_, recorder_.recording());
+}
+
+void HapticsRun::finish(Backend& backend, std::size_t steps, double wall_seconds) {
+  session_.finish(backend, steps);
+  write_results(steps, wall_seconds);
+}
+
+void HapticsRun::finish_failed(std::size_t steps, double wall_seconds) noexcept {
+  try {
+    write_results(steps, wall_seconds);
+  } catch (const std::exception&) {
+    // The run already failed for a reason the caller reports; its log says so.
+  }
+}
+
+}  // namespace mssph

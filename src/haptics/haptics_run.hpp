@@ -1,0 +1,56 @@
+#pragma once
+// The haptics of one run as the simulation driver and the command line see them: the session,
+// its /haptics log, an optional recording of the device, and the start-up gain check.
+#include "config/scene.hpp"
+#include "haptics/device_recorder.hpp"
+#include "haptics/haptic_log.hpp"
+#include "haptics/haptic_metrics.hpp"
+#include "haptics/haptics_session.hpp"
+#include "io/run_log.hpp"
+#include "scene/particle_setup.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mssph {
+
+class Backend;
+
+// The proxy's index and mass properties in `setup`; the scene must have a proxy.
+ProxyModel proxy_model_of(const Scene& scene, const ParticleSetup& setup);
+
+// Warnings of the coupling gains against the explicit stability bound (coupling_stability.hpp);
+// none for a scene without a proxy.
+std::vector<std::string> haptic_warnings(const Scene& scene, const ParticleSetup& setup);
+
+// Throws InputError when --record-device cannot be honoured: no proxy, or an unknown format.
+void check_device_recording_request(const Scene& scene, const std::string& path);
+
+class HapticsRun {
+ public:
+  // `record_device`: where to write the device trajectory at the end ("" for nowhere).
+  HapticsRun(const Scene& scene, const ParticleSetup& setup, RunLog& log, std::string record_device);
+  HapticsRun(const HapticsRun&) = delete;  // the session holds pointers to the sinks below
+  HapticsRun& operator=(const HapticsRun&) = delete;
+
+  void before_step(Backend& backend, std::size_t step) { session_.before_step(backend, step); }
+  // After the last of `steps` steps: the final tick, the summary attributes and the recording.
+  void finish(Backend& backend, std::size_t steps, double wall_seconds);
+  // After a failure: the summary of the ticks that ran and the recording so far. Never throws,
+  // so that the failure being reported is the one that ended the run.
+  void finish_failed(std::size_t steps, double wall_seconds) noexcept;
+
+  double peak_rendered_force() const { return metrics_.peak_rendered_force; }
+
+ private:
+  void write_results(std::size_t steps, double wall_seconds);
+
+  HapticsSession session_;
+  HapticLog log_;
+  HapticMetrics metrics_;
+  DeviceRecorder recorder_;
+  std::string record_device_;
+  double dt_;
+};
+
+}  // namespace mssph

@@ -1,0 +1,31 @@
+#pragma once
+// The two file formats of device recordings (see device_recording.hpp), without validation
+// beyond the format itself: device_recording.cpp checks the values and names the row.
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace mssph {
+
+struct RawRecording {
+  std::vector<double> time;                // [s]
+  std::vector<std::array<double, 7>> pose;  // x, y, z, qx, qy, qz, qw
+  // How an error names sample i: "<row_word> <row_number[i]>", e.g. "line 7" in a CSV file
+  // (the line an editor shows) or "/device row 6" in an HDF5 file (the index h5py shows).
+  std::string row_word;
+  std::vector<std::size_t> row_number;
+
+  std::string row_name(std::size_t i) const { return row_word + " " + std::to_string(row_number[i]); }
+};
+
+// The CSV columns, in the order the writer uses.
+inline const std::array<const char*, 8> kRecordingColumns = {"t", "x", "y", "z", "qx", "qy", "qz", "qw"};
+
+RawRecording read_csv_recording(const std::string& path);
+void write_csv_recording(const std::string& path, const RawRecording& recording);
+
+RawRecording read_hdf5_recording(const std::string& path);
+void write_hdf5_recording(const std::string& path, const RawRecording& recording);
+
+}  // namespace mssph

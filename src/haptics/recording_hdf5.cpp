@@ -1,0 +1,112 @@
+// Device recordings as HDF5: /device/t [N] (s) and /device/pose [N, 7] (x, y, z in m; qx, qy,
+// qz, qw), the layout a run log's readers already know.
+#include "haptics/recording_formats.hpp"
+
+#include "io/hdf5_handle.hpp"
+#include "util/errors.hpp"
+
+namespace mssph {
+namespace {
+
+constexpr const char* kTimePath = "/device/t";
+constexpr const char* kPosePath = "/device/pose";
+
+// Whether `path` (absolute, one group deep) exists: H5Lexists fails rather than answering false
+// when the parent group is missing, so the parent is looked up first.
+bool exists(hid_t file, const std::string& parent, const std::string& path) {
+  if (h5::check(H5Lexists(file, parent.c_str(), H5P_DEFAULT), "look up " + parent) <= 0) return false;
+  return h5::check(H5Lexists(file, path.c_str(), H5P_DEFAULT), "look up " + path) > 0;
+}
+
+std::vector<hsize_t> shape_of(hid_t set, const std::string& what) {
+  h5::Handle space = h5::dataspace(H5Dget_space(set), "space of " + what);
+  const int rank = h5::check(H5Sget_simple_extent_ndims(space.id()), "rank of " + what);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  h5::check(H5Sget_simple_extent_dims(space.id(), dims.data(), nullptr), "dimensions of " + what);
+  return dims;
+}
+
+std::string describe_shape(const std::vector<hsize_t>& dims) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < dims.size(); ++i) text += (i ? ", " : "") + std::to_string(dims[i]);
+  return text + "]";
+}
+
+std::vector<double> read_doubles(hid_t set, std::size_t count, const std::string& path, const std::string& name) {
+  h5::Handle type = h5::datatype(H5Dget_type(set), "type of " + name);
+  if (H5Tget_class(type.id()) != H5T_FLOAT && H5Tget_class(type.id()) != H5T_INTEGER) {
+    throw InputError(path + ": " + name + ": expected numbers");
+  }
+  std::vector<double> values(count);
+  h5::check(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + name);
+  return values;
+}
+
+void write_dataset(hid_t file, const char* name, const std::vector<double>& values, const std::vector<hsize_t>& dims,
+                   const std::string& units, const std::string& description) {
+  h5::Handle space = h5::dataspace(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
+                                   std::string("space of ") + name);
+  h5::Handle set = h5::dataset(
+      H5Dcreate2(file, name, H5T_IEEE_F64LE, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+      std::string("create ") + name);
+  h5::check(H5Dwrite(set.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
+            std::string("write ") + name);
+  h5::write_attribute(set.id(), "units", units);
+  h5::write_attribute(set.id(), "description", description);
+}
+
+}  // namespace
+
+RawRecording read_hdf5_recording(const std::string& path) {
+  h5::silence_error_printing();
+  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (id < 0) throw InputError(path + ": cannot open as an HDF5 device recording");
+  h5::Handle file = h5::file(id, "open " + path);
+  for (const char* name : {kTimePath, kPosePath}) {
+    if (!exists(file.id(), "/device", name)) {
+      throw InputError(path + ": missing dataset " + name +
+                       " (expected /device/t [N] in s and /device/pose [N, 7]: x, y, z, qx, qy, qz, qw)");
+    }
+  }
+  h5::Handle time_set = h5::dataset(H5Dopen2(file.id(), kTimePath, H5P_DEFAULT), std::string("open ") + kTimePath);
+  h5::Handle pose_set = h5::dataset(H5Dopen2(file.id(), kPosePath, H5P_DEFAULT), std::string("open ") + kPosePath);
+  const std::vector<hsize_t> time_shape = shape_of(time_set.id(), kTimePath);
+  const std::vector<hsize_t> pose_shape = shape_of(pose_set.id(), kPosePath);
+  if (time_shape.size() != 1) {
+    throw InputError(path + ": " + kTimePath + ": expected a 1-D dataset [N], got shape " + describe_shape(time_shape));
+  }
+  if (pose_shape.size() != 2 || pose_shape[1] != 7 || pose_shape[0] != time_shape[0]) {
+    throw InputError(path + ": " + kPosePath + ": expected shape [" + std::to_string(time_shape[0]) +
+                     ", 7] (one x, y, z, qx, qy, qz, qw row per time in " + kTimePath + "), got " +
+                     describe_shape(pose_shape));
+  }
+  const std::size_t n = time_shape[0];
+  RawRecording out;
+  out.row_word = "/device row";
+  out.time = read_doubles(time_set.id(), n, path, kTimePath);
+  const std::vector<double> flat = read_doubles(pose_set.id(), 7 * n, path, kPosePath);
+  out.pose.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = 0; k < 7; ++k) out.pose[i][k] = flat[7 * i + k];
+    out.row_number.push_back(i);
+  }
+  return out;
+}
+
+void write_hdf5_recording(const std::string& path, const RawRecording& recording) {
+  h5::silence_error_printing();
+  h5::Handle file = h5::file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create " + path);
+  h5::open_or_create_group(file.id(), "/device");
+  const hsize_t n = recording.time.size();
+  std::vector<double> flat;
+  flat.reserve(7 * n);
+  for (const auto& row : recording.pose) flat.insert(flat.end(), row.begin(), row.end());
+  write_dataset(file.id(), kTimePath, recording.time, {n}, "s", "time of each device sample");
+  write_dataset(file.id(), kPosePath, flat, {n, 7}, "m, m, m, 1, 1, 1, 1",
+                "handle pose in the device frame: position and unit quaternion (scalar last)");
+  std::vector<std::string> columns(kRecordingColumns.begin() + 1, kRecordingColumns.end());
+  h5::Handle pose = h5::dataset(H5Dopen2(file.id(), kPosePath, H5P_DEFAULT), std::string("open ") + kPosePath);
+  h5::write_attribute(pose.id(), "columns", columns);
+}
+
+}  // namespace mssph

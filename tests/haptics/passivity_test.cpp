@@ -1,0 +1,108 @@
+// Passivity of the virtual coupling (Colgate et al. 1995) measured by its passivity observer
+// (Hannaford and Ryu 2002): over a scripted interaction the coupling may store and dissipate
+// energy but never inject it, unless its gains break the explicit stability bound, which the
+// start-up check then reports.
+#include "haptics/coupling_stability.hpp"
+#include "session_harness.hpp"
+
+#include <gtest/gtest.h>
+#include <gmock/gmock.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace mssph::test {
+namespace {
+
+constexpr double kDt = 2.5e-4;     // the scenes' step
+constexpr double kMass = 1.0;      // proxy [kg]
+constexpr double kInertia = 1e-2;  // proxy [kg m^2]
+
+// Five seconds of a hand moving the handle: reaching, tapping a floor 3 cm deep (the coupling
+// then pushes the proxy into the floor's penalty contact), and twisting back and forth.
+HapticsConfig five_second_script(const SpringDamperGains& coupling) {
+  HapticsConfig config;
+  config.coupling = coupling;
+  config.trajectory.source = TrajectorySource::scripted;
+  const auto turn = [](double degrees) {
+    return Eigen::Quaterniond(Eigen::AngleAxisd(degrees * std::numbers::pi / 180.0, Eigen::Vector3d(0.3, 0.2, 1.0).normalized()));
+  };
+  config.trajectory.keyframes = {
+      {0.0, Pose{Eigen::Vector3d::Zero(), turn(0)}},       {0.6, Pose{Eigen::Vector3d(0.1, 0.0, 0.0), turn(30)}},
+      {1.0, Pose{Eigen::Vector3d(0.1, 0.0, -0.08), turn(30)}}, {1.5, Pose{Eigen::Vector3d(0.1, 0.0, -0.08), turn(-20)}},
+      {1.8, Pose{Eigen::Vector3d(0.1, 0.05, 0.0), turn(-20)}}, {2.2, Pose{Eigen::Vector3d(0.0, 0.05, -0.08), turn(60)}},
+      {2.4, Pose{Eigen::Vector3d(0.0, 0.05, 0.02), turn(0)}},  {3.5, Pose{Eigen::Vector3d(-0.1, -0.1, 0.0), turn(-45)}},
+      {4.0, Pose{Eigen::Vector3d(-0.1, -0.1, -0.08), turn(-45)}}, {4.5, Pose{Eigen::Vector3d::Zero(), turn(0)}}};
+  return config;
+}
+
+RigidBodyDouble proxy_over_floor() {
+  RigidBodyDouble body(kMass, kInertia, kDt);
+  body.floor = Floor{-0.05, 2e4, 50.0};  // 5 cm below the start: reached by the 8 cm taps
+  return body;
+}
+
+TEST(CouplingPassivity, StableGainsInjectNoEnergyOverAFiveSecondScript) {
+  const SpringDamperGains gains{1000.0, 10.0, 10.0, 0.1};  // the defaults
+  const HapticsConfig config = five_second_script(gains);
+  EXPECT_THAT(coupling_stability_warnings(config, "proxy", proxy_model(kMass, kInertia), kDt), ::testing::IsEmpty());
+
+  RigidBodyDouble body = proxy_over_floor();
+  const auto samples = run_session(config, body, kMass, kInertia, kDt, 5.0);
+  ASSERT_EQ(samples.size(), 5001u);
+  double most = 0.0;
+  double deepest = 0.0;
+  double peak_force = 0.0;
+  for (const HapticSample& s : samples) {
+    most = std::max(most, s.injected_energy);
+    deepest = std::min(deepest, s.proxy_pose.position.z());
+    peak_force = std::max(peak_force, s.interaction.force.z());
+  }
+  RecordProperty("max_injected_energy_J", std::to_string(most));
+  RecordProperty("final_injected_energy_J", std::to_string(samples.back().injected_energy));
+  EXPECT_LE(most, 0.0);                          // at every tick, not only at the end
+  EXPECT_LE(samples.back().injected_energy, 0.0);
+  EXPECT_LT(samples.back().injected_energy, -0.1);  // it did dissipate: tens of newtons over centimetres
+  EXPECT_LT(deepest, -0.05);                        // the taps reached the floor
+  EXPECT_GT(peak_force, 10.0);
+}
+
+TEST(CouplingPassivity, GainsBeyondTheBoundAreReportedAndInjectEnergy) {
+  // Kt h^2 + 2 Bt h = 5e6 * 1e-6 + 0.02 = 5.02 > 4 m = 4 with h = 1 ms (the wrench is held a tick).
+  const SpringDamperGains gains{5e6, 10.0, 10.0, 0.1};
+  const HapticsConfig config = five_second_script(gains);
+  const std::vector<std::string> warnings = coupling_stability_warnings(config, "probe", proxy_model(kMass, kInertia), kDt);
+  EXPECT_THAT(warnings, ::testing::Contains(::testing::AllOf(::testing::HasSubstr("probe"),
+                                                             ::testing::HasSubstr("translational coupling"),
+                                                             ::testing::HasSubstr("K h^2 + 2 B h < 4 m"))));
+
+  RigidBodyDouble body = proxy_over_floor();
+  // Stop at 1 J: a passive coupling never gets above 0, and the growth is exponential.
+  const auto samples =
+      run_session(config, body, kMass, kInertia, kDt, 5.0, [](const HapticSample& s) { return s.injected_energy > 1.0; });
+  RecordProperty("time_to_1J_s", std::to_string(samples.back().time));
+  EXPECT_GT(samples.back().injected_energy, 1.0);
+  EXPECT_LT(samples.back().time, 1.0);  // within the first second
+}
+
+TEST(CouplingStabilityCheck, NamesEachViolatedBound) {
+  HapticsConfig config = five_second_script({1000.0, 10.0, 10.0, 0.1});
+  // 1 g and 1e-6 kg m^2: 1000 * 1e-6 + 2 * 10 * 1e-3 = 0.021 >= 4 m = 0.004, and 2.1e-4 >= 4e-6.
+  const ProxyModel light = proxy_model(0.001, 1e-6);
+  const std::vector<std::string> warnings = coupling_stability_warnings(config, "needle", light, kDt);
+  EXPECT_THAT(warnings, ::testing::ElementsAre(::testing::HasSubstr("translational coupling"),
+                                               ::testing::HasSubstr("rotational coupling")));
+  // Device side: a 10 g handle under the same coupling and hand (K 1400 N/m, B 32 N s/m).
+  config.device.mass = 0.01;
+  config.device.inertia = 1e-6;
+  EXPECT_THAT(coupling_stability_warnings(config, "probe", proxy_model(kMass, kInertia), kDt),
+              ::testing::ElementsAre(::testing::HasSubstr("device handle translational"),
+                                     ::testing::HasSubstr("device handle rotational")));
+  // dt longer than the haptic period is the proxy's step: 1000 * 0.1^2 = 10 > 4 m.
+  EXPECT_THAT(coupling_stability_warnings(config, "probe", proxy_model(kMass, 1.0), 0.1),
+              ::testing::Contains(::testing::HasSubstr("h = 0.1 s")));
+}
+
+}  // namespace
+}  // namespace mssph::test
