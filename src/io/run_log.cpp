@@ -270,12 +270,14 @@ void RunLog::finish_completed() {
   h5::write_attribute(file_.id(), "end_time", utc_now());
   set_status("completed");
   flush();
+  finished_ = true;
 }
 
 void RunLog::finish_failed(const std::string& reason) {
   h5::write_attribute(file_.id(), "end_time", utc_now());
   set_status("failed: " + reason);
   flush();
+  finished_ = true;
 }
 
 }  // namespace mssph

@@ -79,6 +79,7 @@ class RunLog {
   // Final status; "completed" only for a run that reached its end.
   void finish_completed();
   void finish_failed(const std::string& reason);
+  bool finished() const { return finished_; }
 
  private:
   struct Series {
@@ -104,6 +105,7 @@ class RunLog {
   std::vector<Series> series_;
   std::vector<SnapshotRecord> snapshots_;
   bool structure_changed_ = false;  // since the last flush
+  bool finished_ = false;
 };
 
 }  // namespace mssph

@@ -62,9 +62,11 @@ TEST(RunLogStatus, RunningThenCompleted) {
   RunLog log(path, sample_metadata());
   EXPECT_EQ(status_of(path), "running");
   EXPECT_FALSE(has_attribute(open_read_only(path).id(), "end_time"));
+  EXPECT_FALSE(log.finished());
   log.finish_completed();
   EXPECT_EQ(status_of(path), "completed");
   EXPECT_TRUE(has_attribute(open_read_only(path).id(), "end_time"));
+  EXPECT_TRUE(log.finished());
 }
 
 TEST(RunLogStatus, RunningThenFailedWithTheReason) {
@@ -72,9 +74,11 @@ TEST(RunLogStatus, RunningThenFailedWithTheReason) {
   const std::string path = (dir / "failed.h5").string();
   RunLog log(path, sample_metadata());
   EXPECT_EQ(status_of(path), "running");
+  EXPECT_FALSE(log.finished());
   log.finish_failed("blow-up at t = 0.25 s: body \"ball\" has non-finite state");
   EXPECT_EQ(status_of(path), "failed: blow-up at t = 0.25 s: body \"ball\" has non-finite state");
   EXPECT_TRUE(has_attribute(open_read_only(path).id(), "end_time"));
+  EXPECT_TRUE(log.finished());
 }
 
 TEST(RunLogStatus, DestroyedWithoutFinishStaysRunningWithEveryRow) {
