@@ -2,6 +2,7 @@
 #include "backend_factory.hpp"
 #include "commands.hpp"
 #include "config/scene_loader.hpp"
+#include "haptics/haptics_run.hpp"
 #include "output_path.hpp"
 #include "scene/scene_builder.hpp"
 #include "sim/interrupt.hpp"
@@ -24,12 +25,14 @@ struct RunArguments {
   std::string output;
   std::vector<std::string> overrides;
   bool quiet = false;
+  std::string record_device;
 };
 
 std::string command_line_of(const RunArguments& a) {
   std::string line = "mssph run " + a.scene_path + " --backend " + a.backend;
   if (!a.output.empty()) line += " --out " + a.output;
   for (const std::string& o : a.overrides) line += " --set " + o;
+  if (!a.record_device.empty()) line += " --record-device " + a.record_device;
   return line;
 }
 
@@ -49,8 +52,10 @@ int run(const RunArguments& args) {
   const std::string backend_name = resolve_backend_name(args.backend);
   const std::string output = args.output.empty() ? default_output_path(scene.name, backend_name) : args.output;
   check_output_path(output);
+  if (!args.record_device.empty()) check_device_recording_request(scene, args.record_device);
   ParticleSetup setup = build_particles(scene);
-  const std::vector<std::string> warnings = stability_warnings(setup);
+  std::vector<std::string> warnings = stability_warnings(setup);
+  for (std::string& w : haptic_warnings(scene, setup)) warnings.push_back(std::move(w));
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
 
   if (!args.quiet) {
@@ -86,12 +91,14 @@ int run(const RunArguments& args) {
   log.set_attribute("/", "warnings", joined_warnings);
 
   try {
-    const RunSummary summary = run_simulation(scene, setup_for_log, *backend, log, RunOptions{args.quiet});
+    const RunSummary summary =
+        run_simulation(scene, setup_for_log, *backend, log, RunOptions{args.quiet, args.record_device});
     std::printf("%s: %zu steps, %.3f s simulated in %.2f s wall on %s (%s)", output.c_str(), summary.steps,
                 summary.simulated_time, summary.wall_seconds, info.name.c_str(), info.device.c_str());
     if (!summary.force_body.empty()) {
       std::printf(", peak interaction force on %s %.3f N", summary.force_body.c_str(), summary.peak_force);
     }
+    if (summary.peak_rendered_force) std::printf(", peak rendered force %.3f N", *summary.peak_rendered_force);
     std::printf("\n");
     return kExitOk;
   } catch (const SimulationFailure& e) {
@@ -131,6 +138,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
                   "Override a scene value: --set PATH=VALUE, e.g. --set bodies/block/young_modulus=5e4 "
                   "(repeatable; see below)")
       ->allow_extra_args(false);
+  cmd->add_option("--record-device", args->record_device,
+                  "Write the haptic device's trajectory (one pose per haptic tick) to FILE, .csv or .h5, in the "
+                  "format a \"recorded\" trajectory replays");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or start-up lines (warnings and errors still print)");
   cmd->footer(
       "The run log: one HDF5 file per run. Root attributes record the version, git commit, backend,\n"
