@@ -72,6 +72,19 @@ DeformableRestState build_deformable_rest_state(const ParticleSetup& setup) {
     }
     rest.correction[i] = kernel_gradient_correction(b);
   }
+
+  rest.bonds.resize(rest.neighbours.indices.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
+      const std::size_t j = rest.neighbours.indices[k];
+      RestBond& bond = rest.bonds[k];
+      bond.offset = setup.position[j] - setup.position[i];
+      bond.kernel = w(bond.offset.squaredNorm());
+      bond.moment_weight = setup.mass[j] * bond.kernel;
+      bond.d_ij = rest_gradient(rest.volume[j], rest.correction[i], grad_w(-bond.offset));
+      bond.d_ji = rest_gradient(rest.volume[i], rest.correction[j], grad_w(bond.offset));
+    }
+  }
   return rest;
 }
 

@@ -12,12 +12,22 @@
 
 namespace mssph::reference {
 
+// What the loop needs of one rest neighbour j of particle i, computed once.
+struct RestBond {
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();  // X_ij = X_j - X_i [m]
+  double moment_weight = 0.0;                        // m_j W(|X_ij|), for A_i [kg/m^3]
+  double kernel = 0.0;                               // W(|X_ij|) [1/m^3]
+  Eigen::Vector3d d_ij = Eigen::Vector3d::Zero();    // V0_j L_i grad W(X_i - X_j) [1/m]
+  Eigen::Vector3d d_ji = Eigen::Vector3d::Zero();    // V0_i L_j grad W(X_j - X_i) [1/m]
+};
+
 struct DeformableRestState {
   std::vector<Eigen::Vector3d> position;  // X_i, the initial positions [m]
   // Rest neighbours of i: particles j != i of the same deformable body with |X_ij| < h. Kept for
   // the whole run: a body's particles interact through these bonds only, whatever their distance
   // later (eq. 7 acts between bodies, not within one).
   NeighbourLists neighbours;
+  std::vector<RestBond> bonds;  // aligned with neighbours.indices
   // V0_i = m_i / sum_j m_j W(|X_ij|), j over the body's own particles, i included [m^3].
   std::vector<double> volume;
   // L_i = (sum_j V0_j grad W(X_i - X_j) (x) X_ij)^-1 with kernel-gradient correction, else I.

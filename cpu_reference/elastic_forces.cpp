@@ -2,7 +2,6 @@
 
 #include "corotation.hpp"
 #include "elasticity.hpp"
-#include "sph_kernels.hpp"
 
 namespace mssph::reference {
 namespace {
@@ -15,16 +14,14 @@ bool is_deformable(const ParticleSetup& setup, std::size_t i) {
 
 void compute_rotations(const ParticleSetup& setup, const DeformableRestState& rest,
                        const std::vector<Eigen::Vector3d>& positions, DeformableState& state) {
-  const Poly6Kernel w(setup.smoothing_length);
   const std::size_t n = setup.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_deformable(setup, i)) continue;
     Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
-    for (const std::size_t* jp = rest.neighbours.begin(i); jp != rest.neighbours.end(i); ++jp) {
-      const std::size_t j = *jp;
-      const Eigen::Vector3d rest_x_ij = rest.position[j] - rest.position[i];
-      a += moment_matrix_term(setup.mass[j] * w(rest_x_ij.squaredNorm()), positions[j] - positions[i], rest_x_ij);
+    for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
+      const RestBond& bond = rest.bonds[k];
+      a += moment_matrix_term(bond.moment_weight, positions[rest.neighbours.indices[k]] - positions[i], bond.offset);
     }
     state.rotation[i] = rotation_from_moment_matrix(a, state.rotation[i]);
   }
@@ -32,19 +29,16 @@ void compute_rotations(const ParticleSetup& setup, const DeformableRestState& re
 
 void compute_elastic_stresses(const ParticleSetup& setup, const DeformableRestState& rest,
                               const std::vector<Eigen::Vector3d>& positions, DeformableState& state) {
-  const SpikyGradient grad_w(setup.smoothing_length);
   const std::size_t n = setup.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_deformable(setup, i)) continue;
     const Material& material = setup.bodies[setup.body[i]].material;
     Eigen::Matrix3d grad_u = Eigen::Matrix3d::Zero();
-    for (const std::size_t* jp = rest.neighbours.begin(i); jp != rest.neighbours.end(i); ++jp) {
-      const std::size_t j = *jp;
-      const Eigen::Vector3d rest_x_ij = rest.position[j] - rest.position[i];
-      const Eigen::Vector3d d_ij = rest_gradient(rest.volume[j], rest.correction[i], grad_w(-rest_x_ij));
-      const Eigen::Vector3d u_ji = rotated_displacement(state.rotation[i], positions[j] - positions[i], rest_x_ij);
-      grad_u += displacement_gradient_term(u_ji, d_ij);
+    for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
+      const RestBond& bond = rest.bonds[k];
+      const Eigen::Vector3d x_ij = positions[rest.neighbours.indices[k]] - positions[i];
+      grad_u += displacement_gradient_term(rotated_displacement(state.rotation[i], x_ij, bond.offset), bond.d_ij);
     }
     const Eigen::Matrix3d eps = strain(grad_u, material.strain);
     const Eigen::Matrix3d sigma = isotropic_stress(eps, rest.lame[i]);
@@ -58,17 +52,14 @@ void compute_elastic_stresses(const ParticleSetup& setup, const DeformableRestSt
 }
 
 void compute_elastic_forces(const ParticleSetup& setup, const DeformableRestState& rest, DeformableState& state) {
-  const SpikyGradient grad_w(setup.smoothing_length);
   const std::size_t n = setup.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     Eigen::Vector3d force = Eigen::Vector3d::Zero();
-    for (const std::size_t* jp = rest.neighbours.begin(i); jp != rest.neighbours.end(i); ++jp) {
-      const std::size_t j = *jp;
-      const Eigen::Vector3d rest_x_ij = rest.position[j] - rest.position[i];
-      const Eigen::Vector3d d_ij = rest_gradient(rest.volume[j], rest.correction[i], grad_w(-rest_x_ij));
-      const Eigen::Vector3d d_ji = rest_gradient(rest.volume[i], rest.correction[j], grad_w(rest_x_ij));
-      force += elastic_force_term(state.stress_action[i], d_ij, state.stress_action[j], d_ji);
+    for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
+      const RestBond& bond = rest.bonds[k];
+      force += elastic_force_term(state.stress_action[i], bond.d_ij, state.stress_action[rest.neighbours.indices[k]],
+                                  bond.d_ji);
     }
     state.elastic_force[i] = force;
   }
