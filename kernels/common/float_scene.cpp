@@ -1,0 +1,136 @@
+#include "float_scene.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+
+namespace mssph::kernels {
+namespace {
+
+Vec3 to_vec3(const Eigen::Vector3d& v) {
+  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
+}
+Vec4 to_vec4(const Eigen::Vector3d& v) { return make_vec4(to_vec3(v), 0.0f); }
+
+BodyKindCode kind_code(BodyKind kind) {
+  switch (kind) {
+    case BodyKind::fluid: return kFluid;
+    case BodyKind::deformable: return kDeformable;
+    case BodyKind::rigid: return kRigid;
+    case BodyKind::boundary: return kBoundary;
+  }
+  return kBoundary;
+}
+
+Eigen::Vector3d to_eigen(const double v[3]) { return {v[0], v[1], v[2]}; }
+
+}  // namespace
+
+GridShape choose_grid_shape(const std::vector<Vec4>& positions, double h) {
+  GridShape shape;
+  shape.inverse_cell_size = static_cast<float>(1.0 / h);
+  float lo[3] = {std::numeric_limits<float>::max(), std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
+  float hi[3] = {std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest()};
+  for (const Vec4& p : positions) {
+    const float c[3] = {p.x, p.y, p.z};
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], c[a]);
+      hi[a] = std::max(hi[a], c[a]);
+    }
+  }
+  std::uint32_t bits[3];
+  for (int a = 0; a < 3; ++a) {
+    const double cells = positions.empty() ? 4.0 : std::ceil((hi[a] - lo[a]) / h) + 3.0;
+    bits[a] = static_cast<std::uint32_t>(std::bit_width(static_cast<std::uint64_t>(std::max(4.0, cells)) - 1));
+  }
+  // Cap the table near two cells per particle: beyond that the extra cells are empty anyway.
+  const auto budget = static_cast<std::uint32_t>(std::bit_width(std::max<std::size_t>(2 * positions.size(), 64) - 1));
+  while (bits[0] + bits[1] + bits[2] > std::max<std::uint32_t>(budget, 6)) {
+    std::uint32_t* largest = std::max_element(bits, bits + 3);
+    if (*largest <= 2) break;
+    --*largest;
+  }
+  shape.bits_x = bits[0];
+  shape.bits_y = bits[1];
+  shape.bits_z = bits[2];
+  return shape;
+}
+
+FloatScene make_float_scene(const ParticleSetup& setup) {
+  FloatScene scene;
+  scene.step.kernels = SmoothingKernels::for_support(setup.smoothing_length);
+  scene.step.dt = static_cast<float>(setup.dt);
+  scene.step.gravity = to_vec3(setup.gravity);
+  scene.step.inverse_gradient_consistency = static_cast<float>(1.0 / setup.gradient_consistency);
+  scene.step.particle_count = static_cast<std::uint32_t>(setup.size());
+
+  for (const BodySetup& b : setup.bodies) {
+    BodyParameters p{};
+    p.kind = kind_code(b.kind);
+    p.rigid_index = kNotRigid;
+    p.sph_mass = static_cast<float>(b.material.rest_density / setup.rest_number_density);
+    p.rest_density = static_cast<float>(b.material.rest_density);
+    p.pressure_stiffness = static_cast<float>(b.material.pressure_stiffness);
+    p.viscosity = static_cast<float>(b.material.viscosity);
+    if (b.moves_as_rigid_body()) {
+      p.rigid_index = static_cast<std::uint32_t>(scene.rigid_bodies.size());
+      RigidBody r{};
+      r.first = static_cast<std::uint32_t>(b.first);
+      r.count = static_cast<std::uint32_t>(b.count);
+      r.mass = static_cast<float>(b.mass);
+      const Eigen::Matrix3d inverse = b.inertia_body.inverse();
+      for (int k = 0; k < 9; ++k) r.inverse_inertia_body.m[k] = static_cast<float>(inverse(k / 3, k % 3));
+      r.position = to_vec3(b.centre_of_mass);
+      r.orientation = {static_cast<float>(b.orientation.x()), static_cast<float>(b.orientation.y()),
+                       static_cast<float>(b.orientation.z()), static_cast<float>(b.orientation.w())};
+      r.velocity = to_vec3(b.velocity);
+      const Eigen::Matrix3d rot = b.orientation.toRotationMatrix();
+      r.angular_momentum = to_vec3(rot * b.inertia_body * rot.transpose() * b.angular_velocity);
+      scene.rigid_bodies.push_back(r);
+    }
+    scene.bodies.push_back(p);
+  }
+
+  const std::size_t n = setup.size();
+  scene.position.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    scene.position.push_back(to_vec4(setup.position[i]));
+    scene.velocity.push_back(to_vec4(setup.velocity[i]));
+    scene.rest_offset.push_back(to_vec4(setup.rest_offset[i]));
+    scene.body.push_back(setup.body[i]);
+    scene.fixed.push_back(setup.fixed[i]);
+  }
+  scene.grid = choose_grid_shape(scene.position, setup.smoothing_length);
+  return scene;
+}
+
+BodyState to_body_state(const BodySums& sums, const RigidBody* rigid, const BodySetup& body) {
+  BodyState s;
+  s.max_speed = std::sqrt(sums.max_speed);
+  if (rigid) {
+    s.mass = rigid->mass;
+    s.centre_of_mass = {rigid->position.x, rigid->position.y, rigid->position.z};
+    s.linear_momentum = rigid->mass * Eigen::Vector3d(rigid->velocity.x, rigid->velocity.y, rigid->velocity.z);
+    s.angular_momentum = {rigid->angular_momentum.x, rigid->angular_momentum.y, rigid->angular_momentum.z};
+    s.orientation = Eigen::Quaterniond(rigid->orientation.w, rigid->orientation.x, rigid->orientation.y, rigid->orientation.z);
+    const Vec3 omega = angular_velocity(*rigid);
+    s.angular_velocity = {omega.x, omega.y, omega.z};
+    s.kinetic_energy = 0.5 * s.linear_momentum.squaredNorm() / s.mass + 0.5 * s.angular_velocity.dot(s.angular_momentum);
+    s.interaction_force = {rigid->interaction_force.x, rigid->interaction_force.y, rigid->interaction_force.z};
+    s.interaction_torque = {rigid->interaction_torque.x, rigid->interaction_torque.y, rigid->interaction_torque.z};
+    return s;
+  }
+  s.mass = sums.mass;
+  s.centre_of_mass = to_eigen(sums.moment) / sums.mass;
+  s.linear_momentum = to_eigen(sums.momentum);
+  // Shift from the origin to the centre of mass: L_c = L_o - c x p, tau_c = tau_o - c x F.
+  s.angular_momentum = to_eigen(sums.angular_origin) - s.centre_of_mass.cross(s.linear_momentum);
+  s.kinetic_energy = sums.kinetic_energy;
+  s.interaction_force = to_eigen(sums.force);
+  s.interaction_torque = to_eigen(sums.torque_origin) - s.centre_of_mass.cross(s.interaction_force);
+  if (body.kind == BodyKind::rigid) s.orientation = body.orientation;  // a fixed rigid body
+  return s;
+}
+
+}  // namespace mssph::kernels

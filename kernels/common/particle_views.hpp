@@ -1,0 +1,75 @@
+#pragma once
+// What the kernels read and write, passed by value as a few small views (not dozens of loose
+// parameters). Arrays in "canonical" order follow ParticleSetup's particle order (bodies
+// contiguous); arrays in "sorted" order follow the neighbour grid's cell order and are rebuilt
+// every step.
+#include "cell_grid.hpp"
+#include "smoothing_kernels.hpp"
+#include "vec_math.hpp"
+
+#include <cstdint>
+#include <cstring>
+
+namespace mssph::kernels {
+
+enum BodyKindCode : std::uint32_t { kFluid = 0, kDeformable = 1, kRigid = 2, kBoundary = 3 };
+inline constexpr std::uint32_t kNotRigid = 0xffffffffu;
+
+// One per body.
+struct BodyParameters {
+  std::uint32_t kind;         // BodyKindCode
+  std::uint32_t rigid_index;  // index of a movable rigid body's state, else kNotRigid
+  float sph_mass;             // m = rho0 / delta0 [kg]
+  float rest_density;         // rho0 [kg/m^3]
+  float pressure_stiffness;   // k [m^2/s^2]
+  float viscosity;            // mu [Pa s]
+};
+
+struct StepParameters {
+  SmoothingKernels kernels;
+  float dt;                     // [s]
+  Vec3 gravity;                 // [m/s^2]
+  float inverse_gradient_consistency;  // 1 / c, see cpu_reference/sph_kernels.hpp
+  std::uint32_t particle_count;
+};
+
+// The body index rides in the sorted position's fourth component (its bit pattern), so one
+// 16-byte load gives a neighbour's position and body.
+MSSPH_HD float body_as_float(std::uint32_t body) {
+  float f;
+  std::memcpy(&f, &body, sizeof f);
+  return f;
+}
+MSSPH_HD std::uint32_t body_of(const Vec4& sorted_position) {
+  std::uint32_t body;
+  std::memcpy(&body, &sorted_position.w, sizeof body);
+  return body;
+}
+
+struct VolumePressure {
+  float volume;    // V = 1 / delta [m^3]
+  float pressure;  // P [Pa]
+};
+
+// Read by the density and force passes.
+struct SortedView {
+  StepParameters step;
+  const BodyParameters* bodies;
+  CellRanges grid;
+  const Vec4* position;                  // sorted: xyz [m], w = body index bits
+  const Vec4* velocity;                  // sorted: xyz [m/s]
+  const std::uint32_t* id;               // sorted -> canonical index
+  const VolumePressure* volume_pressure;  // sorted, written by the density pass
+};
+
+// The evolving canonical state.
+struct CanonicalState {
+  Vec4* position;                 // xyz [m]
+  Vec4* velocity;                 // xyz [m/s]
+  Vec4* interaction_force;        // xyz [N]: from other bodies, eq. 7
+  const Vec4* elastic_force;      // xyz [N]: deformable particles, else zero (may be null)
+  const std::uint32_t* body;      // body index
+  const std::uint8_t* fixed;      // 1: held in place
+};
+
+}  // namespace mssph::kernels

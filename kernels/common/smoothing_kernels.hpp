@@ -1,0 +1,40 @@
+#pragma once
+// Float32 smoothing kernels of Mueller, Charypar and Gross 2003, support radius h (the same
+// functions as cpu_reference/sph_kernels.hpp, written for the GPU: constants precomputed, no
+// branches beyond the support test).
+#include "vec_math.hpp"
+
+namespace mssph::kernels {
+
+struct SmoothingKernels {
+  float h;
+  float h2;
+  float poly6_coefficient;     // 315 / (64 pi h^9)
+  float spiky_coefficient;     // -45 / (pi h^6)
+  float laplacian_coefficient;  // 45 / (pi h^6)
+
+  static SmoothingKernels for_support(double support) {
+    const double pi = 3.14159265358979323846;
+    const double h6 = support * support * support * support * support * support;
+    return {static_cast<float>(support), static_cast<float>(support * support),
+            static_cast<float>(315.0 / (64.0 * pi * h6 * support * support * support)),
+            static_cast<float>(-45.0 / (pi * h6)), static_cast<float>(45.0 / (pi * h6))};
+  }
+
+  // poly6 W(r) from r^2 (densities, paper eq. 1).
+  MSSPH_HD float poly6(float r2) const {
+    if (r2 >= h2) return 0.0f;
+    const float d = h2 - r2;
+    return poly6_coefficient * d * d * d;
+  }
+  // Spiky gradient with respect to x_i, r_vec = x_i - x_j (pressure, elasticity); zero at r = 0.
+  MSSPH_HD Vec3 spiky_gradient(Vec3 r_vec, float r) const {
+    if (r >= h || r <= 1e-12f * h) return Vec3{0.0f, 0.0f, 0.0f};
+    const float d = h - r;
+    return (spiky_coefficient * d * d / r) * r_vec;
+  }
+  // Viscosity Laplacian (paper eq. 3).
+  MSSPH_HD float viscosity_laplacian(float r) const { return r >= h ? 0.0f : laplacian_coefficient * (h - r); }
+};
+
+}  // namespace mssph::kernels

@@ -1,0 +1,203 @@
+#include "host_backend.hpp"
+
+#include "../common/fluid_physics.hpp"
+#include "util/errors.hpp"
+#include "util/host_info.hpp"
+
+#include <chrono>
+
+namespace mssph::kernels {
+namespace {
+
+// Times one phase of the step on the host clock.
+class PhaseTimer {
+ public:
+  explicit PhaseTimer(double& seconds) : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
+  ~PhaseTimer() { seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  PhaseTimer(const PhaseTimer&) = delete;
+  PhaseTimer& operator=(const PhaseTimer&) = delete;
+
+ private:
+  double& seconds_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+Vec3 to_vec3(const Eigen::Vector3d& v) {
+  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
+}
+
+}  // namespace
+
+HostBackend::HostBackend(ParticleSetup setup) : setup_(std::move(setup)), scene_(make_float_scene(setup_)) {
+  for (const BodySetup& body : setup_.bodies) {
+    if (body.kind == BodyKind::deformable) {
+      throw InputError("body \"" + body.name + "\": deformable bodies are not available yet in the cpu backend");
+    }
+  }
+  const std::size_t n = setup_.size();
+  cell_start_.assign(scene_.grid.cell_count(), kEmptyCell);
+  cell_end_.assign(scene_.grid.cell_count(), 0);
+  sorted_id_.resize(n);
+  sorted_key_.resize(n);
+  sorted_position_.resize(n);
+  sorted_velocity_.resize(n);
+  volume_pressure_.resize(n);
+  interaction_force_.assign(n, Vec4{0, 0, 0, 0});
+}
+
+BackendInfo HostBackend::info() const { return {"cpu", host_cpu_name(), "float32"}; }
+
+RigidBody& HostBackend::rigid_of(std::size_t body) {
+  const std::uint32_t index = body < scene_.bodies.size() ? scene_.bodies[body].rigid_index : kNotRigid;
+  if (index == kNotRigid) throw std::invalid_argument("body " + std::to_string(body) + " is not a movable rigid body");
+  return scene_.rigid_bodies[index];
+}
+
+void HostBackend::set_external_wrench(std::size_t body, const Eigen::Vector3d& force, const Eigen::Vector3d& torque) {
+  RigidBody& rigid = rigid_of(body);
+  rigid.external_force = to_vec3(force);
+  rigid.external_torque = to_vec3(torque);
+}
+
+SortedView HostBackend::sorted_view() const {
+  return SortedView{scene_.step,           scene_.bodies.data(),
+                    CellRanges{scene_.grid, cell_start_.data(), cell_end_.data()},
+                    sorted_position_.data(), sorted_velocity_.data(),
+                    sorted_id_.data(),       volume_pressure_.data()};
+}
+
+// Counting sort of the particles by cell key (stable: equal keys keep canonical order), then the
+// same cell ranges and cell-ordered copies as the CUDA backend.
+void HostBackend::build_grid() {
+  const std::size_t n = setup_.size();
+  std::vector<std::uint32_t> key(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) key[i] = scene_.grid.key_of(xyz(scene_.position[i]));
+  std::vector<std::uint32_t> next(scene_.grid.cell_count() + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) ++next[key[i] + 1];
+  for (std::size_t k = 1; k < next.size(); ++k) next[k] += next[k - 1];
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t s = next[key[i]]++;
+    sorted_id_[s] = static_cast<std::uint32_t>(i);
+    sorted_key_[s] = key[i];
+  }
+  std::fill(cell_start_.begin(), cell_start_.end(), kEmptyCell);
+  const auto count = static_cast<std::uint32_t>(n);
+#pragma omp parallel for schedule(static)
+  for (std::uint32_t s = 0; s < count; ++s) {
+    place_in_cell_order(s, count, sorted_key_.data(), sorted_id_.data(), scene_.position.data(), scene_.velocity.data(),
+                        scene_.body.data(), sorted_position_.data(), sorted_velocity_.data(), cell_start_.data(),
+                        cell_end_.data());
+  }
+}
+
+void HostBackend::compute_densities() {
+  const SortedView view = sorted_view();
+  const std::size_t n = setup_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) volume_pressure_[s] = density_at(view, static_cast<std::uint32_t>(s)).volume_pressure;
+}
+
+void HostBackend::compute_forces_and_integrate() {
+  const SortedView view = sorted_view();
+  const CanonicalState state{scene_.position.data(), scene_.velocity.data(), interaction_force_.data(), nullptr,
+                             scene_.body.data(), scene_.fixed.data()};
+  const auto n = static_cast<std::uint32_t>(setup_.size());
+#pragma omp parallel for schedule(static)
+  for (std::uint32_t s = 0; s < n; ++s) forces_and_leapfrog(view, state, s);
+}
+
+void HostBackend::advance_rigid_bodies() {
+  for (RigidBody& body : scene_.rigid_bodies) {
+    Wrench wrench{{0, 0, 0}, {0, 0, 0}};
+    for (std::uint32_t i = body.first; i < body.first + body.count; ++i) {
+      wrench = wrench + particle_wrench(xyz(scene_.position[i]), xyz(interaction_force_[i]), body.position);
+    }
+    body.interaction_force = wrench.force;
+    body.interaction_torque = wrench.torque;
+    integrate_rigid_body(body, scene_.step.gravity, scene_.step.dt);
+    const Mat3 rotation = rotation_matrix(body.orientation);
+    const Vec3 omega = angular_velocity(body);
+#pragma omp parallel for schedule(static)
+    for (std::uint32_t i = body.first; i < body.first + body.count; ++i) {
+      place_rigid_particle(body, rotation, omega, xyz(scene_.rest_offset[i]), scene_.position[i], scene_.velocity[i]);
+    }
+  }
+}
+
+// Paper 3.2 on the kernels' functions: grid, densities, forces with leap-frog integration of
+// particles, then rigid-body dynamics.
+void HostBackend::step() {
+  {
+    PhaseTimer timer(phase_seconds_[kGrid]);
+    build_grid();
+  }
+  {
+    PhaseTimer timer(phase_seconds_[kDensity]);
+    compute_densities();
+  }
+  {
+    PhaseTimer timer(phase_seconds_[kForces]);
+    compute_forces_and_integrate();
+  }
+  {
+    PhaseTimer timer(phase_seconds_[kRigid]);
+    advance_rigid_bodies();
+  }
+  time_ += setup_.dt;
+}
+
+std::vector<BodyState> HostBackend::body_states() {
+  std::vector<BodyState> states;
+  for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
+    const BodySetup& body = setup_.bodies[b];
+    BodySums sums = zero_body_sums();
+    const float mass = scene_.bodies[b].sph_mass;
+    for (std::size_t i = body.first; i < body.first + body.count; ++i) {
+      add_particle(sums, xyz(scene_.position[i]), xyz(scene_.velocity[i]), mass, xyz(interaction_force_[i]));
+    }
+    const std::uint32_t rigid = scene_.bodies[b].rigid_index;
+    states.push_back(to_body_state(sums, rigid == kNotRigid ? nullptr : &scene_.rigid_bodies[rigid], body));
+  }
+  return states;
+}
+
+BodyState HostBackend::rigid_body_state(std::size_t body) {
+  const RigidBody& rigid = rigid_of(body);
+  BodySums sums = zero_body_sums();
+  for (std::uint32_t i = rigid.first; i < rigid.first + rigid.count; ++i) {
+    add_particle(sums, xyz(scene_.position[i]), xyz(scene_.velocity[i]), 0.0f, Vec3{0, 0, 0});
+  }
+  return to_body_state(sums, &rigid, setup_.bodies[body]);
+}
+
+ParticleSnapshot HostBackend::snapshot() {
+  const std::size_t n = setup_.size();
+  ParticleSnapshot out;
+  out.position.resize(3 * n);
+  out.velocity.resize(3 * n);
+  out.density.resize(n);
+  out.pressure.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const float p[3] = {scene_.position[i].x, scene_.position[i].y, scene_.position[i].z};
+    const float v[3] = {scene_.velocity[i].x, scene_.velocity[i].y, scene_.velocity[i].z};
+    for (int a = 0; a < 3; ++a) {
+      out.position[3 * i + static_cast<std::size_t>(a)] = p[a];
+      out.velocity[3 * i + static_cast<std::size_t>(a)] = v[a];
+    }
+  }
+  // Densities and pressures of the last force evaluation, scattered back to canonical order.
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::uint32_t i = sorted_id_[s];
+    const VolumePressure vp = volume_pressure_[s];
+    out.density[i] = vp.volume > 0.0f ? scene_.bodies[scene_.body[i]].sph_mass / vp.volume : 0.0f;
+    out.pressure[i] = vp.pressure;
+  }
+  return out;
+}
+
+std::vector<std::string> HostBackend::phase_names() const { return {"grid", "density", "forces_integrate", "rigid_bodies"}; }
+
+std::vector<double> HostBackend::last_phase_seconds() const { return {phase_seconds_.begin(), phase_seconds_.end()}; }
+
+}  // namespace mssph::kernels

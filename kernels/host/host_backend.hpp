@@ -1,0 +1,48 @@
+#pragma once
+// The `cpu` backend: the CUDA backend's float32 per-particle functions (kernels/common/) run by
+// OpenMP loops on the host, so a machine without a GPU exercises exactly the kernels' arithmetic.
+#include "../common/float_scene.hpp"
+#include "sim/backend.hpp"
+
+#include <array>
+
+namespace mssph::kernels {
+
+class HostBackend final : public Backend {
+ public:
+  explicit HostBackend(ParticleSetup setup);
+
+  BackendInfo info() const override;
+  std::size_t particle_count() const override { return setup_.size(); }
+  double time() const override { return time_; }
+  void set_external_wrench(std::size_t body, const Eigen::Vector3d& force, const Eigen::Vector3d& torque) override;
+  void step() override;
+  std::vector<BodyState> body_states() override;
+  BodyState rigid_body_state(std::size_t body) override;
+  ParticleSnapshot snapshot() override;
+  std::vector<std::string> phase_names() const override;
+  std::vector<double> last_phase_seconds() const override;
+
+ private:
+  enum Phase { kGrid, kDensity, kForces, kRigid, kPhaseCount };
+  void build_grid();
+  void compute_densities();
+  void compute_forces_and_integrate();
+  void advance_rigid_bodies();
+  SortedView sorted_view() const;
+  RigidBody& rigid_of(std::size_t body);
+
+  ParticleSetup setup_;
+  FloatScene scene_;
+  // Per step, in cell order.
+  std::vector<std::uint32_t> cell_start_, cell_end_;
+  std::vector<std::uint32_t> sorted_id_, sorted_key_;
+  std::vector<Vec4> sorted_position_, sorted_velocity_;
+  std::vector<VolumePressure> volume_pressure_;
+  // Canonical order.
+  std::vector<Vec4> interaction_force_;
+  double time_ = 0.0;
+  std::array<double, kPhaseCount> phase_seconds_{};
+};
+
+}  // namespace mssph::kernels
