@@ -3,6 +3,11 @@
 #include "sph_kernels.hpp"
 
 namespace mssph::reference {
+namespace {
+
+double interface_viscosity(double mu_i, double mu_j) { return mu_i + mu_j > 0.0 ? 2.0 * mu_i * mu_j / (mu_i + mu_j) : 0.0; }
+
+}  // namespace
 
 void compute_pressure_viscosity_forces(const ParticleSetup& setup, const NeighbourLists& neighbours,
                                        ParticleState& state) {
@@ -22,12 +27,13 @@ void compute_pressure_viscosity_forces(const ParticleSetup& setup, const Neighbo
         if (same_body && body_i.kind != BodyKind::fluid) continue;
         const BodySetup& body_j = setup.bodies[setup.body[j]];
         const Eigen::Vector3d r_ij = state.position[i] - state.position[j];
-        const double volumes = state.volume[i] * state.volume[j];
+        const double v_i = state.volume[i];
+        const double v_j = state.volume[j];
         const Eigen::Vector3d pressure =
-            -(volumes / setup.gradient_consistency) * (state.pressure[i] + state.pressure[j]) * grad_w(r_ij);
-        const double mu = 0.5 * (body_i.material.viscosity + body_j.material.viscosity);
-        const Eigen::Vector3d viscosity =
-            mu * volumes * lap_w(r_ij.norm()) * (state.velocity[j] - state.velocity[i]);
+            -((v_i * v_i * state.pressure[i] + v_j * v_j * state.pressure[j]) / setup.gradient_consistency) * grad_w(r_ij);
+        const double mu = same_body ? body_i.material.viscosity
+                                    : interface_viscosity(body_i.material.viscosity, body_j.material.viscosity);
+        const Eigen::Vector3d viscosity = mu * v_i * v_j * lap_w(r_ij.norm()) * (state.velocity[j] - state.velocity[i]);
         (same_body ? internal : interaction) += pressure + viscosity;
       }
     }

@@ -8,18 +8,21 @@
 
 namespace mssph::reference {
 
-// Pressure force, paper eq. 2 with the paper's factor 1/2 removed and the lattice calibration c:
-//   f_i = -(1 / c) V_i sum_j V_j (P_i + P_j) grad W(x_i - x_j).
-// With the 1/2, a linear pressure field P = a.x gives sum_j V_j (P_i + P_j)/2 grad W_ij ~= a/2
-// inside a lattice (sum_j V_j grad W_ij ~= 0 and sum_j V_j (x_j - x_i) (x) grad W_ij ~= I), so
-// eq. 2 as printed feels half the pressure gradient and a settled column would carry twice the
-// hydrostatic pressure. Without it the form equals the symmetric SPH pressure force
-// -m_i sum_j m_j (P_i / rho_i^2 + P_j / rho_j^2) grad W_ij at uniform density. c (see
-// lattice_gradient_consistency) makes the gradient of a linear field exact inside a rest
-// lattice (c = 0.947 at h = 2 dx). Pinned by the hydrostatic-column test.
+// Pressure force, paper eq. 2 in its energy-consistent form:
+//   f_i = -(1 / g) sum_j (V_i^2 P_i + V_j^2 P_j) grad W(x_i - x_j),
+// the negative gradient of the internal energy sum_i m_i e(rho_i) for the densities of
+// density.hpp (Solenthaler and Pajarola 2008, eq. 5), up to the constant 1 / g. Eq. 2 as printed,
+// -V_i sum_j V_j (P_i + P_j) / 2 grad W, differs in two ways the tests reject: its 1/2 makes it feel
+// half the pressure gradient (for P = a.x, sum_j V_j (P_i + P_j)/2 grad W_ij ~= a/2 inside a
+// lattice, since sum_j V_j grad W_ij ~= 0 and sum_j V_j (x_j - x_i) (x) grad W_ij ~= I), so a settled
+// column would carry twice the hydrostatic pressure; and V_i V_j in place of V_i^2, V_j^2 is not a
+// gradient of any energy at interfaces. g (lattice_gradient_consistency, 0.956 at h = 2 dx)
+// makes the gradient of a linear field exact inside a rest lattice. Pinned by the
+// hydrostatic-column and floating-sphere tests.
 //
-// Viscosity force, paper eq. 3: f_i = mu V_i sum_j V_j (v_j - v_i) lap W(|x_i - x_j|), with
-// mu = (mu_i + mu_j) / 2 between bodies of different viscosity.
+// Viscosity force, paper eq. 3: f_i = mu V_i sum_j V_j (v_j - v_i) lap W(|x_i - x_j|). Between
+// bodies mu is the harmonic mean 2 mu_i mu_j / (mu_i + mu_j) of the two bodies' viscosities
+// (Morris et al. 1997), so a body of zero viscosity, e.g. a free-slip wall, exerts no friction.
 //
 // Forces between particles of one fluid body go to internal_force, forces between particles of
 // different bodies to interaction_force. Rigid, deformable and boundary bodies feel no pressure or

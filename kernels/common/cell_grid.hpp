@@ -5,15 +5,12 @@
 // Every axis has at least 4 cells, so the 27 cells around a cell have 27 distinct keys and no
 // particle is visited twice; particles of a distant periodic image share a key but fail the
 // distance test. The grid needs no bounding box, never grows, and a particle flung far away
-// costs nothing. Particles are sorted by key each step; cell k holds the sorted particles
-// [cell_start[k], cell_end[k]).
+// costs nothing. Particles are sorted by key each step.
 #include "vec_math.hpp"
 
 #include <cstdint>
 
 namespace mssph::kernels {
-
-inline constexpr std::uint32_t kEmptyCell = 0xffffffffu;
 
 struct GridShape {
   float inverse_cell_size = 0.0f;  // 1 / h
@@ -42,27 +39,37 @@ struct GridShape {
   }
 };
 
+// The sorted particles of cell k are [cell_start[k], cell_start[k + 1]): cell_start holds, for
+// every key, the first sorted particle whose key is not smaller (a prefix sum of the cell counts),
+// so an empty cell is an empty range and the three cells of a row along x, whose keys are
+// consecutive unless the row wraps, are one range.
 struct CellRanges {
   GridShape shape;
-  const std::uint32_t* cell_start;  // kEmptyCell for an empty cell
-  const std::uint32_t* cell_end;
+  const std::uint32_t* cell_start;  // cell_count() + 1 entries
+
+  // Calls visit(s) for every sorted particle s in the 9 cells of the layer cz + dz around x.
+  template <class Visit>
+  MSSPH_HD void for_each_candidate_in_layer(Vec3 x, int dz, Visit&& visit) const {
+    int cx, cy, cz;
+    shape.cell_of(x, cx, cy, cz);
+    for (int dy = -1; dy <= 1; ++dy) {
+      const std::uint32_t first = shape.key(cx - 1, cy + dy, cz + dz);
+      const std::uint32_t last = shape.key(cx + 1, cy + dy, cz + dz);
+      if (last == first + 2) {
+        for (std::uint32_t s = cell_start[first]; s < cell_start[last + 1]; ++s) visit(s);
+      } else {  // the row wraps around the grid's x period: three separate cells
+        for (int dx = -1; dx <= 1; ++dx) {
+          const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
+          for (std::uint32_t s = cell_start[k]; s < cell_start[k + 1]; ++s) visit(s);
+        }
+      }
+    }
+  }
 
   // Calls visit(s) for every sorted particle s in the 27 cells around x.
   template <class Visit>
   MSSPH_HD void for_each_candidate(Vec3 x, Visit&& visit) const {
-    int cx, cy, cz;
-    shape.cell_of(x, cx, cy, cz);
-    for (int dz = -1; dz <= 1; ++dz) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
-          const std::uint32_t start = cell_start[k];
-          if (start == kEmptyCell) continue;
-          const std::uint32_t end = cell_end[k];
-          for (std::uint32_t s = start; s < end; ++s) visit(s);
-        }
-      }
-    }
+    for (int dz = -1; dz <= 1; ++dz) for_each_candidate_in_layer(x, dz, visit);
   }
 };
 

@@ -62,6 +62,7 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
   scene.step.kernels = SmoothingKernels::for_support(setup.smoothing_length);
   scene.step.dt = static_cast<float>(setup.dt);
   scene.step.gravity = to_vec3(setup.gravity);
+  scene.step.inverse_rest_number_density = static_cast<float>(1.0 / setup.rest_number_density);
   scene.step.inverse_gradient_consistency = static_cast<float>(1.0 / setup.gradient_consistency);
   scene.step.particle_count = static_cast<std::uint32_t>(setup.size());
 
@@ -69,7 +70,7 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
     BodyParameters p{};
     p.kind = kind_code(b.kind);
     p.rigid_index = kNotRigid;
-    p.sph_mass = static_cast<float>(b.material.rest_density / setup.rest_number_density);
+    p.sph_mass = static_cast<float>(b.material.rest_density * setup.spacing * setup.spacing * setup.spacing);
     p.rest_density = static_cast<float>(b.material.rest_density);
     p.pressure_stiffness = static_cast<float>(b.material.pressure_stiffness);
     p.viscosity = static_cast<float>(b.material.viscosity);

@@ -1,70 +1,117 @@
 #pragma once
-// Steps 2 and 3 of the paper's loop (3.2) for one particle, float32: density and pressure, then
-// pressure and viscosity forces (paper eq. 2, 3 inside a fluid; eq. 7 between bodies). The same
-// functions run in the CUDA kernels and in the host build; cpu_reference/density.hpp and
-// cpu_reference/fluid_forces.hpp document the formulation (number-density volumes after
-// Solenthaler and Pajarola 2008, clamped equation of state, pressure force without the paper's
-// 1/2 and with the lattice calibration 1/c).
+// Steps 2 to 4 of the paper's loop (3.2) for one particle, float32: density and pressure,
+// pressure and viscosity forces (paper eq. 2, 3 inside a fluid; eq. 7 between bodies), leap-frog.
+// The same functions run in the CUDA kernels and in the host build; cpu_reference/density.hpp and
+// cpu_reference/fluid_forces.hpp document the formulation (spiky number densities read against
+// each body's rest density after Solenthaler and Pajarola 2008, clamped equation of state, the
+// energy-consistent form of eq. 2 with the lattice calibration 1/g).
+//
+// Each quantity is a sum over neighbours, written as an accumulator with one add_*_pair per
+// neighbour: the host visits all 27 cells in one loop, a GPU splits them among a few lanes and
+// adds the lanes' partial sums (same pair arithmetic, another summation order).
 #include "particle_views.hpp"
 
 namespace mssph::kernels {
 
+// ---- Step 2: density and pressure ----
+
+struct DensitySum {
+  float delta;  // number density sum_j W_spiky(|x_i - x_j|) [1/m^3]
+};
+
+MSSPH_HD void add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, std::uint32_t t) {
+  sum.delta += v.step.kernels.spiky(norm(x_i - xyz(v.position[t])));
+}
+
+MSSPH_HD DensitySum combine(DensitySum a, DensitySum b) { return {a.delta + b.delta}; }
+
 struct DensityResult {
-  float density;  // rho = m delta [kg/m^3]
+  float density;  // rho = rho0 delta / delta0 [kg/m^3]
   VolumePressure volume_pressure;
 };
 
-MSSPH_HD DensityResult density_at(const SortedView& v, std::uint32_t s) {
-  const Vec3 x_i = xyz(v.position[s]);
-  float delta = 0.0f;
-  v.grid.for_each_candidate(x_i, [&](std::uint32_t t) {
-    delta += v.step.kernels.poly6(squared_norm(x_i - xyz(v.position[t])));
-  });
+MSSPH_HD DensityResult density_from(const DensitySum& sum, const SortedView& v, std::uint32_t s) {
   const BodyParameters& body = v.bodies[body_of(v.position[s])];
-  const float density = body.sph_mass * delta;
+  const float density = body.rest_density * sum.delta * v.step.inverse_rest_number_density;
   const float pressure = std::fmax(0.0f, body.pressure_stiffness * (density - body.rest_density));
-  return {density, {1.0f / delta, pressure}};
+  return {density, {body.sph_mass / density, pressure}};
 }
 
-struct PressureViscosityForces {
+MSSPH_HD DensityResult density_at(const SortedView& v, std::uint32_t s) {
+  const Vec3 x_i = xyz(v.position[s]);
+  DensitySum sum{0.0f};
+  v.grid.for_each_candidate(x_i, [&](std::uint32_t t) { add_density_pair(sum, v, x_i, t); });
+  return density_from(sum, v, s);
+}
+
+// ---- Step 3: pressure and viscosity forces ----
+
+// Harmonic mean of two bodies' viscosities (Morris et al. 1997): no friction against a body of
+// zero viscosity.
+MSSPH_HD float interface_viscosity(float mu_i, float mu_j) {
+  return mu_i + mu_j > 0.0f ? 2.0f * mu_i * mu_j / (mu_i + mu_j) : 0.0f;
+}
+
+// What the force sum needs of particle i, loaded once.
+struct ForceParticle {
+  std::uint32_t s;
+  std::uint32_t body;
+  BodyParameters parameters;
+  Vec3 x;
+  Vec3 u;
+  VolumePressure vp;
+};
+
+MSSPH_HD ForceParticle load_force_particle(const SortedView& v, std::uint32_t s) {
+  const Vec4 p = v.position[s];
+  const std::uint32_t body = body_of(p);
+  return {s, body, v.bodies[body], xyz(p), xyz(v.velocity[s]), v.volume_pressure[s]};
+}
+
+struct ForceSum {
   Vec3 pressure;     // [N] from all neighbours
   Vec3 viscosity;    // [N] from all neighbours
   Vec3 interaction;  // [N] the part of both from other bodies (eq. 7)
 };
 
-MSSPH_HD PressureViscosityForces pressure_viscosity_at(const SortedView& v, std::uint32_t s) {
-  PressureViscosityForces out{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  const Vec4 p_i = v.position[s];
-  const std::uint32_t body_i = body_of(p_i);
-  const BodyParameters& b_i = v.bodies[body_i];
-  if (b_i.kind == kBoundary) return out;
-  const Vec3 x_i = xyz(p_i);
-  const Vec3 u_i = xyz(v.velocity[s]);
-  const VolumePressure vp_i = v.volume_pressure[s];
-  v.grid.for_each_candidate(x_i, [&](std::uint32_t t) {
-    if (t == s) return;
-    const Vec4 p_j = v.position[t];
-    const Vec3 r_ij = x_i - xyz(p_j);
-    const float r2 = squared_norm(r_ij);
-    if (r2 >= v.step.kernels.h2) return;
-    const std::uint32_t body_j = body_of(p_j);
-    const bool same_body = body_j == body_i;
-    if (same_body && b_i.kind != kFluid) return;  // rigid, deformable: no pressure among themselves
-    const VolumePressure vp_j = v.volume_pressure[t];
-    const float r = std::sqrt(r2);
-    const float volumes = vp_i.volume * vp_j.volume;
-    const Vec3 pressure = (-volumes * v.step.inverse_gradient_consistency * (vp_i.pressure + vp_j.pressure)) *
-                          v.step.kernels.spiky_gradient(r_ij, r);
-    const float mu = 0.5f * (b_i.viscosity + v.bodies[body_j].viscosity);
-    const Vec3 viscosity = (mu * volumes * v.step.kernels.viscosity_laplacian(r)) * (xyz(v.velocity[t]) - u_i);
-    out.pressure += pressure;
-    out.viscosity += viscosity;
-    if (!same_body) out.interaction += pressure + viscosity;
-  });
-  return out;
+MSSPH_HD ForceSum zero_force_sum() { return {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}; }
+MSSPH_HD ForceSum combine(const ForceSum& a, const ForceSum& b) {
+  return {a.pressure + b.pressure, a.viscosity + b.viscosity, a.interaction + b.interaction};
 }
 
-// Step 4 for fluid and deformable particles, leap-frog with staggered velocities:
+MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const SortedView& v, std::uint32_t t) {
+  if (t == i.s) return;
+  const Vec4 p_j = v.position[t];
+  const Vec3 r_ij = i.x - xyz(p_j);
+  const float r2 = squared_norm(r_ij);
+  if (r2 >= v.step.kernels.h2) return;
+  const std::uint32_t body_j = body_of(p_j);
+  const bool same_body = body_j == i.body;
+  if (same_body && i.parameters.kind != kFluid) return;  // rigid, deformable: no pressure among themselves
+  const VolumePressure vp_j = v.volume_pressure[t];
+  const float r = std::sqrt(r2);
+  const float pressure_term = i.vp.volume * i.vp.volume * i.vp.pressure + vp_j.volume * vp_j.volume * vp_j.pressure;
+  const Vec3 pressure = (-pressure_term * v.step.inverse_gradient_consistency) * v.step.kernels.spiky_gradient(r_ij, r);
+  const float mu = same_body ? i.parameters.viscosity : interface_viscosity(i.parameters.viscosity, v.bodies[body_j].viscosity);
+  const Vec3 viscosity = (mu * i.vp.volume * vp_j.volume * v.step.kernels.viscosity_laplacian(r)) * (xyz(v.velocity[t]) - i.u);
+  sum.pressure += pressure;
+  sum.viscosity += viscosity;
+  if (!same_body) sum.interaction += pressure + viscosity;
+}
+
+// Boundary particles receive no force: they skip the sum.
+MSSPH_HD bool receives_forces(const ForceParticle& i) { return i.parameters.kind != kBoundary; }
+
+MSSPH_HD ForceSum pressure_viscosity_at(const SortedView& v, std::uint32_t s) {
+  const ForceParticle i = load_force_particle(v, s);
+  ForceSum sum = zero_force_sum();
+  if (receives_forces(i)) v.grid.for_each_candidate(i.x, [&](std::uint32_t t) { add_force_pair(sum, i, v, t); });
+  return sum;
+}
+
+// ---- Step 4: integration ----
+
+// Leap-frog with staggered velocities for fluid and deformable particles:
 // v_{n+1/2} = v_{n-1/2} + (f / m + g) dt, x_{n+1} = x_n + v_{n+1/2} dt; held particles stay.
 MSSPH_HD void leapfrog(Vec4& position, Vec4& velocity, Vec3 force, float mass, bool held, const StepParameters& step) {
   if (held) {
@@ -76,13 +123,11 @@ MSSPH_HD void leapfrog(Vec4& position, Vec4& velocity, Vec3 force, float mass, b
   position = make_vec4(xyz(position) + step.dt * v, 0.0f);
 }
 
-// Steps 3 and 4 fused for sorted particle s: its pressure and viscosity forces (plus its elastic
-// force when deformable) and, for fluid and deformable particles, the leap-frog update of its
-// canonical state. Reads only sorted arrays and writes only particle s's canonical entries, so
-// all particles can run at once.
-MSSPH_HD void forces_and_leapfrog(const SortedView& v, const CanonicalState& c, std::uint32_t s) {
+// Steps 3 and 4 joined for sorted particle s, given its force sum: records its interaction force
+// and, for fluid and deformable particles, adds its elastic force and advances its canonical
+// state. Writes only particle s's canonical entries, so all particles can run at once.
+MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, std::uint32_t s, const ForceSum& f) {
   const std::uint32_t i = v.id[s];
-  const PressureViscosityForces f = pressure_viscosity_at(v, s);
   c.interaction_force[i] = make_vec4(f.interaction, 0.0f);
   const BodyParameters& body = v.bodies[c.body[i]];
   if (body.kind != kFluid && body.kind != kDeformable) return;
@@ -91,15 +136,21 @@ MSSPH_HD void forces_and_leapfrog(const SortedView& v, const CanonicalState& c, 
   leapfrog(c.position[i], c.velocity[i], total, body.sph_mass, c.fixed[i] != 0, v.step);
 }
 
-// The grid's last stage for sorted particle s (after sorting the keys): marks where its cell's
-// run starts and ends and copies its position (with its body index) and velocity into cell order.
-MSSPH_HD void place_in_cell_order(std::uint32_t s, std::uint32_t n, const std::uint32_t* sorted_keys,
+// ---- The grid's last stage ----
+
+// For sorted particle s (after the keys are sorted): fills cell_start for the keys from its
+// predecessor's (exclusive) to its own (inclusive), the last particle also to the table's end, and
+// copies its position (with its body index) and velocity into cell order.
+MSSPH_HD void place_in_cell_order(std::uint32_t s, std::uint32_t n, std::uint32_t cells, const std::uint32_t* sorted_keys,
                                   const std::uint32_t* sorted_id, const Vec4* position, const Vec4* velocity,
                                   const std::uint32_t* body, Vec4* sorted_position, Vec4* sorted_velocity,
-                                  std::uint32_t* cell_start, std::uint32_t* cell_end) {
+                                  std::uint32_t* cell_start) {
   const std::uint32_t key = sorted_keys[s];
-  if (s == 0 || sorted_keys[s - 1] != key) cell_start[key] = s;
-  if (s + 1 == n || sorted_keys[s + 1] != key) cell_end[key] = s + 1;
+  const std::uint32_t first = s == 0 ? 0u : sorted_keys[s - 1] + 1u;
+  for (std::uint32_t k = first; k <= key; ++k) cell_start[k] = s;
+  if (s + 1 == n) {
+    for (std::uint32_t k = key + 1; k <= cells; ++k) cell_start[k] = n;
+  }
   const std::uint32_t i = sorted_id[s];
   sorted_position[s] = make_vec4(xyz(position[i]), body_as_float(body[i]));
   sorted_velocity[s] = velocity[i];

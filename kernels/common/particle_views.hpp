@@ -19,7 +19,7 @@ inline constexpr std::uint32_t kNotRigid = 0xffffffffu;
 struct BodyParameters {
   std::uint32_t kind;         // BodyKindCode
   std::uint32_t rigid_index;  // index of a movable rigid body's state, else kNotRigid
-  float sph_mass;             // m = rho0 / delta0 [kg]
+  float sph_mass;             // m = rho0 dx^3 [kg]
   float rest_density;         // rho0 [kg/m^3]
   float pressure_stiffness;   // k [m^2/s^2]
   float viscosity;            // mu [Pa s]
@@ -29,7 +29,8 @@ struct StepParameters {
   SmoothingKernels kernels;
   float dt;                     // [s]
   Vec3 gravity;                 // [m/s^2]
-  float inverse_gradient_consistency;  // 1 / c, see cpu_reference/sph_kernels.hpp
+  float inverse_rest_number_density;   // 1 / delta0 [m^3]
+  float inverse_gradient_consistency;  // 1 / g, see cpu_reference/sph_kernels.hpp
   std::uint32_t particle_count;
 };
 
@@ -47,7 +48,7 @@ MSSPH_HD std::uint32_t body_of(const Vec4& sorted_position) {
 }
 
 struct VolumePressure {
-  float volume;    // V = 1 / delta [m^3]
+  float volume;    // V = m / rho [m^3]
   float pressure;  // P [Pa]
 };
 

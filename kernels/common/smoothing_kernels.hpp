@@ -10,6 +10,7 @@ struct SmoothingKernels {
   float h;
   float h2;
   float poly6_coefficient;     // 315 / (64 pi h^9)
+  float spiky_value_coefficient;  // 15 / (pi h^6)
   float spiky_coefficient;     // -45 / (pi h^6)
   float laplacian_coefficient;  // 45 / (pi h^6)
 
@@ -18,14 +19,21 @@ struct SmoothingKernels {
     const double h6 = support * support * support * support * support * support;
     return {static_cast<float>(support), static_cast<float>(support * support),
             static_cast<float>(315.0 / (64.0 * pi * h6 * support * support * support)),
+            static_cast<float>(15.0 / (pi * h6)),
             static_cast<float>(-45.0 / (pi * h6)), static_cast<float>(45.0 / (pi * h6))};
   }
 
-  // poly6 W(r) from r^2 (densities, paper eq. 1).
+  // poly6 W(r) from r^2 (moment matrices and rest volumes of deformable bodies).
   MSSPH_HD float poly6(float r2) const {
     if (r2 >= h2) return 0.0f;
     const float d = h2 - r2;
     return poly6_coefficient * d * d * d;
+  }
+  // Spiky kernel W(r) (number densities behind pressure, cpu_reference/density.hpp).
+  MSSPH_HD float spiky(float r) const {
+    if (r >= h) return 0.0f;
+    const float d = h - r;
+    return spiky_value_coefficient * d * d * d;
   }
   // Spiky gradient with respect to x_i, r_vec = x_i - x_j (pressure, elasticity); zero at r = 0.
   MSSPH_HD Vec3 spiky_gradient(Vec3 r_vec, float r) const {

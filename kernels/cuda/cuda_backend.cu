@@ -30,57 +30,120 @@ __global__ void identity_kernel(std::uint32_t n, std::uint32_t* values) {
   if (i < n) values[i] = i;
 }
 
-__global__ void cell_order_kernel(std::uint32_t n, const std::uint32_t* sorted_keys, const std::uint32_t* sorted_id,
-                                  const Vec4* position, const Vec4* velocity, const std::uint32_t* body,
-                                  Vec4* sorted_position, Vec4* sorted_velocity, std::uint32_t* cell_start,
-                                  std::uint32_t* cell_end) {
+__global__ void cell_order_kernel(std::uint32_t n, std::uint32_t cells, const std::uint32_t* sorted_keys,
+                                  const std::uint32_t* sorted_id, const Vec4* position, const Vec4* velocity,
+                                  const std::uint32_t* body, Vec4* sorted_position, Vec4* sorted_velocity,
+                                  std::uint32_t* cell_start) {
   const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
   if (s < n) {
-    place_in_cell_order(s, n, sorted_keys, sorted_id, position, velocity, body, sorted_position, sorted_velocity,
-                        cell_start, cell_end);
+    place_in_cell_order(s, n, cells, sorted_keys, sorted_id, position, velocity, body, sorted_position, sorted_velocity,
+                        cell_start);
   }
 }
 
+// The neighbour sums give each particle a team of kLanes consecutive lanes of a warp: lanes 0, 1
+// and 2 each sum one z-layer of the 27 cells around it (lane 3 idles), then the team adds the
+// partial sums by shuffles in a fixed order. A thread per particle would walk ~200 candidates one
+// dependent load after another; a team has three walks in flight, and three times as many warps
+// hide the memory latency of small scenes.
+constexpr unsigned kLanes = 4;
+
+__device__ float team_sum(float x) {
+  x += __shfl_xor_sync(0xffffffffu, x, 1);
+  return x + __shfl_xor_sync(0xffffffffu, x, 2);
+}
+__device__ Vec3 team_sum(Vec3 v) { return {team_sum(v.x), team_sum(v.y), team_sum(v.z)}; }
+
 __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure) {
-  const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
-  if (s < view.step.particle_count) volume_pressure[s] = density_at(view, s).volume_pressure;
+  const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
+  const std::uint32_t s = thread / kLanes;
+  const unsigned lane = thread % kLanes;
+  const bool active = s < view.step.particle_count;
+  DensitySum sum{0.0f};
+  if (active && lane < 3) {
+    const Vec3 x_i = xyz(view.position[s]);
+    view.grid.for_each_candidate_in_layer(x_i, static_cast<int>(lane) - 1,
+                                          [&](std::uint32_t t) { add_density_pair(sum, view, x_i, t); });
+  }
+  sum.delta = team_sum(sum.delta);
+  if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s).volume_pressure;
 }
 
 __global__ void forces_kernel(SortedView view, CanonicalState state) {
-  const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
-  if (s < view.step.particle_count) forces_and_leapfrog(view, state, s);
+  const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
+  const std::uint32_t s = thread / kLanes;
+  const unsigned lane = thread % kLanes;
+  const bool active = s < view.step.particle_count;
+  ForceSum sum = zero_force_sum();
+  if (active && lane < 3) {
+    const ForceParticle i = load_force_particle(view, s);
+    if (receives_forces(i)) {
+      view.grid.for_each_candidate_in_layer(i.x, static_cast<int>(lane) - 1,
+                                            [&](std::uint32_t t) { add_force_pair(sum, i, view, t); });
+    }
+  }
+  sum = {team_sum(sum.pressure), team_sum(sum.viscosity), team_sum(sum.interaction)};
+  if (active && lane == 0) apply_forces(view, state, s, sum);
 }
 
 struct WrenchSum {
   __device__ Wrench operator()(const Wrench& a, const Wrench& b) const { return a + b; }
 };
 
-// One block per movable rigid body: the wrench of its particles' interaction forces summed in a
-// fixed order (strided per thread, then CUB's block tree: no atomics, so runs repeat bit for bit),
-// the body integrated, and its particles placed.
-__global__ void rigid_bodies_kernel(RigidBody* bodies, CanonicalState state, const Vec4* rest_offset, StepParameters step) {
+// Rigid bodies are cut into chunks of at most kChunk particles, so a body of a million particles
+// is summed by many blocks. Every sum runs in a fixed order (strided per thread, CUB's block tree,
+// then the chunks in order): no atomics, so runs repeat bit for bit.
+constexpr std::uint32_t kChunk = 4096;
+
+struct RigidChunk {
+  std::uint32_t rigid;  // index of the rigid body
+  std::uint32_t first;  // canonical particle range
+  std::uint32_t count;
+};
+
+// One block per chunk: the wrench of its particles' interaction forces about the body's centre.
+__global__ void rigid_chunk_wrench_kernel(const RigidChunk* chunks, const RigidBody* bodies, CanonicalState state,
+                                          Wrench* partial) {
+  using BlockReduce = cub::BlockReduce<Wrench, kBlock>;
+  __shared__ typename BlockReduce::TempStorage reduce_storage;
+  const RigidChunk chunk = chunks[blockIdx.x];
+  const Vec3 centre = bodies[chunk.rigid].position;
+  Wrench wrench{{0, 0, 0}, {0, 0, 0}};
+  for (std::uint32_t i = chunk.first + threadIdx.x; i < chunk.first + chunk.count; i += blockDim.x) {
+    wrench = wrench + particle_wrench(xyz(state.position[i]), xyz(state.interaction_force[i]), centre);
+  }
+  const Wrench total = BlockReduce(reduce_storage).Reduce(wrench, WrenchSum());
+  if (threadIdx.x == 0) partial[blockIdx.x] = total;
+}
+
+// One thread per rigid body: its chunks' wrenches in order, then rigid-body dynamics (eq. 8, 9).
+__global__ void rigid_integrate_kernel(RigidBody* bodies, std::uint32_t rigid_count, const std::uint32_t* first_chunk,
+                                       const Wrench* partial, StepParameters step) {
+  const std::uint32_t r = blockIdx.x * blockDim.x + threadIdx.x;
+  if (r >= rigid_count) return;
+  Wrench total{{0, 0, 0}, {0, 0, 0}};
+  for (std::uint32_t c = first_chunk[r]; c < first_chunk[r + 1]; ++c) total = total + partial[c];
+  RigidBody body = bodies[r];
+  body.interaction_force = total.force;
+  body.interaction_torque = total.torque;
+  integrate_rigid_body(body, step.gravity, step.dt);
+  bodies[r] = body;
+}
+
+// One block per chunk: its particles follow the body.
+__global__ void rigid_place_kernel(const RigidChunk* chunks, const RigidBody* bodies, CanonicalState state,
+                                   const Vec4* rest_offset) {
   __shared__ RigidBody body;
   __shared__ Mat3 rotation;
   __shared__ Vec3 omega;
-  using BlockReduce = cub::BlockReduce<Wrench, kBlock>;
-  __shared__ typename BlockReduce::TempStorage reduce_storage;
-  if (threadIdx.x == 0) body = bodies[blockIdx.x];
-  __syncthreads();
-  Wrench wrench{{0, 0, 0}, {0, 0, 0}};
-  for (std::uint32_t i = body.first + threadIdx.x; i < body.first + body.count; i += blockDim.x) {
-    wrench = wrench + particle_wrench(xyz(state.position[i]), xyz(state.interaction_force[i]), body.position);
-  }
-  const Wrench total = BlockReduce(reduce_storage).Reduce(wrench, WrenchSum());
+  const RigidChunk chunk = chunks[blockIdx.x];
   if (threadIdx.x == 0) {
-    body.interaction_force = total.force;
-    body.interaction_torque = total.torque;
-    integrate_rigid_body(body, step.gravity, step.dt);
+    body = bodies[chunk.rigid];
     rotation = rotation_matrix(body.orientation);
     omega = angular_velocity(body);
-    bodies[blockIdx.x] = body;
   }
   __syncthreads();
-  for (std::uint32_t i = body.first + threadIdx.x; i < body.first + body.count; i += blockDim.x) {
+  for (std::uint32_t i = chunk.first + threadIdx.x; i < chunk.first + chunk.count; i += blockDim.x) {
     place_rigid_particle(body, rotation, omega, xyz(rest_offset[i]), state.position[i], state.velocity[i]);
   }
 }
@@ -89,23 +152,27 @@ struct BodySumsCombine {
   __device__ BodySums operator()(const BodySums& a, const BodySums& b) const { return combine(a, b); }
 };
 
-struct BodyRange {
-  std::uint32_t first, count;
+// A run of at most kChunk particles of one body (any kind), for the logged per-body sums.
+struct BodyChunk {
+  std::uint32_t body;
+  std::uint32_t first;
+  std::uint32_t count;
 };
 
-// One block per body: the sums behind its logged state.
-__global__ void body_sums_kernel(const BodyRange* ranges, const BodyParameters* bodies, CanonicalState state,
-                                 BodySums* sums) {
+// One block per chunk: partial sums behind the logged body states; the host adds a body's chunks
+// in order.
+__global__ void body_sums_kernel(const BodyChunk* chunks, const BodyParameters* bodies, CanonicalState state,
+                                 BodySums* partial) {
   using BlockReduce = cub::BlockReduce<BodySums, kBlock>;
   __shared__ typename BlockReduce::TempStorage reduce_storage;
-  const BodyRange range = ranges[blockIdx.x];
-  const float mass = bodies[blockIdx.x].sph_mass;
+  const BodyChunk chunk = chunks[blockIdx.x];
+  const float mass = bodies[chunk.body].sph_mass;
   BodySums acc = zero_body_sums();
-  for (std::uint32_t i = range.first + threadIdx.x; i < range.first + range.count; i += blockDim.x) {
+  for (std::uint32_t i = chunk.first + threadIdx.x; i < chunk.first + chunk.count; i += blockDim.x) {
     add_particle(acc, xyz(state.position[i]), xyz(state.velocity[i]), mass, xyz(state.interaction_force[i]));
   }
   const BodySums total = BlockReduce(reduce_storage).Reduce(acc, BodySumsCombine());
-  if (threadIdx.x == 0) sums[blockIdx.x] = total;
+  if (threadIdx.x == 0) partial[blockIdx.x] = total;
 }
 
 std::string describe_bytes(std::size_t bytes) {
@@ -132,6 +199,7 @@ class CudaBackend final : public Backend {
   ParticleSnapshot snapshot() override;
   std::vector<std::string> phase_names() const override { return {"grid", "density", "forces_integrate", "rigid_bodies"}; }
   std::vector<double> last_phase_seconds() const override;
+  void synchronize() override { cuda_check(cudaStreamSynchronize(stream_), "synchronise"); }
 
  private:
   static constexpr int kPhaseCount = 4;
@@ -152,7 +220,7 @@ class CudaBackend final : public Backend {
   DeviceBuffer<std::uint32_t> body_;
   DeviceBuffer<std::uint8_t> fixed_;
   // Grid and cell-ordered copies.
-  DeviceBuffer<std::uint32_t> keys_, sorted_keys_, identity_, sorted_id_, cell_start_, cell_end_;
+  DeviceBuffer<std::uint32_t> keys_, sorted_keys_, identity_, sorted_id_, cell_start_;
   DeviceBuffer<Vec4> sorted_position_, sorted_velocity_;
   DeviceBuffer<VolumePressure> volume_pressure_;
   DeviceBuffer<unsigned char> sort_storage_;
@@ -160,8 +228,12 @@ class CudaBackend final : public Backend {
   // Bodies.
   DeviceBuffer<BodyParameters> bodies_;
   DeviceBuffer<RigidBody> rigid_bodies_;
-  DeviceBuffer<BodyRange> body_ranges_;
-  DeviceBuffer<BodySums> body_sums_;
+  DeviceBuffer<RigidChunk> rigid_chunks_;
+  DeviceBuffer<std::uint32_t> first_chunk_;  // per rigid body, plus the end
+  DeviceBuffer<Wrench> chunk_wrench_;
+  std::vector<BodyChunk> body_chunks_host_;
+  DeviceBuffer<BodyChunk> body_chunks_;
+  DeviceBuffer<BodySums> chunk_sums_;
 
   cudaStream_t stream_ = nullptr;
   cudaGraph_t graph_ = nullptr;
@@ -208,9 +280,12 @@ std::size_t scene_bytes(const FloatScene& scene, std::size_t sort_bytes) {
   const std::size_t n = scene.position.size();
   const std::size_t canonical = 4 * sizeof(Vec4) + sizeof(std::uint32_t) + sizeof(std::uint8_t);
   const std::size_t grid = 4 * sizeof(std::uint32_t) + 2 * sizeof(Vec4) + sizeof(VolumePressure);
-  const std::size_t cells = std::size_t{scene.grid.cell_count()} * 2 * sizeof(std::uint32_t);
-  const std::size_t bodies = scene.bodies.size() * (sizeof(BodyParameters) + sizeof(BodyRange) + sizeof(BodySums)) +
-                             scene.rigid_bodies.size() * sizeof(RigidBody);
+  const std::size_t cells = (std::size_t{scene.grid.cell_count()} + 1) * sizeof(std::uint32_t);
+  const std::size_t rigid_chunks = n / kChunk + scene.rigid_bodies.size();
+  const std::size_t body_chunks = n / kChunk + scene.bodies.size();
+  const std::size_t bodies = scene.bodies.size() * sizeof(BodyParameters) + body_chunks * (sizeof(BodyChunk) + sizeof(BodySums)) +
+                             scene.rigid_bodies.size() * (sizeof(RigidBody) + sizeof(std::uint32_t)) +
+                             rigid_chunks * (sizeof(RigidChunk) + sizeof(Wrench));
   return n * (canonical + grid) + cells + bodies + sort_bytes;
 }
 
@@ -244,18 +319,33 @@ CudaBackend::CudaBackend(ParticleSetup setup)
   sorted_keys_ = DeviceBuffer<std::uint32_t>(n_);
   identity_ = DeviceBuffer<std::uint32_t>(n_);
   sorted_id_ = DeviceBuffer<std::uint32_t>(n_);
-  cell_start_ = DeviceBuffer<std::uint32_t>(scene_.grid.cell_count());
-  cell_end_ = DeviceBuffer<std::uint32_t>(scene_.grid.cell_count());
+  cell_start_ = DeviceBuffer<std::uint32_t>(std::size_t{scene_.grid.cell_count()} + 1);
   sorted_position_ = DeviceBuffer<Vec4>(n_);
   sorted_velocity_ = DeviceBuffer<Vec4>(n_);
   volume_pressure_ = DeviceBuffer<VolumePressure>(std::vector<VolumePressure>(n_, VolumePressure{0, 0}));
   sort_storage_ = DeviceBuffer<unsigned char>(sort_storage_bytes_);
   bodies_ = DeviceBuffer<BodyParameters>(scene_.bodies);
   rigid_bodies_ = DeviceBuffer<RigidBody>(scene_.rigid_bodies);
-  std::vector<BodyRange> ranges;
-  for (const BodySetup& b : setup_.bodies) ranges.push_back({static_cast<std::uint32_t>(b.first), static_cast<std::uint32_t>(b.count)});
-  body_ranges_ = DeviceBuffer<BodyRange>(ranges);
-  body_sums_ = DeviceBuffer<BodySums>(setup_.bodies.size());
+  std::vector<RigidChunk> chunks;
+  std::vector<std::uint32_t> first_chunk;
+  for (std::uint32_t r = 0; r < scene_.rigid_bodies.size(); ++r) {
+    first_chunk.push_back(static_cast<std::uint32_t>(chunks.size()));
+    const RigidBody& body = scene_.rigid_bodies[r];
+    for (std::uint32_t first = body.first; first < body.first + body.count; first += kChunk) {
+      chunks.push_back({r, first, std::min(kChunk, body.first + body.count - first)});
+    }
+  }
+  first_chunk.push_back(static_cast<std::uint32_t>(chunks.size()));
+  rigid_chunks_ = DeviceBuffer<RigidChunk>(chunks);
+  first_chunk_ = DeviceBuffer<std::uint32_t>(first_chunk);
+  chunk_wrench_ = DeviceBuffer<Wrench>(chunks.size());
+  for (std::uint32_t b = 0; b < setup_.bodies.size(); ++b) {
+    const auto first = static_cast<std::uint32_t>(setup_.bodies[b].first);
+    const auto end = first + static_cast<std::uint32_t>(setup_.bodies[b].count);
+    for (std::uint32_t f = first; f < end; f += kChunk) body_chunks_host_.push_back({b, f, std::min(kChunk, end - f)});
+  }
+  body_chunks_ = DeviceBuffer<BodyChunk>(body_chunks_host_);
+  chunk_sums_ = DeviceBuffer<BodySums>(body_chunks_host_.size());
   for (const RigidBody& r : scene_.rigid_bodies) {
     float reach = 0.0f;
     for (std::uint32_t i = r.first; i < r.first + r.count; ++i) reach = std::max(reach, norm(xyz(scene_.rest_offset[i])));
@@ -288,7 +378,7 @@ CudaBackend::~CudaBackend() {
 SortedView CudaBackend::sorted_view() const {
   return SortedView{scene_.step,
                     bodies_.data(),
-                    CellRanges{scene_.grid, cell_start_.data(), cell_end_.data()},
+                    CellRanges{scene_.grid, cell_start_.data()},
                     sorted_position_.data(),
                     sorted_velocity_.data(),
                     sorted_id_.data(),
@@ -305,25 +395,36 @@ CanonicalState CudaBackend::canonical_state() {
 void CudaBackend::record_step(cudaStream_t stream) {
   const unsigned blocks = blocks_for(n_);
   const int bits = static_cast<int>(scene_.grid.total_bits());
-  cuda_check(cudaEventRecord(events_[0], stream), "record event");
+  // External event records: the graph's replays record them, so their times can be read after
+  // each launch (a plain record during capture only orders the graph's nodes).
+  const auto mark = [&](std::size_t phase) {
+    cuda_check(cudaEventRecordWithFlags(events_[phase], stream, cudaEventRecordExternal), "record phase event");
+  };
+  mark(0);
   cell_keys_kernel<<<blocks, kBlock, 0, stream>>>(position_.data(), n_, scene_.grid, keys_.data());
   cuda_check(cub::DeviceRadixSort::SortPairs(sort_storage_.data(), sort_storage_bytes_, keys_.data(), sorted_keys_.data(),
                                              identity_.data(), sorted_id_.data(), n_, 0, bits, stream),
              "radix sort");
-  cuda_check(cudaMemsetAsync(cell_start_.data(), 0xff, cell_start_.bytes(), stream), "clear cells");
-  cell_order_kernel<<<blocks, kBlock, 0, stream>>>(n_, sorted_keys_.data(), sorted_id_.data(), position_.data(),
-                                                   velocity_.data(), body_.data(), sorted_position_.data(),
-                                                   sorted_velocity_.data(), cell_start_.data(), cell_end_.data());
-  cuda_check(cudaEventRecord(events_[1], stream), "record event");
-  density_kernel<<<blocks, kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
-  cuda_check(cudaEventRecord(events_[2], stream), "record event");
-  forces_kernel<<<blocks, kBlock, 0, stream>>>(sorted_view(), canonical_state());
-  cuda_check(cudaEventRecord(events_[3], stream), "record event");
+  cell_order_kernel<<<blocks, kBlock, 0, stream>>>(n_, scene_.grid.cell_count(), sorted_keys_.data(), sorted_id_.data(),
+                                                   position_.data(), velocity_.data(), body_.data(),
+                                                   sorted_position_.data(), sorted_velocity_.data(), cell_start_.data());
+  mark(1);
+  const unsigned team_blocks = blocks_for(std::size_t{n_} * kLanes);
+  density_kernel<<<team_blocks, kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
+  mark(2);
+  forces_kernel<<<team_blocks, kBlock, 0, stream>>>(sorted_view(), canonical_state());
+  mark(3);
   if (!scene_.rigid_bodies.empty()) {
-    rigid_bodies_kernel<<<static_cast<unsigned>(scene_.rigid_bodies.size()), kBlock, 0, stream>>>(
-        rigid_bodies_.data(), canonical_state(), rest_offset_.data(), scene_.step);
+    const auto chunks = static_cast<unsigned>(rigid_chunks_.size());
+    const auto rigid_count = static_cast<std::uint32_t>(scene_.rigid_bodies.size());
+    rigid_chunk_wrench_kernel<<<chunks, kBlock, 0, stream>>>(rigid_chunks_.data(), rigid_bodies_.data(),
+                                                             canonical_state(), chunk_wrench_.data());
+    rigid_integrate_kernel<<<blocks_for(rigid_count), kBlock, 0, stream>>>(rigid_bodies_.data(), rigid_count,
+                                                                           first_chunk_.data(), chunk_wrench_.data(), scene_.step);
+    rigid_place_kernel<<<chunks, kBlock, 0, stream>>>(rigid_chunks_.data(), rigid_bodies_.data(), canonical_state(),
+                                                      rest_offset_.data());
   }
-  cuda_check(cudaEventRecord(events_[4], stream), "record event");
+  mark(4);
   cuda_check(cudaGetLastError(), "launch step kernels");
 }
 
@@ -379,23 +480,24 @@ BodyState CudaBackend::rigid_body_state(std::size_t body) {
 }
 
 std::vector<BodyState> CudaBackend::body_states() {
-  body_sums_kernel<<<static_cast<unsigned>(setup_.bodies.size()), kBlock, 0, stream_>>>(
-      body_ranges_.data(), bodies_.data(), canonical_state(), body_sums_.data());
+  body_sums_kernel<<<static_cast<unsigned>(body_chunks_host_.size()), kBlock, 0, stream_>>>(
+      body_chunks_.data(), bodies_.data(), canonical_state(), chunk_sums_.data());
   cuda_check(cudaGetLastError(), "launch body sums");
-  std::vector<BodySums> sums(setup_.bodies.size());
-  cuda_check(cudaMemcpyAsync(sums.data(), body_sums_.data(), body_sums_.bytes(), cudaMemcpyDeviceToHost, stream_), "download body sums");
+  std::vector<BodySums> partial(body_chunks_host_.size());
+  cuda_check(cudaMemcpyAsync(partial.data(), chunk_sums_.data(), chunk_sums_.bytes(), cudaMemcpyDeviceToHost, stream_),
+             "download body sums");
   std::vector<RigidBody> rigid(scene_.rigid_bodies.size());
   if (!rigid.empty()) {
     cuda_check(cudaMemcpyAsync(rigid.data(), rigid_bodies_.data(), rigid_bodies_.bytes(), cudaMemcpyDeviceToHost, stream_),
                "download rigid bodies");
   }
   cuda_check(cudaStreamSynchronize(stream_), "body states");
+  std::vector<BodySums> sums(setup_.bodies.size(), zero_body_sums());
+  for (std::size_t c = 0; c < partial.size(); ++c) sums[body_chunks_host_[c].body] = combine(sums[body_chunks_host_[c].body], partial[c]);
   std::vector<BodyState> states;
   for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
     const std::uint32_t r = scene_.bodies[b].rigid_index;
-    BodyState s = to_body_state(sums[b], r == kNotRigid ? nullptr : &rigid[r], setup_.bodies[b]);
-    s.max_speed = std::sqrt(sums[b].max_speed);
-    states.push_back(s);
+    states.push_back(to_body_state(sums[b], r == kNotRigid ? nullptr : &rigid[r], setup_.bodies[b]));
   }
   return states;
 }

@@ -35,8 +35,7 @@ HostBackend::HostBackend(ParticleSetup setup) : setup_(std::move(setup)), scene_
     }
   }
   const std::size_t n = setup_.size();
-  cell_start_.assign(scene_.grid.cell_count(), kEmptyCell);
-  cell_end_.assign(scene_.grid.cell_count(), 0);
+  cell_start_.assign(std::size_t{scene_.grid.cell_count()} + 1, 0);
   sorted_id_.resize(n);
   sorted_key_.resize(n);
   sorted_position_.resize(n);
@@ -61,19 +60,20 @@ void HostBackend::set_external_wrench(std::size_t body, const Eigen::Vector3d& f
 
 SortedView HostBackend::sorted_view() const {
   return SortedView{scene_.step,           scene_.bodies.data(),
-                    CellRanges{scene_.grid, cell_start_.data(), cell_end_.data()},
+                    CellRanges{scene_.grid, cell_start_.data()},
                     sorted_position_.data(), sorted_velocity_.data(),
                     sorted_id_.data(),       volume_pressure_.data()};
 }
 
 // Counting sort of the particles by cell key (stable: equal keys keep canonical order), then the
-// same cell ranges and cell-ordered copies as the CUDA backend.
+// same cell table and cell-ordered copies as the CUDA backend.
 void HostBackend::build_grid() {
   const std::size_t n = setup_.size();
+  const std::uint32_t cells = scene_.grid.cell_count();
   std::vector<std::uint32_t> key(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) key[i] = scene_.grid.key_of(xyz(scene_.position[i]));
-  std::vector<std::uint32_t> next(scene_.grid.cell_count() + 1, 0);
+  std::vector<std::uint32_t> next(cells + 1, 0);
   for (std::size_t i = 0; i < n; ++i) ++next[key[i] + 1];
   for (std::size_t k = 1; k < next.size(); ++k) next[k] += next[k - 1];
   for (std::size_t i = 0; i < n; ++i) {
@@ -81,13 +81,12 @@ void HostBackend::build_grid() {
     sorted_id_[s] = static_cast<std::uint32_t>(i);
     sorted_key_[s] = key[i];
   }
-  std::fill(cell_start_.begin(), cell_start_.end(), kEmptyCell);
   const auto count = static_cast<std::uint32_t>(n);
 #pragma omp parallel for schedule(static)
   for (std::uint32_t s = 0; s < count; ++s) {
-    place_in_cell_order(s, count, sorted_key_.data(), sorted_id_.data(), scene_.position.data(), scene_.velocity.data(),
-                        scene_.body.data(), sorted_position_.data(), sorted_velocity_.data(), cell_start_.data(),
-                        cell_end_.data());
+    place_in_cell_order(s, count, cells, sorted_key_.data(), sorted_id_.data(), scene_.position.data(),
+                        scene_.velocity.data(), scene_.body.data(), sorted_position_.data(), sorted_velocity_.data(),
+                        cell_start_.data());
   }
 }
 
@@ -104,7 +103,7 @@ void HostBackend::compute_forces_and_integrate() {
                              scene_.body.data(), scene_.fixed.data()};
   const auto n = static_cast<std::uint32_t>(setup_.size());
 #pragma omp parallel for schedule(static)
-  for (std::uint32_t s = 0; s < n; ++s) forces_and_leapfrog(view, state, s);
+  for (std::uint32_t s = 0; s < n; ++s) apply_forces(view, state, s, pressure_viscosity_at(view, s));
 }
 
 void HostBackend::advance_rigid_bodies() {

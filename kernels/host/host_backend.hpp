@@ -35,7 +35,7 @@ class HostBackend final : public Backend {
   ParticleSetup setup_;
   FloatScene scene_;
   // Per step, in cell order.
-  std::vector<std::uint32_t> cell_start_, cell_end_;
+  std::vector<std::uint32_t> cell_start_;  // cell_count() + 1 entries
   std::vector<std::uint32_t> sorted_id_, sorted_key_;
   std::vector<Vec4> sorted_position_, sorted_velocity_;
   std::vector<VolumePressure> volume_pressure_;

@@ -37,14 +37,14 @@ struct ParticleSetup {
   double spacing = 0.0;               // lattice spacing dx [m]
   double smoothing_length = 0.0;      // support radius h [m]
   double rest_number_density = 0.0;   // delta0 = sum_j W_ij in a rest lattice [1/m^3]
-  double gradient_consistency = 1.0;  // c = sum_j V_j x_ji (x) grad W_ij in a rest lattice (x I) [-]
+  double gradient_consistency = 1.0;  // g = dx^3 sum_j x_ji (x) grad W_ij in a rest lattice (x I) [-]
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   double dt = 0.0;
   double max_speed = 0.0;
 
   std::vector<Eigen::Vector3d> position;   // [m]
   std::vector<Eigen::Vector3d> velocity;   // [m/s]
-  std::vector<double> mass;                // SPH mass m_i = rho0 / delta0 [kg]
+  std::vector<double> mass;                // SPH mass m_i = rho0 dx^3 [kg]
   std::vector<std::uint32_t> body;         // index into bodies
   std::vector<std::uint8_t> fixed;         // 1: held in place (deformable fixed regions)
   std::vector<Eigen::Vector3d> rest_offset;  // rigid bodies: offset from the centre of mass, body frame [m]

@@ -117,7 +117,9 @@ ParticleSetup build_particles(const Scene& scene) {
     }
     if (config.kind == BodyKind::rigid) set_rigid_mass_properties(body, world, config.density, sim.particle_spacing);
 
-    const double sph_mass = config.material.rest_density / setup.rest_number_density;
+    // Each particle stands for its lattice cell: m = rho0 dx^3 (density.hpp reads densities
+    // against the rest lattice, so a rest lattice is at rho0 whatever the kernel).
+    const double sph_mass = config.material.rest_density * sim.particle_spacing * sim.particle_spacing * sim.particle_spacing;
     const std::uint32_t body_index = static_cast<std::uint32_t>(setup.bodies.size());
     for (const Vector3d& x : world) {
       Vector3d v = Vector3d::Zero();

@@ -65,6 +65,9 @@ class Backend {
   virtual BodyState rigid_body_state(std::size_t body) = 0;
   virtual ParticleSnapshot snapshot() = 0;
 
+  // Blocks until queued work is done: a GPU backend returns from step() before the step has run.
+  virtual void synchronize() {}
+
   // Wall-clock seconds of each phase of the last step, in the order of phase_names().
   virtual std::vector<std::string> phase_names() const = 0;
   virtual std::vector<double> last_phase_seconds() const = 0;
