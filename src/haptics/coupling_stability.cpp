@@ -38,11 +38,13 @@ std::vector<std::string> coupling_stability_warnings(const HapticsConfig& config
   const SpringDamperGains& c = config.coupling;
   const double period = 1.0 / config.haptic_rate_hz;
   const double proxy_step = std::max(dt, period);
-  const double smallest_inertia = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(proxy.inertia_body).eigenvalues().minCoeff();
+  const double smallest_inertia =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(proxy.inertia_body).eigenvalues().minCoeff();
   check({"translational coupling", c.linear_stiffness, c.linear_damping, proxy.mass, proxy_step, "m", "kg"}, proxy_name,
         warnings);
-  check({"rotational coupling", c.angular_stiffness, c.angular_damping, smallest_inertia, proxy_step, "I_min", "kg m^2"},
-        proxy_name, warnings);
+  check(
+      {"rotational coupling", c.angular_stiffness, c.angular_damping, smallest_inertia, proxy_step, "I_min", "kg m^2"},
+      proxy_name, warnings);
 
   if (config.trajectory.source == TrajectorySource::recorded) return warnings;  // the handle is not simulated
   const DeviceConfig& d = config.device;

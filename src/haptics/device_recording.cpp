@@ -32,7 +32,9 @@ std::string number(double x) {
 
 // Checks one sample and returns its pose with the quaternion normalised.
 Pose checked_pose(const RawRecording& raw, std::size_t i, const std::string& path, const RecordingLimits& limits) {
-  const auto fail = [&](const std::string& message) { throw InputError(path + ": " + raw.row_name(i) + ": " + message); };
+  const auto fail = [&](const std::string& message) {
+    throw InputError(path + ": " + raw.row_name(i) + ": " + message);
+  };
   const auto& p = raw.pose[i];
   if (!std::isfinite(raw.time[i])) fail("t is not a finite number");
   for (std::size_t k = 0; k < p.size(); ++k) {

@@ -30,7 +30,8 @@ HapticLog::HapticLog(RunLog& log) : log_(log) {
   device_angular_velocity_ =
       log.add_series("/haptics/device/angular_velocity", 3, "rad/s", "handle angular velocity, device frame", kXyz);
   proxy_position_ = log.add_series("/haptics/proxy/position", 3, "m", "proxy centre of mass, scene frame", kXyz);
-  proxy_orientation_ = log.add_series("/haptics/proxy/orientation", 4, "1", "proxy orientation, scene frame", kQuaternion);
+  proxy_orientation_ =
+      log.add_series("/haptics/proxy/orientation", 4, "1", "proxy orientation, scene frame", kQuaternion);
   proxy_linear_velocity_ =
       log.add_series("/haptics/proxy/linear_velocity", 3, "m/s", "proxy centre-of-mass velocity, scene frame", kXyz);
   proxy_angular_velocity_ =
@@ -43,8 +44,9 @@ HapticLog::HapticLog(RunLog& log) : log_(log) {
                                    "virtual coupling force on the proxy, scene frame (Colgate et al. 1995)", kXyz);
   coupling_torque_ =
       log.add_series("/haptics/coupling/torque", 3, "N m", "virtual coupling torque on the proxy, scene frame", kXyz);
-  rendered_force_ = log.add_series("/haptics/rendered/force", 3, "N",
-                                   "force the device renders at the handle: -F, device frame, scaled and clamped", kXyz);
+  rendered_force_ =
+      log.add_series("/haptics/rendered/force", 3, "N",
+                     "force the device renders at the handle: -F, device frame, scaled and clamped", kXyz);
   rendered_torque_ = log.add_series("/haptics/rendered/torque", 3, "N m",
                                     "torque the device renders: -tau, device frame, scaled and clamped", kXyz);
   saturation_ = log.add_series("/haptics/saturation", 3, "1",
@@ -73,7 +75,8 @@ void HapticLog::record(const HapticSample& s) {
   append3(log_, coupling_torque_, s.coupling.torque);
   append3(log_, rendered_force_, s.rendered.force);
   append3(log_, rendered_torque_, s.rendered.torque);
-  const double flags[3] = {s.force_saturated ? 1.0 : 0.0, s.torque_saturated ? 1.0 : 0.0, s.workspace_limited ? 1.0 : 0.0};
+  const double flags[3] = {s.force_saturated ? 1.0 : 0.0, s.torque_saturated ? 1.0 : 0.0,
+                           s.workspace_limited ? 1.0 : 0.0};
   log_.append(saturation_, flags);
   append1(log_, force_jump_, s.force_jump);
   append1(log_, injected_energy_, s.injected_energy);

@@ -9,7 +9,7 @@ struct HapticSample {
   double time = 0.0;  // simulated time of the tick [s]
   Pose device_pose;   // handle, device frame
   Twist device_twist;
-  Pose proxy_pose;    // proxy's centre of mass and orientation, scene frame
+  Pose proxy_pose;  // proxy's centre of mass and orientation, scene frame
   Twist proxy_twist;
   Wrench interaction;  // sum of SPH interaction forces on the proxy and their torque (paper eq. 8, 9)
   Wrench coupling;     // virtual coupling wrench on the proxy, scene frame

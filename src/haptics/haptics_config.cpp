@@ -80,7 +80,8 @@ TrajectoryConfig read_trajectory(const JsonReader& reader, const DeviceConfig& d
   // Keys of another source are an error, not silently ignored.
   const auto only_for = [&](const char* key, const char* wanted) {
     if (reader.has(key) && source != wanted) {
-      reader.fail(key, std::string("applies to the \"") + wanted + "\" source only (this trajectory is \"" + source + "\")");
+      reader.fail(key,
+                  std::string("applies to the \"") + wanted + "\" source only (this trajectory is \"" + source + "\")");
     }
   };
   only_for("keyframes", "scripted");
@@ -103,9 +104,12 @@ TrajectoryConfig read_trajectory(const JsonReader& reader, const DeviceConfig& d
 
 const char* to_string(TrajectorySource source) {
   switch (source) {
-    case TrajectorySource::free: return "free";
-    case TrajectorySource::scripted: return "scripted";
-    case TrajectorySource::recorded: return "recorded";
+    case TrajectorySource::free:
+      return "free";
+    case TrajectorySource::scripted:
+      return "scripted";
+    case TrajectorySource::recorded:
+      return "recorded";
   }
   return "?";
 }
@@ -115,8 +119,9 @@ HapticsConfig read_haptics_config(const JsonReader& proxy) {
   proxy.string_or("description", "");  // documentation only, but a string like everywhere else
   HapticsConfig config;
   config.haptic_rate_hz = proxy.number_or("haptic_rate_hz", config.haptic_rate_hz, Interval::positive());
-  config.between_steps =
-      proxy.choice_or("between_steps", "hold", {"hold", "linearised"}) == "hold" ? BetweenSteps::hold : BetweenSteps::linearised;
+  config.between_steps = proxy.choice_or("between_steps", "hold", {"hold", "linearised"}) == "hold"
+                             ? BetweenSteps::hold
+                             : BetweenSteps::linearised;
   config.coupling = read_gains_or(proxy, "coupling", config.coupling);
   if (const auto device = proxy.optional_child("device")) config.device = read_device(*device);
   if (const auto trajectory = proxy.optional_child("trajectory")) {

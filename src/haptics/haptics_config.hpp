@@ -25,8 +25,9 @@ struct SpringDamperGains {
 
 // Device frame -> scene frame: p_scene = offset + scale R p_device, q_scene = R q_device.
 struct WorkspaceConfig {
-  double scale = 1.0;                     // scene metres per device metre [-]
-  std::optional<Eigen::Vector3d> offset;  // scene position of the device origin [m]; unset: the proxy's initial centre of mass
+  double scale = 1.0;  // scene metres per device metre [-]
+  // Scene position of the device origin [m]; unset: the proxy's initial centre of mass.
+  std::optional<Eigen::Vector3d> offset;
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
 };
 
@@ -34,15 +35,15 @@ struct WorkspaceConfig {
 // handle's apparent mass, inertia and damping are not published; the defaults are plausible
 // values for an arm of this size, to be set from a measurement.
 struct DeviceConfig {
-  double mass = 0.4;              // apparent mass of the handle [kg]
-  double inertia = 1e-3;          // apparent rotational inertia of the handle, isotropic [kg m^2]
-  double linear_damping = 2.0;    // [N s/m]
-  double angular_damping = 0.02;  // [N m s/rad]
-  double max_force = 30.0;        // [N]
-  double max_torque = 3.0;        // [N m]
-  double workspace_radius = 0.45; // handle positions within this distance of the device origin [m]
-  double force_scale = 1.0;       // rendered force per coupling force [-]
-  double torque_scale = 1.0;      // rendered torque per coupling torque [-]
+  double mass = 0.4;               // apparent mass of the handle [kg]
+  double inertia = 1e-3;           // apparent rotational inertia of the handle, isotropic [kg m^2]
+  double linear_damping = 2.0;     // [N s/m]
+  double angular_damping = 0.02;   // [N m s/rad]
+  double max_force = 30.0;         // [N]
+  double max_torque = 3.0;         // [N m]
+  double workspace_radius = 0.45;  // handle positions within this distance of the device origin [m]
+  double force_scale = 1.0;        // rendered force per coupling force [-]
+  double torque_scale = 1.0;       // rendered torque per coupling torque [-]
   WorkspaceConfig workspace;
 };
 
@@ -65,10 +66,10 @@ struct Keyframe {
 
 struct TrajectoryConfig {
   TrajectorySource source = TrajectorySource::free;
-  std::vector<Keyframe> keyframes;  // scripted
+  std::vector<Keyframe> keyframes;                // scripted
   SpringDamperGains hand{400.0, 20.0, 5.0, 0.1};  // scripted: the hand holding the handle
-  std::string file;                 // recorded: the file, resolved against the scene's folder
-  DeviceRecording recording;        // recorded: its validated samples
+  std::string file;                               // recorded: the file, resolved against the scene's folder
+  DeviceRecording recording;                      // recorded: its validated samples
 };
 
 struct HapticsConfig {

@@ -45,8 +45,8 @@ HapticsRun::HapticsRun(const Scene& scene, const ParticleSetup& setup, RunLog& l
 }
 
 void HapticsRun::write_results(std::size_t steps, double wall_seconds) {
-  log_.write_summary(metrics_, HapticRunTotals{steps, session_.state_queries(), static_cast<double>(steps) * dt_,
-                                               wall_seconds});
+  log_.write_summary(metrics_,
+                     HapticRunTotals{steps, session_.state_queries(), static_cast<double>(steps) * dt_, wall_seconds});
   if (!record_device_.empty()) write_device_recording(record_device_, recorder_.recording());
 }
 

@@ -131,10 +131,10 @@ void HapticsSession::tick(double t, const ProxyState& proxy) {
   // passive coupling never has a positive total; the sampled spring of a coupling with too
   // little damping (Colgate et al. 1995: B < K T / 2) makes it grow.
   if (!first) {
-    injected_energy_ +=
-        coupling_.force.dot((proxy.pose.position - last_proxy_pose_.position) - (handle.position - last_handle_pose_.position)) +
-        coupling_.torque.dot(turn(last_proxy_pose_.orientation, proxy.pose.orientation) -
-                             turn(last_handle_pose_.orientation, handle.orientation));
+    injected_energy_ += coupling_.force.dot((proxy.pose.position - last_proxy_pose_.position) -
+                                            (handle.position - last_handle_pose_.position)) +
+                        coupling_.torque.dot(turn(last_proxy_pose_.orientation, proxy.pose.orientation) -
+                                             turn(last_handle_pose_.orientation, handle.orientation));
   }
   last_proxy_pose_ = proxy.pose;
   last_handle_pose_ = handle;

@@ -4,7 +4,8 @@
 
 namespace mssph {
 
-PoseTrack::PoseTrack(std::vector<double> time, std::vector<Pose> pose) : time_(std::move(time)), pose_(std::move(pose)) {}
+PoseTrack::PoseTrack(std::vector<double> time, std::vector<Pose> pose)
+    : time_(std::move(time)), pose_(std::move(pose)) {}
 
 PoseTrack::Sample PoseTrack::at(double t) const {
   if (t <= time_.front()) return {pose_.front(), Twist{}};

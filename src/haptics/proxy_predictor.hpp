@@ -26,8 +26,8 @@ ProxyState proxy_state_of(const BodyState& state, double time);
 
 // Mass properties of the proxy, for the local model and the stability check.
 struct ProxyModel {
-  std::size_t body = 0;  // index of the proxy among the backend's bodies
-  double mass = 0.0;     // [kg]
+  std::size_t body = 0;                                        // index of the proxy among the backend's bodies
+  double mass = 0.0;                                           // [kg]
   Eigen::Matrix3d inertia_body = Eigen::Matrix3d::Identity();  // about the centre of mass, body frame [kg m^2]
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();           // [m/s^2]
 };

@@ -9,7 +9,7 @@
 namespace mssph {
 
 struct RawRecording {
-  std::vector<double> time;                // [s]
+  std::vector<double> time;                 // [s]
   std::vector<std::array<double, 7>> pose;  // x, y, z, qx, qy, qz, qw
   // How an error names sample i: "<row_word> <row_number[i]>", e.g. "line 7" in a CSV file
   // (the line an editor shows) or "/device row 6" in an HDF5 file (the index h5py shows).

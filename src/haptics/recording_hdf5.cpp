@@ -46,9 +46,9 @@ void write_dataset(hid_t file, const char* name, const std::vector<double>& valu
                    const std::string& units, const std::string& description) {
   h5::Handle space = h5::dataspace(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
                                    std::string("space of ") + name);
-  h5::Handle set = h5::dataset(
-      H5Dcreate2(file, name, H5T_IEEE_F64LE, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-      std::string("create ") + name);
+  h5::Handle set =
+      h5::dataset(H5Dcreate2(file, name, H5T_IEEE_F64LE, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                  std::string("create ") + name);
   h5::check(H5Dwrite(set.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
             std::string("write ") + name);
   h5::write_attribute(set.id(), "units", units);

@@ -12,10 +12,10 @@
 namespace mssph::test {
 namespace {
 
-constexpr double kDt = 2.5e-4;        // the scenes' step: four steps per haptic tick
-constexpr double kPeriod = 1e-3;      // 1 kHz haptic loop (the default)
-constexpr double kZeta = 0.3;         // damping ratio of the step responses
-constexpr double kOmega = 20.0;       // natural frequency of the step responses [rad/s]
+constexpr double kDt = 2.5e-4;    // the scenes' step: four steps per haptic tick
+constexpr double kPeriod = 1e-3;  // 1 kHz haptic loop (the default)
+constexpr double kZeta = 0.3;     // damping ratio of the step responses
+constexpr double kOmega = 20.0;   // natural frequency of the step responses [rad/s]
 
 // A device held still at `pose`: a one-sample recording (the handle does not move).
 HapticsConfig held_device(const Pose& pose, const SpringDamperGains& gains) {
@@ -36,15 +36,15 @@ double predicted_overshoot(double zeta) { return std::exp(-std::numbers::pi * ze
 void expect_overshoot_of_damping_ratio(double overshoot, double stiffness, double damping, double inertia) {
   const double zeta_held = (damping - 0.5 * stiffness * kPeriod) / (2.0 * std::sqrt(stiffness * inertia));
   ::testing::Test::RecordProperty("overshoot", std::to_string(overshoot));
-  ::testing::Test::RecordProperty("predicted_overshoot_range",
-                                  std::to_string(predicted_overshoot(kZeta)) + " to " + std::to_string(predicted_overshoot(zeta_held)));
+  ::testing::Test::RecordProperty("predicted_overshoot_range", std::to_string(predicted_overshoot(kZeta)) + " to " +
+                                                                   std::to_string(predicted_overshoot(zeta_held)));
   EXPECT_GE(overshoot, 0.99 * predicted_overshoot(kZeta));
   EXPECT_LE(overshoot, 1.01 * predicted_overshoot(zeta_held));
 }
 
 TEST(CouplingStepResponse, ProxyFollowsATranslationStepAndSettlesWithThePredictedOvershoot) {
   const double mass = 1.0;
-  const double stiffness = kOmega * kOmega * mass;               // 400 N/m
+  const double stiffness = kOmega * kOmega * mass;                   // 400 N/m
   const double damping = 2.0 * kZeta * std::sqrt(stiffness * mass);  // 12 N s/m
   const double step = 0.05;
   Pose device;

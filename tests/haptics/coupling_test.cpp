@@ -14,7 +14,9 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-Eigen::Quaterniond about_z(double degrees) { return Eigen::Quaterniond(Eigen::AngleAxisd(degrees * kDegree, Eigen::Vector3d::UnitZ())); }
+Eigen::Quaterniond about_z(double degrees) {
+  return Eigen::Quaterniond(Eigen::AngleAxisd(degrees * kDegree, Eigen::Vector3d::UnitZ()));
+}
 
 TEST(OrientationError, TakesTheShortWayPast180Degrees) {
   // 190 degrees about +z is 170 degrees about -z, whichever sign the quaternion carries.
@@ -56,16 +58,19 @@ TEST(DeviceRendering, RendersTheReactionScaledAndClampedWithItsDirection) {
   const WorkspaceTransform turned(1.0, Eigen::Vector3d::Zero(), about_z(90.0));
   const DeviceModel device(config);
 
-  const RenderedWrench small = device.render(Wrench{Eigen::Vector3d(10.0, 0.0, 0.0), Eigen::Vector3d(0.0, 0.0, 1.0)}, turned);
+  const RenderedWrench small =
+      device.render(Wrench{Eigen::Vector3d(10.0, 0.0, 0.0), Eigen::Vector3d(0.0, 0.0, 1.0)}, turned);
   // -F = (-10, 0, 0) in the scene is (0, 10, 0) in a device frame turned 90 degrees; times 0.5.
   EXPECT_NEAR((small.wrench.force - Eigen::Vector3d(0.0, 5.0, 0.0)).norm(), 0.0, 1e-12);
   EXPECT_NEAR((small.wrench.torque - Eigen::Vector3d(0.0, 0.0, -1.0)).norm(), 0.0, 1e-12);
   EXPECT_FALSE(small.force_saturated);
   EXPECT_FALSE(small.torque_saturated);
 
-  const RenderedWrench big = device.render(Wrench{Eigen::Vector3d(0.0, 60.0, 80.0), Eigen::Vector3d(4.0, 0.0, 3.0)}, turned);
+  const RenderedWrench big =
+      device.render(Wrench{Eigen::Vector3d(0.0, 60.0, 80.0), Eigen::Vector3d(4.0, 0.0, 3.0)}, turned);
   EXPECT_NEAR(big.wrench.force.norm(), 30.0, 1e-12);  // 50 N after scaling, clamped to 30 N
-  EXPECT_NEAR(big.wrench.force.normalized().dot(turned.direction_to_device(Eigen::Vector3d(0.0, -0.6, -0.8))), 1.0, 1e-12);
+  EXPECT_NEAR(big.wrench.force.normalized().dot(turned.direction_to_device(Eigen::Vector3d(0.0, -0.6, -0.8))), 1.0,
+              1e-12);
   EXPECT_NEAR(big.wrench.torque.norm(), 3.0, 1e-12);  // 5 N m clamped to 3 N m
   EXPECT_TRUE(big.force_saturated);
   EXPECT_TRUE(big.torque_saturated);
@@ -105,12 +110,13 @@ TEST(WorkspaceTransform, MapsDevicePosesIntoTheSceneAndBack) {
   EXPECT_NEAR((back.position - device.position).norm(), 0.0, 1e-15);
   EXPECT_NEAR(back.orientation.angularDistance(device.orientation), 0.0, 1e-12);
   const Twist v = map.to_scene(Twist{Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(0.0, 0.0, 1.0)});
-  EXPECT_NEAR((v.linear - Eigen::Vector3d(0.0, 2.0, 0.0)).norm(), 0.0, 1e-15);  // scaled and turned
+  EXPECT_NEAR((v.linear - Eigen::Vector3d(0.0, 2.0, 0.0)).norm(), 0.0, 1e-15);   // scaled and turned
   EXPECT_NEAR((v.angular - Eigen::Vector3d(0.0, 0.0, 1.0)).norm(), 0.0, 1e-15);  // turned only
 }
 
 TEST(PoseTrack, InterpolatesLinearlyAndBySlerpAndHoldsAtTheEnds) {
-  const PoseTrack track({1.0, 2.0}, {Pose{Eigen::Vector3d::Zero(), about_z(0.0)}, Pose{Eigen::Vector3d(0.2, 0.0, 0.0), about_z(90.0)}});
+  const PoseTrack track(
+      {1.0, 2.0}, {Pose{Eigen::Vector3d::Zero(), about_z(0.0)}, Pose{Eigen::Vector3d(0.2, 0.0, 0.0), about_z(90.0)}});
   const PoseTrack::Sample middle = track.at(1.25);
   EXPECT_NEAR(middle.pose.position.x(), 0.05, 1e-15);
   EXPECT_NEAR(middle.pose.orientation.angularDistance(about_z(22.5)), 0.0, 1e-12);
@@ -123,7 +129,8 @@ TEST(PoseTrack, InterpolatesLinearlyAndBySlerpAndHoldsAtTheEnds) {
 }
 
 TEST(PoseTrack, SlerpsTheShortWay) {
-  const PoseTrack track({0.0, 1.0}, {Pose{Eigen::Vector3d::Zero(), about_z(0.0)}, Pose{Eigen::Vector3d::Zero(), about_z(270.0)}});
+  const PoseTrack track({0.0, 1.0},
+                        {Pose{Eigen::Vector3d::Zero(), about_z(0.0)}, Pose{Eigen::Vector3d::Zero(), about_z(270.0)}});
   EXPECT_NEAR(track.at(0.5).pose.orientation.angularDistance(about_z(-45.0)), 0.0, 1e-12);
   EXPECT_NEAR(track.at(0.5).twist.angular.z(), -90.0 * kDegree, 1e-12);
 }

@@ -40,9 +40,15 @@ class HapticScene : public ::testing::Test {
   // Runs configs/<scene>.json at 4 cm spacing for `duration` seconds and reads its log back.
   SceneRun run(const std::string& scene, double duration, std::vector<std::string> extra = {}) {
     const std::string out = (dir_ / (scene + std::to_string(runs_++) + ".h5")).string();
-    std::vector<std::string> args{"run", MSSPH_SOURCE_DIR "/configs/" + scene + ".json", "--out", out, "-q",
-                                  "--set", "simulation/particle_spacing=0.04",
-                                  "--set", "simulation/duration=" + std::to_string(duration)};
+    std::vector<std::string> args{"run",
+                                  MSSPH_SOURCE_DIR "/configs/" + scene + ".json",
+                                  "--out",
+                                  out,
+                                  "-q",
+                                  "--set",
+                                  "simulation/particle_spacing=0.04",
+                                  "--set",
+                                  "simulation/duration=" + std::to_string(duration)};
     for (std::string& e : extra) args.push_back(std::move(e));
     const ProcessResult r = run_mssph(args, dir_.path());
     EXPECT_EQ(r.exit_code, 0) << r.err;
@@ -135,9 +141,8 @@ TEST_F(HapticScene, StirringALiquidIsFeltAsDragAndBuoyancy) {
   // The liquid takes energy from the moving rod: its horizontal force opposes the rod's motion.
   // A drag force points against the velocity (cosine -1); -0.5 leaves room for the pressure
   // noise of a rod one particle across and for its wake.
-  const double power = stir.mean(0.6, 1.0, [&](std::size_t i) {
-    return horizontal(stir.interaction[i]).dot(stir.proxy_velocity[i]);
-  });
+  const double power =
+      stir.mean(0.6, 1.0, [&](std::size_t i) { return horizontal(stir.interaction[i]).dot(stir.proxy_velocity[i]); });
   const double force = stir.mean(0.6, 1.0, [&](std::size_t i) { return horizontal(stir.interaction[i]).norm(); });
   const double speed = stir.mean(0.6, 1.0, [&](std::size_t i) { return horizontal(stir.proxy_velocity[i]).norm(); });
   RecordProperty("drag_power_W", std::to_string(power));

@@ -24,14 +24,15 @@ TEST(RecordedTrajectory, AScriptedRunReplaysWithTheSameDevicePosesInBothFormats)
   TempDir dir;
   const auto at = [&](const char* name) { return (dir / name).string(); };
   // Scripted -> CSV; replaying the CSV -> HDF5; replaying the HDF5 -> CSV again.
-  ProcessResult r = run_mssph({"run", kPoke, "--out", at("scripted.h5"), "--record-device", at("scripted.csv"), "-q"}, dir.path());
+  ProcessResult r =
+      run_mssph({"run", kPoke, "--out", at("scripted.h5"), "--record-device", at("scripted.csv"), "-q"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   r = run_mssph({"run", kPoke, "--out", at("replay.h5"), "--set", replaying(at("scripted.csv")), "--record-device",
                  at("replayed.h5"), "-q"},
                 dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  r = run_mssph({"run", kPoke, "--out", at("replay_again.h5"), "--set", replaying(at("replayed.h5")),
-                 "--record-device", at("replayed_again.csv"), "-q"},
+  r = run_mssph({"run", kPoke, "--out", at("replay_again.h5"), "--set", replaying(at("replayed.h5")), "--record-device",
+                 at("replayed_again.csv"), "-q"},
                 dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
 
@@ -63,7 +64,8 @@ TEST(RecordedTrajectory, ABadFileStopsTheRunWithExitCode2NamingFileAndRow) {
   TempDir dir;
   const std::string bad = (dir / "hand.csv").string();
   std::ofstream(bad) << "t,x,y,z,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n0.001,0,0,0,0,0,0,1\n0.001,0,0,0.01,0,0,0,1\n";
-  const ProcessResult r = run_mssph({"run", kPoke, "--out", (dir / "run.h5").string(), "--set", replaying(bad)}, dir.path());
+  const ProcessResult r =
+      run_mssph({"run", kPoke, "--out", (dir / "run.h5").string(), "--set", replaying(bad)}, dir.path());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, ::testing::HasSubstr(bad + ": line 4: t = 0.001 s is not after the previous sample's"));
   EXPECT_FALSE(std::filesystem::exists(dir / "run.h5")) << "rejected before any output";
@@ -71,7 +73,8 @@ TEST(RecordedTrajectory, ABadFileStopsTheRunWithExitCode2NamingFileAndRow) {
 
 TEST(RecordDevice, NeedsAProxyAndAKnownFormat) {
   TempDir dir;
-  ProcessResult r = run_mssph({"run", kPoke, "--out", (dir / "run.h5").string(), "--record-device", "poses.txt"}, dir.path());
+  ProcessResult r =
+      run_mssph({"run", kPoke, "--out", (dir / "run.h5").string(), "--record-device", "poses.txt"}, dir.path());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, ::testing::HasSubstr("poses.txt: unknown device recording format \".txt\""));
 

@@ -54,7 +54,8 @@ TEST(HapticsConfig, ReadsEveryKey) {
     "coupling": {"linear_stiffness": 800, "linear_damping": 5, "angular_stiffness": 2, "angular_damping": 0.05},
     "device": {"mass": 0.3, "inertia": 0.002, "linear_damping": 1, "angular_damping": 0.01, "max_force": 20,
                "max_torque": 2, "workspace_radius": 0.3, "force_scale": 0.5, "torque_scale": 0.25,
-               "workspace": {"scale": 2, "offset": [0, 0, 0.4], "rotation": [0, 0, 0.7071067811865476, 0.7071067811865476]}},
+               "workspace": {"scale": 2, "offset": [0, 0, 0.4],
+                             "rotation": [0, 0, 0.7071067811865476, 0.7071067811865476]}},
     "trajectory": {"source": "scripted", "hand": {"linear_stiffness": 300},
                    "keyframes": [{"time": 0, "position": [0, 0, 0]},
                                  {"time": 0.5, "position": [0.1, 0, 0], "orientation": [0, 0, 1, 0]},
@@ -70,8 +71,8 @@ TEST(HapticsConfig, ReadsEveryKey) {
   EXPECT_EQ(c.trajectory.hand.linear_stiffness, 300.0);
   EXPECT_EQ(c.trajectory.hand.linear_damping, HapticsConfig{}.trajectory.hand.linear_damping);  // default kept
   // A keyframe without an orientation keeps the previous one's.
-  EXPECT_NEAR(c.trajectory.keyframes[2].pose.orientation.angularDistance(c.trajectory.keyframes[1].pose.orientation), 0.0,
-              1e-15);
+  EXPECT_NEAR(c.trajectory.keyframes[2].pose.orientation.angularDistance(c.trajectory.keyframes[1].pose.orientation),
+              0.0, 1e-15);
 }
 
 TEST(HapticsConfig, ErrorsNameThePathAndWhatWasExpected) {
@@ -106,7 +107,8 @@ TEST(HapticsConfig, ErrorsNameThePathAndWhatWasExpected) {
 
 TEST(HapticsConfig, RecordedFilesResolveAgainstTheSceneFolderAndAreValidatedAtLoad) {
   TempDir dir;
-  DeviceRecording recording{{0.0, 0.001}, {Pose{}, Pose{Eigen::Vector3d(0.01, 0.0, 0.0), Eigen::Quaterniond::Identity()}}};
+  DeviceRecording recording{{0.0, 0.001},
+                            {Pose{}, Pose{Eigen::Vector3d(0.01, 0.0, 0.0), Eigen::Quaterniond::Identity()}}};
   write_device_recording((dir / "hand.csv").string(), recording);
   const nlohmann::json proxy = {{"body", "probe"}, {"trajectory", {{"source", "recorded"}, {"file", "hand.csv"}}}};
   const HapticsConfig c = parse(proxy, (dir / "scene.json").string());

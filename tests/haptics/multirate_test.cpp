@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 
 namespace mssph::test {
 namespace {
@@ -25,6 +26,9 @@ struct LoopCase {
   double dt;
   const char* name;
 };
+
+// Names the case in test listings (ctest shows parameters).
+void PrintTo(const LoopCase& c, std::ostream* out) { *out << c.name << " (dt = " << c.dt << " s)"; }
 
 class HapticLoopAtStep : public ::testing::TestWithParam<LoopCase> {};
 

@@ -26,14 +26,19 @@ HapticsConfig five_second_script(const SpringDamperGains& coupling) {
   config.coupling = coupling;
   config.trajectory.source = TrajectorySource::scripted;
   const auto turn = [](double degrees) {
-    return Eigen::Quaterniond(Eigen::AngleAxisd(degrees * std::numbers::pi / 180.0, Eigen::Vector3d(0.3, 0.2, 1.0).normalized()));
+    return Eigen::Quaterniond(
+        Eigen::AngleAxisd(degrees * std::numbers::pi / 180.0, Eigen::Vector3d(0.3, 0.2, 1.0).normalized()));
   };
-  config.trajectory.keyframes = {
-      {0.0, Pose{Eigen::Vector3d::Zero(), turn(0)}},       {0.6, Pose{Eigen::Vector3d(0.1, 0.0, 0.0), turn(30)}},
-      {1.0, Pose{Eigen::Vector3d(0.1, 0.0, -0.08), turn(30)}}, {1.5, Pose{Eigen::Vector3d(0.1, 0.0, -0.08), turn(-20)}},
-      {1.8, Pose{Eigen::Vector3d(0.1, 0.05, 0.0), turn(-20)}}, {2.2, Pose{Eigen::Vector3d(0.0, 0.05, -0.08), turn(60)}},
-      {2.4, Pose{Eigen::Vector3d(0.0, 0.05, 0.02), turn(0)}},  {3.5, Pose{Eigen::Vector3d(-0.1, -0.1, 0.0), turn(-45)}},
-      {4.0, Pose{Eigen::Vector3d(-0.1, -0.1, -0.08), turn(-45)}}, {4.5, Pose{Eigen::Vector3d::Zero(), turn(0)}}};
+  config.trajectory.keyframes = {{0.0, Pose{Eigen::Vector3d::Zero(), turn(0)}},
+                                 {0.6, Pose{Eigen::Vector3d(0.1, 0.0, 0.0), turn(30)}},
+                                 {1.0, Pose{Eigen::Vector3d(0.1, 0.0, -0.08), turn(30)}},
+                                 {1.5, Pose{Eigen::Vector3d(0.1, 0.0, -0.08), turn(-20)}},
+                                 {1.8, Pose{Eigen::Vector3d(0.1, 0.05, 0.0), turn(-20)}},
+                                 {2.2, Pose{Eigen::Vector3d(0.0, 0.05, -0.08), turn(60)}},
+                                 {2.4, Pose{Eigen::Vector3d(0.0, 0.05, 0.02), turn(0)}},
+                                 {3.5, Pose{Eigen::Vector3d(-0.1, -0.1, 0.0), turn(-45)}},
+                                 {4.0, Pose{Eigen::Vector3d(-0.1, -0.1, -0.08), turn(-45)}},
+                                 {4.5, Pose{Eigen::Vector3d::Zero(), turn(0)}}};
   return config;
 }
 
@@ -61,7 +66,7 @@ TEST(CouplingPassivity, StableGainsInjectNoEnergyOverAFiveSecondScript) {
   }
   RecordProperty("max_injected_energy_J", std::to_string(most));
   RecordProperty("final_injected_energy_J", std::to_string(samples.back().injected_energy));
-  EXPECT_LE(most, 0.0);                          // at every tick, not only at the end
+  EXPECT_LE(most, 0.0);  // at every tick, not only at the end
   EXPECT_LE(samples.back().injected_energy, 0.0);
   EXPECT_LT(samples.back().injected_energy, -0.1);  // it did dissipate: tens of newtons over centimetres
   EXPECT_LT(deepest, -0.05);                        // the taps reached the floor
@@ -72,15 +77,16 @@ TEST(CouplingPassivity, GainsBeyondTheBoundAreReportedAndInjectEnergy) {
   // Kt h^2 + 2 Bt h = 5e6 * 1e-6 + 0.02 = 5.02 > 4 m = 4 with h = 1 ms (the wrench is held a tick).
   const SpringDamperGains gains{5e6, 10.0, 10.0, 0.1};
   const HapticsConfig config = five_second_script(gains);
-  const std::vector<std::string> warnings = coupling_stability_warnings(config, "probe", proxy_model(kMass, kInertia), kDt);
+  const std::vector<std::string> warnings =
+      coupling_stability_warnings(config, "probe", proxy_model(kMass, kInertia), kDt);
   EXPECT_THAT(warnings, ::testing::Contains(::testing::AllOf(::testing::HasSubstr("probe"),
                                                              ::testing::HasSubstr("translational coupling"),
                                                              ::testing::HasSubstr("K h^2 + 2 B h < 4 m"))));
 
   RigidBodyDouble body = proxy_over_floor();
   // Stop at 1 J: a passive coupling never gets above 0, and the growth is exponential.
-  const auto samples =
-      run_session(config, body, kMass, kInertia, kDt, 5.0, [](const HapticSample& s) { return s.injected_energy > 1.0; });
+  const auto samples = run_session(config, body, kMass, kInertia, kDt, 5.0,
+                                   [](const HapticSample& s) { return s.injected_energy > 1.0; });
   RecordProperty("time_to_1J_s", std::to_string(samples.back().time));
   EXPECT_GT(samples.back().injected_energy, 1.0);
   EXPECT_LT(samples.back().time, 1.0);  // within the first second

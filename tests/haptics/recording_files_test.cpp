@@ -10,6 +10,7 @@
 
 #include <fstream>
 #include <limits>
+#include <ostream>
 
 namespace mssph::test {
 namespace {
@@ -38,10 +39,13 @@ const std::string kGood = "0,0,0,0,0,0,0,1\n";
 
 struct Malformed {
   const char* name;
-  std::string content;   // CSV text
-  const char* row;       // how the error names the row
-  const char* problem;   // what it says is wrong
+  std::string content;  // CSV text
+  const char* row;      // how the error names the row
+  const char* problem;  // what it says is wrong
 };
+
+// Names the case in test listings (ctest shows parameters).
+void PrintTo(const Malformed& m, std::ostream* out) { *out << m.name; }
 
 class MalformedCsv : public ::testing::TestWithParam<Malformed> {};
 
@@ -67,15 +71,18 @@ INSTANTIATE_TEST_SUITE_P(
         Malformed{"NotANumber", kHeader + "0,abc,0,0,0,0,0,1\n", "line 2", "column x: expected a number, got \"abc\""},
         Malformed{"EmptyField", kHeader + "0,0,,0,0,0,0,1\n", "line 2", "column y: expected a number"},
         Malformed{"NaN", kHeader + kGood + "0.001,0,0,0,0,nan,0,1\n", "line 3", "column qy: expected a finite number"},
-        Malformed{"Infinite", kHeader + kGood + kGood + "0.002,inf,0,0,0,0,0,1\n", "line 4", "column x: expected a finite"},
+        Malformed{"Infinite", kHeader + kGood + kGood + "0.002,inf,0,0,0,0,0,1\n", "line 4",
+                  "column x: expected a finite"},
         Malformed{"DuplicateTime", kHeader + kGood + "0.001,0,0,0,0,0,0,1\n0.001,0,0,0,0,0,0,1\n", "line 4",
                   "duplicate time"},
-        Malformed{"TimeGoesBack", kHeader + kGood + "0.002,0,0,0,0,0,0,1\n0.001,0,0,0,0,0,0,1\n", "line 4", "out of order"},
+        Malformed{"TimeGoesBack", kHeader + kGood + "0.002,0,0,0,0,0,0,1\n0.001,0,0,0,0,0,0,1\n", "line 4",
+                  "out of order"},
         Malformed{"NonUnitQuaternion", kHeader + kGood + "0.001,0,0,0,0,0,0,0.9\n", "line 3", "has norm 0.9"},
         Malformed{"ZeroQuaternion", kHeader + "0,0,0,0,0,0,0,0\n", "line 2", "has norm 0"},
         Malformed{"OutsideWorkspace", kHeader + kGood + "0.001,0.3,0.3,0.2,0,0,0,1\n", "line 3",
                   "outside the workspace radius 0.45 m"},
-        Malformed{"LineNumbersCountBlankLines", kHeader + kGood + "\n" + "0.001,0,0,0,0,0,0,2\n", "line 4", "has norm 2"},
+        Malformed{"LineNumbersCountBlankLines", kHeader + kGood + "\n" + "0.001,0,0,0,0,0,0,2\n", "line 4",
+                  "has norm 2"},
         Malformed{"EmptyFile", "", "empty file", "expected a header t,x,y,z,qx,qy,qz,qw"},
         Malformed{"HeaderOnly", kHeader, "the device recording holds no sample", "no sample"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
@@ -102,7 +109,12 @@ TEST(MalformedHdf5, EachProblemIsRejectedWithItsFileAndRowNamed) {
       {"no_pose", {0, 1, 2}, {}, 7, false, "missing dataset /device/pose"},
       {"six_columns", {0, 1, 2}, std::vector<double>(18, 0.0), 6, true, "/device/pose: expected shape [3, 7]"},
       {"nan", {0, 1, 2}, with_nan, 7, true, "/device row 2: column qz is not a finite number"},
-      {"duplicate_time", {0, 1, 1}, unit_rows, 7, true, "/device row 2: t = 1 s is not after the previous sample's t = 1 s"},
+      {"duplicate_time",
+       {0, 1, 1},
+       unit_rows,
+       7,
+       true,
+       "/device row 2: t = 1 s is not after the previous sample's t = 1 s"},
       {"backwards_time", {0, 2, 1}, unit_rows, 7, true, "/device row 2: t = 1 s is not after"},
       {"outside", {0, 1, 2}, outside, 7, true, "/device row 1: position (0, 0, -0.5) m"},
       {"not_unit", {0, 1, 2}, stretched, 7, true, "/device row 2: quaternion (qx, qy, qz, qw) has norm 1.01"},
@@ -136,8 +148,9 @@ TEST(DeviceRecordingFiles, BothFormatsRoundTripExactly) {
   for (int i = 0; i < 50; ++i) {
     const double t = 1e-3 * i;
     recording.time.push_back(t);
-    recording.pose.push_back(Pose{Eigen::Vector3d(0.1 * std::sin(7.0 * t), -0.3 * t, 1.0 / 3.0),
-                                  Eigen::Quaterniond(Eigen::AngleAxisd(3.0 * t, Eigen::Vector3d(1, 2, 3).normalized()))});
+    recording.pose.push_back(
+        Pose{Eigen::Vector3d(0.1 * std::sin(7.0 * t), -0.3 * t, 1.0 / 3.0),
+             Eigen::Quaterniond(Eigen::AngleAxisd(3.0 * t, Eigen::Vector3d(1, 2, 3).normalized()))});
   }
   for (const char* name : {"trajectory.csv", "trajectory.h5"}) {
     write_device_recording((dir / name).string(), recording);

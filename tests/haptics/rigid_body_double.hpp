@@ -24,9 +24,9 @@ class RigidBodyDouble final : public Backend {
   Pose pose;
   Twist twist;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
-  std::optional<Floor> floor;       // the body's centre of mass touches it
-  std::size_t state_queries = 0;    // rigid_body_state calls
-  std::size_t wrench_updates = 0;   // set_external_wrench calls
+  std::optional<Floor> floor;                                 // the body's centre of mass touches it
+  std::size_t state_queries = 0;                              // rigid_body_state calls
+  std::size_t wrench_updates = 0;                             // set_external_wrench calls
   Eigen::Vector3d applied_impulse = Eigen::Vector3d::Zero();  // sum of external force * dt [N s]
 
   BackendInfo info() const override { return {"rigid-body double", "host", "float64"}; }
