@@ -136,21 +136,28 @@ MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, std::ui
   leapfrog(c.position[i], c.velocity[i], total, body.sph_mass, c.fixed[i] != 0, v.step);
 }
 
-// ---- The grid's last stage ----
+// ---- The grid's last stages, after the keys are sorted ----
 
-// For sorted particle s (after the keys are sorted): fills cell_start for the keys from its
-// predecessor's (exclusive) to its own (inclusive), the last particle also to the table's end, and
-// copies its position (with its body index) and velocity into cell order.
-MSSPH_HD void place_in_cell_order(std::uint32_t s, std::uint32_t n, std::uint32_t cells, const std::uint32_t* sorted_keys,
-                                  const std::uint32_t* sorted_id, const Vec4* position, const Vec4* velocity,
-                                  const std::uint32_t* body, Vec4* sorted_position, Vec4* sorted_velocity,
-                                  std::uint32_t* cell_start) {
-  const std::uint32_t key = sorted_keys[s];
-  const std::uint32_t first = s == 0 ? 0u : sorted_keys[s - 1] + 1u;
-  for (std::uint32_t k = first; k <= key; ++k) cell_start[k] = s;
-  if (s + 1 == n) {
-    for (std::uint32_t k = key + 1; k <= cells; ++k) cell_start[k] = n;
+// cell_start[k]: the first sorted particle whose key is not below k (binary search), for every
+// k in [0, cell count]: one independent search per cell, so all cells fill at once.
+MSSPH_HD std::uint32_t first_key_at_least(const std::uint32_t* sorted_keys, std::uint32_t n, std::uint32_t k) {
+  std::uint32_t lo = 0;
+  std::uint32_t hi = n;
+  while (lo < hi) {
+    const std::uint32_t mid = lo + (hi - lo) / 2;
+    if (sorted_keys[mid] < k) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
   }
+  return lo;
+}
+
+// Copies sorted particle s's position (with its body index) and velocity into cell order.
+MSSPH_HD void place_in_cell_order(std::uint32_t s, const std::uint32_t* sorted_id, const Vec4* position,
+                                  const Vec4* velocity, const std::uint32_t* body, Vec4* sorted_position,
+                                  Vec4* sorted_velocity) {
   const std::uint32_t i = sorted_id[s];
   sorted_position[s] = make_vec4(xyz(position[i]), body_as_float(body[i]));
   sorted_velocity[s] = velocity[i];

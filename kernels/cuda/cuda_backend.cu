@@ -30,61 +30,71 @@ __global__ void identity_kernel(std::uint32_t n, std::uint32_t* values) {
   if (i < n) values[i] = i;
 }
 
-__global__ void cell_order_kernel(std::uint32_t n, std::uint32_t cells, const std::uint32_t* sorted_keys,
-                                  const std::uint32_t* sorted_id, const Vec4* position, const Vec4* velocity,
-                                  const std::uint32_t* body, Vec4* sorted_position, Vec4* sorted_velocity,
+__global__ void cell_start_kernel(const std::uint32_t* sorted_keys, std::uint32_t n, std::uint32_t cells,
                                   std::uint32_t* cell_start) {
+  const std::uint32_t k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k <= cells) cell_start[k] = first_key_at_least(sorted_keys, n, k);
+}
+
+__global__ void cell_order_kernel(std::uint32_t n, const std::uint32_t* sorted_id, const Vec4* position,
+                                  const Vec4* velocity, const std::uint32_t* body, Vec4* sorted_position,
+                                  Vec4* sorted_velocity) {
   const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
-  if (s < n) {
-    place_in_cell_order(s, n, cells, sorted_keys, sorted_id, position, velocity, body, sorted_position, sorted_velocity,
-                        cell_start);
-  }
+  if (s < n) place_in_cell_order(s, sorted_id, position, velocity, body, sorted_position, sorted_velocity);
 }
 
-// The neighbour sums give each particle a team of kLanes consecutive lanes of a warp: lanes 0, 1
-// and 2 each sum one z-layer of the 27 cells around it (lane 3 idles), then the team adds the
-// partial sums by shuffles in a fixed order. A thread per particle would walk ~200 candidates one
-// dependent load after another; a team has three walks in flight, and three times as many warps
-// hide the memory latency of small scenes.
-constexpr unsigned kLanes = 4;
-
+// The neighbour sums give each particle a team of Lanes consecutive lanes of a warp (1, or 4 for
+// small scenes): the lanes share the three z-layers of the 27 cells around it (with 4 lanes, one
+// layer each and lane 3 idles), then add their partial sums by shuffles in a fixed order. One
+// thread per particle walks ~200 candidates one dependent load after another; when the scene is
+// too small to fill the GPU, teams keep three walks in flight per particle and hide the memory
+// latency. Scenes that fill the GPU use single lanes, which waste nothing.
+template <unsigned Lanes>
 __device__ float team_sum(float x) {
-  x += __shfl_xor_sync(0xffffffffu, x, 1);
-  return x + __shfl_xor_sync(0xffffffffu, x, 2);
+  for (unsigned offset = 1; offset < Lanes; offset *= 2) x += __shfl_xor_sync(0xffffffffu, x, offset);
+  return x;
 }
-__device__ Vec3 team_sum(Vec3 v) { return {team_sum(v.x), team_sum(v.y), team_sum(v.z)}; }
+template <unsigned Lanes>
+__device__ Vec3 team_sum(Vec3 v) {
+  return {team_sum<Lanes>(v.x), team_sum<Lanes>(v.y), team_sum<Lanes>(v.z)};
+}
 
+template <unsigned Lanes, class Visit>
+__device__ void visit_team_layers(const SortedView& view, Vec3 x, unsigned lane, Visit&& visit) {
+  for (unsigned layer = lane; layer < 3; layer += Lanes) view.grid.for_each_candidate_in_layer(x, static_cast<int>(layer) - 1, visit);
+}
+
+template <unsigned Lanes>
 __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure) {
   const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
-  const std::uint32_t s = thread / kLanes;
-  const unsigned lane = thread % kLanes;
+  const std::uint32_t s = thread / Lanes;
+  const unsigned lane = thread % Lanes;
   const bool active = s < view.step.particle_count;
   DensitySum sum{0.0f};
-  if (active && lane < 3) {
+  if (active) {
     const Vec3 x_i = xyz(view.position[s]);
-    view.grid.for_each_candidate_in_layer(x_i, static_cast<int>(lane) - 1,
-                                          [&](std::uint32_t t) { add_density_pair(sum, view, x_i, t); });
+    visit_team_layers<Lanes>(view, x_i, lane, [&](std::uint32_t t) { add_density_pair(sum, view, x_i, t); });
   }
-  sum.delta = team_sum(sum.delta);
+  sum.delta = team_sum<Lanes>(sum.delta);
   if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s).volume_pressure;
 }
 
+template <unsigned Lanes>
 __global__ void forces_kernel(SortedView view, CanonicalState state) {
   const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
-  const std::uint32_t s = thread / kLanes;
-  const unsigned lane = thread % kLanes;
+  const std::uint32_t s = thread / Lanes;
+  const unsigned lane = thread % Lanes;
   const bool active = s < view.step.particle_count;
   ForceSum sum = zero_force_sum();
-  if (active && lane < 3) {
+  if (active) {
     const ForceParticle i = load_force_particle(view, s);
-    if (receives_forces(i)) {
-      view.grid.for_each_candidate_in_layer(i.x, static_cast<int>(lane) - 1,
-                                            [&](std::uint32_t t) { add_force_pair(sum, i, view, t); });
-    }
+    if (receives_forces(i)) visit_team_layers<Lanes>(view, i.x, lane, [&](std::uint32_t t) { add_force_pair(sum, i, view, t); });
   }
-  sum = {team_sum(sum.pressure), team_sum(sum.viscosity), team_sum(sum.interaction)};
+  sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction)};
   if (active && lane == 0) apply_forces(view, state, s, sum);
 }
+
+constexpr unsigned kTeamLanes = 4;
 
 struct WrenchSum {
   __device__ Wrench operator()(const Wrench& a, const Wrench& b) const { return a + b; }
@@ -239,6 +249,7 @@ class CudaBackend final : public Backend {
   cudaGraph_t graph_ = nullptr;
   cudaGraphExec_t graph_exec_ = nullptr;
   std::array<cudaEvent_t, kPhaseCount + 1> events_{};
+  bool small_scene_ = false;  // too few particles to fill the GPU with one thread each
   double time_ = 0.0;
   bool stepped_ = false;
 };
@@ -265,7 +276,7 @@ void require_usable_device(std::string& name) {
   cuda_check(cudaGetDeviceProperties(&properties, 0), "read device properties");
   name = properties.name;
   cudaFuncAttributes attributes{};
-  const cudaError_t image = cudaFuncGetAttributes(&attributes, density_kernel);
+  const cudaError_t image = cudaFuncGetAttributes(&attributes, density_kernel<1>);
   if (image != cudaSuccess) {
     cudaGetLastError();  // clear the sticky error of the failed query
     throw InputError("--backend cuda: the GPU " + name + " (compute capability " + std::to_string(properties.major) +
@@ -353,6 +364,12 @@ CudaBackend::CudaBackend(ParticleSetup setup)
   }
   external_wrench_.resize(scene_.rigid_bodies.size());
 
+  cudaDeviceProp properties{};
+  cuda_check(cudaGetDeviceProperties(&properties, 0), "read device properties");
+  const std::size_t resident_threads =
+      static_cast<std::size_t>(properties.multiProcessorCount) * static_cast<std::size_t>(properties.maxThreadsPerMultiProcessor);
+  small_scene_ = std::size_t{n_} * kTeamLanes <= 2 * resident_threads;
+
   cuda_check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "create stream");
   for (cudaEvent_t& e : events_) cuda_check(cudaEventCreate(&e), "create event");
   identity_kernel<<<blocks_for(n_), kBlock, 0, stream_>>>(n_, identity_.data());
@@ -405,14 +422,22 @@ void CudaBackend::record_step(cudaStream_t stream) {
   cuda_check(cub::DeviceRadixSort::SortPairs(sort_storage_.data(), sort_storage_bytes_, keys_.data(), sorted_keys_.data(),
                                              identity_.data(), sorted_id_.data(), n_, 0, bits, stream),
              "radix sort");
-  cell_order_kernel<<<blocks, kBlock, 0, stream>>>(n_, scene_.grid.cell_count(), sorted_keys_.data(), sorted_id_.data(),
-                                                   position_.data(), velocity_.data(), body_.data(),
-                                                   sorted_position_.data(), sorted_velocity_.data(), cell_start_.data());
+  cell_start_kernel<<<blocks_for(std::size_t{scene_.grid.cell_count()} + 1), kBlock, 0, stream>>>(
+      sorted_keys_.data(), n_, scene_.grid.cell_count(), cell_start_.data());
+  cell_order_kernel<<<blocks, kBlock, 0, stream>>>(n_, sorted_id_.data(), position_.data(), velocity_.data(),
+                                                   body_.data(), sorted_position_.data(), sorted_velocity_.data());
   mark(1);
-  const unsigned team_blocks = blocks_for(std::size_t{n_} * kLanes);
-  density_kernel<<<team_blocks, kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
+  if (small_scene_) {
+    density_kernel<kTeamLanes><<<blocks_for(std::size_t{n_} * kTeamLanes), kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
+  } else {
+    density_kernel<1><<<blocks, kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
+  }
   mark(2);
-  forces_kernel<<<team_blocks, kBlock, 0, stream>>>(sorted_view(), canonical_state());
+  if (small_scene_) {
+    forces_kernel<kTeamLanes><<<blocks_for(std::size_t{n_} * kTeamLanes), kBlock, 0, stream>>>(sorted_view(), canonical_state());
+  } else {
+    forces_kernel<1><<<blocks, kBlock, 0, stream>>>(sorted_view(), canonical_state());
+  }
   mark(3);
   if (!scene_.rigid_bodies.empty()) {
     const auto chunks = static_cast<unsigned>(rigid_chunks_.size());

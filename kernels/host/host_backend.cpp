@@ -83,10 +83,11 @@ void HostBackend::build_grid() {
   }
   const auto count = static_cast<std::uint32_t>(n);
 #pragma omp parallel for schedule(static)
+  for (std::uint32_t k = 0; k <= cells; ++k) cell_start_[k] = first_key_at_least(sorted_key_.data(), count, k);
+#pragma omp parallel for schedule(static)
   for (std::uint32_t s = 0; s < count; ++s) {
-    place_in_cell_order(s, count, cells, sorted_key_.data(), sorted_id_.data(), scene_.position.data(),
-                        scene_.velocity.data(), scene_.body.data(), sorted_position_.data(), sorted_velocity_.data(),
-                        cell_start_.data());
+    place_in_cell_order(s, sorted_id_.data(), scene_.position.data(), scene_.velocity.data(), scene_.body.data(),
+                        sorted_position_.data(), sorted_velocity_.data());
   }
 }
 
