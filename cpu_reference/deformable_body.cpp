@@ -6,13 +6,6 @@
 #include <Eigen/SVD>
 
 namespace mssph::reference {
-namespace {
-
-bool is_deformable(const ParticleSetup& setup, std::size_t i) {
-  return setup.bodies[setup.body[i]].kind == BodyKind::deformable;
-}
-
-}  // namespace
 
 Eigen::Matrix3d kernel_gradient_correction(const Eigen::Matrix3d& b) {
   // Below this relative singular value a direction is unsampled: inverting it would amplify

@@ -35,6 +35,10 @@ struct DeformableRestState {
   std::vector<LameParameters> lame;  // per particle, from its body's material
 };
 
+inline bool is_deformable(const ParticleSetup& setup, std::size_t i) {
+  return setup.bodies[setup.body[i]].kind == BodyKind::deformable;
+}
+
 // Builds the rest state from the initial particles. O(N) through the grid neighbour search.
 DeformableRestState build_deformable_rest_state(const ParticleSetup& setup);
 

@@ -4,13 +4,6 @@
 #include "elasticity.hpp"
 
 namespace mssph::reference {
-namespace {
-
-bool is_deformable(const ParticleSetup& setup, std::size_t i) {
-  return setup.bodies[setup.body[i]].kind == BodyKind::deformable;
-}
-
-}  // namespace
 
 void compute_rotations(const ParticleSetup& setup, const DeformableRestState& rest,
                        const std::vector<Eigen::Vector3d>& positions, DeformableState& state) {

@@ -9,7 +9,7 @@ void compute_zero_energy_forces(const ParticleSetup& setup, const DeformableRest
   for (std::size_t i = 0; i < n; ++i) {
     const Material& material = setup.bodies[setup.body[i]].material;
     Eigen::Vector3d force = Eigen::Vector3d::Zero();
-    if (setup.bodies[setup.body[i]].kind == BodyKind::deformable && material.zero_energy_stiffness > 0.0) {
+    if (is_deformable(setup, i) && material.zero_energy_stiffness > 0.0) {
       const Eigen::Matrix3d world_f_i =
           state.rotation[i] * (Eigen::Matrix3d::Identity() + state.displacement_gradient[i]);
       for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
