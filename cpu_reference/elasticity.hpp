@@ -34,7 +34,8 @@ inline Eigen::Vector3d rotated_displacement(const Eigen::Matrix3d& rotation_i, c
 }
 
 // One neighbour's term of the displacement gradient, paper eq. 4: grad u_i = sum_j u_ji (x) d_ij.
-// (The paper writes V_j u_ji grad W_ij^T; V0_j sits in d_ij here.)
+// The paper prints the volume as V0_i; the SPH quadrature weight of neighbour j is its own volume
+// V0_j (Becker et al. 2009), which sits in d_ij here. The two agree inside a regular lattice.
 inline Eigen::Matrix3d displacement_gradient_term(const Eigen::Vector3d& u_ji, const Eigen::Vector3d& d_ij) {
   return u_ji * d_ij.transpose();
 }
