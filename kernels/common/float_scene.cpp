@@ -1,5 +1,9 @@
 #include "float_scene.hpp"
 
+#include "deformable_body.hpp"
+#include "sim/stability.hpp"
+#include "util/errors.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -24,6 +28,50 @@ BodyKindCode kind_code(BodyKind kind) {
 }
 
 Eigen::Vector3d to_eigen(const double v[3]) { return {v[0], v[1], v[2]}; }
+
+// The rest bonds, volumes and corrections of deformable bodies, computed once in double by the
+// reference's rest-state builder, so every backend starts from the same rest configuration.
+void add_deformable_bodies(const ParticleSetup& setup, FloatScene& scene) {
+  bool any = false;
+  for (const BodySetup& b : setup.bodies) any = any || b.kind == BodyKind::deformable;
+  if (!any) return;
+  const reference::DeformableRestState rest = reference::build_deformable_rest_state(setup);
+  for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
+    const BodySetup& body = setup.bodies[b];
+    if (body.kind != BodyKind::deformable) continue;
+    const Material& m = body.material;
+    if (m.damping > 0.0 && body.fixed_count == 0) {
+      throw InputError("body \"" + body.name +
+                       "\": damping of a deformable body that no fixed region holds is available in the reference "
+                       "backend only (use --backend reference, or hold the body with fixed_regions)");
+    }
+    ElasticParameters p{};
+    p.first_particle = static_cast<std::uint32_t>(body.first);
+    p.first_deformable = static_cast<std::uint32_t>(scene.deformable_body.size());
+    p.strain = m.strain == StrainMeasure::cauchy ? kCauchy : kGreenSaintVenant;
+    p.lambda = static_cast<float>(lame_lambda(m));
+    p.mu = static_cast<float>(lame_mu(m));
+    p.young_modulus = static_cast<float>(m.young_modulus);
+    p.zero_energy_stiffness = static_cast<float>(m.zero_energy_stiffness);
+    p.damping = static_cast<float>(m.damping);
+    p.particle_mass = static_cast<float>(m.rest_density * setup.spacing * setup.spacing * setup.spacing);
+    const auto index = static_cast<std::uint32_t>(scene.elastic_bodies.size());
+    scene.elastic_bodies.push_back(p);
+    for (std::size_t i = body.first; i < body.first + body.count; ++i) {
+      scene.deformable_body.push_back(index);
+      scene.bond_start.push_back(static_cast<std::uint32_t>(scene.bonds.size()));
+      scene.rest_volume.push_back(static_cast<float>(rest.volume[i]));
+      for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
+        const reference::RestBond& bond = rest.bonds[k];
+        const auto j = static_cast<std::uint32_t>(rest.neighbours.indices[k]);
+        scene.bonds.push_back(RestBond{make_vec4(to_vec3(bond.offset), static_cast<float>(bond.moment_weight)),
+                                       make_vec4(to_vec3(bond.d_ij), static_cast<float>(bond.kernel)),
+                                       make_vec4(to_vec3(bond.d_ji), index_as_float_bits(j))});
+      }
+    }
+  }
+  scene.bond_start.push_back(static_cast<std::uint32_t>(scene.bonds.size()));
+}
 
 }  // namespace
 
@@ -103,6 +151,7 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
     scene.fixed.push_back(setup.fixed[i]);
   }
   scene.grid = choose_grid_shape(scene.position, setup.smoothing_length);
+  add_deformable_bodies(setup, scene);
   return scene;
 }
 

@@ -4,6 +4,7 @@
 // mssph::BodyState.
 #include "body_sums.hpp"
 #include "cell_grid.hpp"
+#include "elastic_physics.hpp"
 #include "particle_views.hpp"
 #include "rigid_physics.hpp"
 #include "scene/particle_setup.hpp"
@@ -24,8 +25,18 @@ struct FloatScene {
   std::vector<Vec4> rest_offset;  // rigid particles: offset from the centre of mass, body frame
   std::vector<std::uint32_t> body;
   std::vector<std::uint8_t> fixed;
+
+  // Deformable bodies (empty without them): per deformable body, then per deformable particle in
+  // canonical order, and the rest bonds of each.
+  std::vector<ElasticParameters> elastic_bodies;
+  std::vector<std::uint32_t> deformable_body;  // index into elastic_bodies
+  std::vector<std::uint32_t> bond_start;       // deformable particle d: bonds[bond_start[d] .. bond_start[d + 1])
+  std::vector<RestBond> bonds;
+  std::vector<float> rest_volume;              // V0 [m^3]
 };
 
+// Throws InputError for what the float backends do not run: damping of a deformable body that no
+// fixed region holds (it needs the body's rigid motion every step; the reference has it).
 FloatScene make_float_scene(const ParticleSetup& setup);
 
 // Grid bits per axis: enough cells of side h to cover the starting bounding box (at least 4 per

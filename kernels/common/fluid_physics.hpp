@@ -159,7 +159,7 @@ MSSPH_HD void place_in_cell_order(std::uint32_t s, const std::uint32_t* sorted_i
                                   const Vec4* velocity, const std::uint32_t* body, Vec4* sorted_position,
                                   Vec4* sorted_velocity) {
   const std::uint32_t i = sorted_id[s];
-  sorted_position[s] = make_vec4(xyz(position[i]), body_as_float(body[i]));
+  sorted_position[s] = make_vec4(xyz(position[i]), index_as_float_bits(body[i]));
   sorted_velocity[s] = velocity[i];
 }
 

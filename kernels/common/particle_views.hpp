@@ -34,18 +34,20 @@ struct StepParameters {
   std::uint32_t particle_count;
 };
 
-// The body index rides in the sorted position's fourth component (its bit pattern), so one
-// 16-byte load gives a neighbour's position and body.
-MSSPH_HD float body_as_float(std::uint32_t body) {
+// An index carried in a float's bit pattern: the fourth component of a 16-byte record, so one
+// load gives, e.g., a neighbour's position and body.
+MSSPH_HD float index_as_float_bits(std::uint32_t index) {
   float f;
-  std::memcpy(&f, &body, sizeof f);
+  std::memcpy(&f, &index, sizeof f);
   return f;
 }
-MSSPH_HD std::uint32_t body_of(const Vec4& sorted_position) {
-  std::uint32_t body;
-  std::memcpy(&body, &sorted_position.w, sizeof body);
-  return body;
+MSSPH_HD std::uint32_t index_from_float_bits(float f) {
+  std::uint32_t index;
+  std::memcpy(&index, &f, sizeof index);
+  return index;
 }
+// The body index rides in the sorted position's fourth component.
+MSSPH_HD std::uint32_t body_of(const Vec4& sorted_position) { return index_from_float_bits(sorted_position.w); }
 
 struct VolumePressure {
   float volume;    // V = m / rho [m^3]

@@ -1,5 +1,6 @@
 #include "cuda_backend.hpp"
 
+#include "../common/elastic_physics.hpp"
 #include "../common/float_scene.hpp"
 #include "../common/fluid_physics.hpp"
 #include "cuda_check.hpp"
@@ -49,6 +50,16 @@ __global__ void cell_order_kernel(std::uint32_t n, const std::uint32_t* sorted_i
 // thread per particle walks ~200 candidates one dependent load after another; when the scene is
 // too small to fill the GPU, teams keep three walks in flight per particle and hide the memory
 // latency. Scenes that fill the GPU use single lanes, which waste nothing.
+__global__ void rotation_stress_kernel(DeformableView view) {
+  const std::uint32_t d = blockIdx.x * blockDim.x + threadIdx.x;
+  if (d < view.count) rotation_and_stress(view, d);
+}
+
+__global__ void elastic_force_kernel(DeformableView view) {
+  const std::uint32_t d = blockIdx.x * blockDim.x + threadIdx.x;
+  if (d < view.count) elastic_force(view, d);
+}
+
 template <unsigned Lanes>
 __device__ float team_sum(float x) {
   for (unsigned offset = 1; offset < Lanes; offset *= 2) x += __shfl_xor_sync(0xffffffffu, x, offset);
@@ -207,15 +218,18 @@ class CudaBackend final : public Backend {
   std::vector<BodyState> body_states() override;
   BodyState rigid_body_state(std::size_t body) override;
   ParticleSnapshot snapshot() override;
-  std::vector<std::string> phase_names() const override { return {"grid", "density", "forces_integrate", "rigid_bodies"}; }
+  std::vector<std::string> phase_names() const override {
+    return {"grid", "elasticity", "density", "forces_integrate", "rigid_bodies"};
+  }
   std::vector<double> last_phase_seconds() const override;
   void synchronize() override { cuda_check(cudaStreamSynchronize(stream_), "synchronise"); }
 
  private:
-  static constexpr int kPhaseCount = 4;
+  static constexpr int kPhaseCount = 5;
   void record_step(cudaStream_t stream);
   SortedView sorted_view() const;
   CanonicalState canonical_state();
+  DeformableView deformable_view();
   std::uint32_t rigid_index(std::size_t body) const;
 
   ParticleSetup setup_;
@@ -226,7 +240,7 @@ class CudaBackend final : public Backend {
   std::vector<std::array<Vec3, 2>> external_wrench_;  // per movable rigid body: host copy of F, tau
 
   // Canonical state.
-  DeviceBuffer<Vec4> position_, velocity_, interaction_force_, rest_offset_;
+  DeviceBuffer<Vec4> position_, velocity_, interaction_force_, elastic_force_, rest_offset_;
   DeviceBuffer<std::uint32_t> body_;
   DeviceBuffer<std::uint8_t> fixed_;
   // Grid and cell-ordered copies.
@@ -235,6 +249,14 @@ class CudaBackend final : public Backend {
   DeviceBuffer<VolumePressure> volume_pressure_;
   DeviceBuffer<unsigned char> sort_storage_;
   std::size_t sort_storage_bytes_ = 0;
+  // Deformable bodies.
+  std::uint32_t deformables_ = 0;
+  DeviceBuffer<ElasticParameters> elastic_bodies_;
+  DeviceBuffer<std::uint32_t> deformable_body_, bond_start_;
+  DeviceBuffer<RestBond> bonds_;
+  DeviceBuffer<float> rest_volume_;
+  DeviceBuffer<Quat> rotation_;
+  DeviceBuffer<Mat3> stress_action_, deformation_;
   // Bodies.
   DeviceBuffer<BodyParameters> bodies_;
   DeviceBuffer<RigidBody> rigid_bodies_;
@@ -297,17 +319,17 @@ std::size_t scene_bytes(const FloatScene& scene, std::size_t sort_bytes) {
   const std::size_t bodies = scene.bodies.size() * sizeof(BodyParameters) + body_chunks * (sizeof(BodyChunk) + sizeof(BodySums)) +
                              scene.rigid_bodies.size() * (sizeof(RigidBody) + sizeof(std::uint32_t)) +
                              rigid_chunks * (sizeof(RigidChunk) + sizeof(Wrench));
-  return n * (canonical + grid) + cells + bodies + sort_bytes;
+  const std::size_t deformable = scene.deformable_body.empty()
+                                     ? 0
+                                     : n * sizeof(Vec4) + scene.bonds.size() * sizeof(RestBond) +
+                                           scene.deformable_body.size() * (2 * sizeof(std::uint32_t) + sizeof(float) +
+                                                                           sizeof(Quat) + 2 * sizeof(Mat3));
+  return n * (canonical + grid) + cells + bodies + deformable + sort_bytes;
 }
 
 CudaBackend::CudaBackend(ParticleSetup setup)
     : setup_(std::move(setup)), scene_(make_float_scene(setup_)), n_(static_cast<std::uint32_t>(setup_.size())) {
   require_usable_device(device_name_);
-  for (const BodySetup& body : setup_.bodies) {
-    if (body.kind == BodyKind::deformable) {
-      throw InputError("body \"" + body.name + "\": deformable bodies are not available yet in the cuda backend");
-    }
-  }
   const int bits = static_cast<int>(scene_.grid.total_bits());
   sort_storage_bytes_ = sort_temp_bytes(n_, bits);
   const std::size_t needed = scene_bytes(scene_, sort_storage_bytes_);
@@ -324,6 +346,18 @@ CudaBackend::CudaBackend(ParticleSetup setup)
   velocity_ = DeviceBuffer<Vec4>(scene_.velocity);
   interaction_force_ = DeviceBuffer<Vec4>(std::vector<Vec4>(n_, Vec4{0, 0, 0, 0}));
   rest_offset_ = DeviceBuffer<Vec4>(scene_.rest_offset);
+  deformables_ = static_cast<std::uint32_t>(scene_.deformable_body.size());
+  if (deformables_ > 0) {
+    elastic_force_ = DeviceBuffer<Vec4>(std::vector<Vec4>(n_, Vec4{0, 0, 0, 0}));
+    elastic_bodies_ = DeviceBuffer<ElasticParameters>(scene_.elastic_bodies);
+    deformable_body_ = DeviceBuffer<std::uint32_t>(scene_.deformable_body);
+    bond_start_ = DeviceBuffer<std::uint32_t>(scene_.bond_start);
+    bonds_ = DeviceBuffer<RestBond>(scene_.bonds);
+    rest_volume_ = DeviceBuffer<float>(scene_.rest_volume);
+    rotation_ = DeviceBuffer<Quat>(std::vector<Quat>(deformables_, Quat{0, 0, 0, 1}));
+    stress_action_ = DeviceBuffer<Mat3>(deformables_);
+    deformation_ = DeviceBuffer<Mat3>(deformables_);
+  }
   body_ = DeviceBuffer<std::uint32_t>(scene_.body);
   fixed_ = DeviceBuffer<std::uint8_t>(scene_.fixed);
   keys_ = DeviceBuffer<std::uint32_t>(n_);
@@ -403,7 +437,14 @@ SortedView CudaBackend::sorted_view() const {
 }
 
 CanonicalState CudaBackend::canonical_state() {
-  return CanonicalState{position_.data(), velocity_.data(), interaction_force_.data(), nullptr, body_.data(), fixed_.data()};
+  return CanonicalState{position_.data(), velocity_.data(), interaction_force_.data(),
+                        deformables_ > 0 ? elastic_force_.data() : nullptr, body_.data(), fixed_.data()};
+}
+
+DeformableView CudaBackend::deformable_view() {
+  return DeformableView{elastic_bodies_.data(), deformable_body_.data(), bond_start_.data(), bonds_.data(),
+                        rest_volume_.data(),    position_.data(),        velocity_.data(),   rotation_.data(),
+                        stress_action_.data(),  deformation_.data(),     elastic_force_.data(), deformables_};
 }
 
 // Paper 3.2 as a kernel sequence: grid (keys, radix sort, cell ranges and cell-ordered copies),
@@ -427,18 +468,23 @@ void CudaBackend::record_step(cudaStream_t stream) {
   cell_order_kernel<<<blocks, kBlock, 0, stream>>>(n_, sorted_id_.data(), position_.data(), velocity_.data(),
                                                    body_.data(), sorted_position_.data(), sorted_velocity_.data());
   mark(1);
+  if (deformables_ > 0) {
+    rotation_stress_kernel<<<blocks_for(deformables_), kBlock, 0, stream>>>(deformable_view());
+    elastic_force_kernel<<<blocks_for(deformables_), kBlock, 0, stream>>>(deformable_view());
+  }
+  mark(2);
   if (small_scene_) {
     density_kernel<kTeamLanes><<<blocks_for(std::size_t{n_} * kTeamLanes), kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
   } else {
     density_kernel<1><<<blocks, kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
   }
-  mark(2);
+  mark(3);
   if (small_scene_) {
     forces_kernel<kTeamLanes><<<blocks_for(std::size_t{n_} * kTeamLanes), kBlock, 0, stream>>>(sorted_view(), canonical_state());
   } else {
     forces_kernel<1><<<blocks, kBlock, 0, stream>>>(sorted_view(), canonical_state());
   }
-  mark(3);
+  mark(4);
   if (!scene_.rigid_bodies.empty()) {
     const auto chunks = static_cast<unsigned>(rigid_chunks_.size());
     const auto rigid_count = static_cast<std::uint32_t>(scene_.rigid_bodies.size());
@@ -449,7 +495,7 @@ void CudaBackend::record_step(cudaStream_t stream) {
     rigid_place_kernel<<<chunks, kBlock, 0, stream>>>(rigid_chunks_.data(), rigid_bodies_.data(), canonical_state(),
                                                       rest_offset_.data());
   }
-  mark(4);
+  mark(5);
   cuda_check(cudaGetLastError(), "launch step kernels");
 }
 

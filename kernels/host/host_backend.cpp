@@ -1,5 +1,6 @@
 #include "host_backend.hpp"
 
+#include "../common/elastic_physics.hpp"
 #include "../common/fluid_physics.hpp"
 #include "util/errors.hpp"
 #include "util/host_info.hpp"
@@ -29,11 +30,6 @@ Vec3 to_vec3(const Eigen::Vector3d& v) {
 }  // namespace
 
 HostBackend::HostBackend(ParticleSetup setup) : setup_(std::move(setup)), scene_(make_float_scene(setup_)) {
-  for (const BodySetup& body : setup_.bodies) {
-    if (body.kind == BodyKind::deformable) {
-      throw InputError("body \"" + body.name + "\": deformable bodies are not available yet in the cpu backend");
-    }
-  }
   const std::size_t n = setup_.size();
   cell_start_.assign(std::size_t{scene_.grid.cell_count()} + 1, 0);
   sorted_id_.resize(n);
@@ -42,6 +38,11 @@ HostBackend::HostBackend(ParticleSetup setup) : setup_(std::move(setup)), scene_
   sorted_velocity_.resize(n);
   volume_pressure_.resize(n);
   interaction_force_.assign(n, Vec4{0, 0, 0, 0});
+  elastic_force_.assign(n, Vec4{0, 0, 0, 0});
+  const std::size_t deformables = scene_.deformable_body.size();
+  rotation_.assign(deformables, Quat{0, 0, 0, 1});
+  stress_action_.assign(deformables, zero_mat3());
+  deformation_.assign(deformables, identity_mat3());
 }
 
 BackendInfo HostBackend::info() const { return {"cpu", host_cpu_name(), "float32"}; }
@@ -91,6 +92,24 @@ void HostBackend::build_grid() {
   }
 }
 
+DeformableView HostBackend::deformable_view() {
+  return DeformableView{scene_.elastic_bodies.data(), scene_.deformable_body.data(), scene_.bond_start.data(),
+                        scene_.bonds.data(),          scene_.rest_volume.data(),     scene_.position.data(),
+                        scene_.velocity.data(),       rotation_.data(),              stress_action_.data(),
+                        deformation_.data(),          elastic_force_.data(),
+                        static_cast<std::uint32_t>(scene_.deformable_body.size())};
+}
+
+// Steps 1 and 3 of deformable bodies from the positions at the start of the step: all rotations
+// and stresses first, since each elastic force reads its neighbours' stresses.
+void HostBackend::compute_elasticity() {
+  const DeformableView view = deformable_view();
+#pragma omp parallel for schedule(static)
+  for (std::uint32_t d = 0; d < view.count; ++d) rotation_and_stress(view, d);
+#pragma omp parallel for schedule(static)
+  for (std::uint32_t d = 0; d < view.count; ++d) elastic_force(view, d);
+}
+
 void HostBackend::compute_densities() {
   const SortedView view = sorted_view();
   const std::size_t n = setup_.size();
@@ -100,8 +119,8 @@ void HostBackend::compute_densities() {
 
 void HostBackend::compute_forces_and_integrate() {
   const SortedView view = sorted_view();
-  const CanonicalState state{scene_.position.data(), scene_.velocity.data(), interaction_force_.data(), nullptr,
-                             scene_.body.data(), scene_.fixed.data()};
+  const CanonicalState state{scene_.position.data(), scene_.velocity.data(), interaction_force_.data(),
+                             rotation_.empty() ? nullptr : elastic_force_.data(), scene_.body.data(), scene_.fixed.data()};
   const auto n = static_cast<std::uint32_t>(setup_.size());
 #pragma omp parallel for schedule(static)
   for (std::uint32_t s = 0; s < n; ++s) apply_forces(view, state, s, pressure_viscosity_at(view, s));
@@ -125,12 +144,16 @@ void HostBackend::advance_rigid_bodies() {
   }
 }
 
-// Paper 3.2 on the kernels' functions: grid, densities, forces with leap-frog integration of
-// particles, then rigid-body dynamics.
+// Paper 3.2 on the kernels' functions: grid, rotations and elastic forces of deformable bodies,
+// densities, forces with leap-frog integration of particles, then rigid-body dynamics.
 void HostBackend::step() {
   {
     PhaseTimer timer(phase_seconds_[kGrid]);
     build_grid();
+  }
+  {
+    PhaseTimer timer(phase_seconds_[kElasticity]);
+    compute_elasticity();
   }
   {
     PhaseTimer timer(phase_seconds_[kDensity]);
@@ -196,7 +219,9 @@ ParticleSnapshot HostBackend::snapshot() {
   return out;
 }
 
-std::vector<std::string> HostBackend::phase_names() const { return {"grid", "density", "forces_integrate", "rigid_bodies"}; }
+std::vector<std::string> HostBackend::phase_names() const {
+  return {"grid", "elasticity", "density", "forces_integrate", "rigid_bodies"};
+}
 
 std::vector<double> HostBackend::last_phase_seconds() const { return {phase_seconds_.begin(), phase_seconds_.end()}; }
 

@@ -24,12 +24,14 @@ class HostBackend final : public Backend {
   std::vector<double> last_phase_seconds() const override;
 
  private:
-  enum Phase { kGrid, kDensity, kForces, kRigid, kPhaseCount };
+  enum Phase { kGrid, kElasticity, kDensity, kForces, kRigid, kPhaseCount };
   void build_grid();
+  void compute_elasticity();
   void compute_densities();
   void compute_forces_and_integrate();
   void advance_rigid_bodies();
   SortedView sorted_view() const;
+  DeformableView deformable_view();
   RigidBody& rigid_of(std::size_t body);
 
   ParticleSetup setup_;
@@ -41,6 +43,10 @@ class HostBackend final : public Backend {
   std::vector<VolumePressure> volume_pressure_;
   // Canonical order.
   std::vector<Vec4> interaction_force_;
+  std::vector<Vec4> elastic_force_;  // zero outside deformable bodies
+  // Per deformable particle.
+  std::vector<Quat> rotation_;
+  std::vector<Mat3> stress_action_, deformation_;
   double time_ = 0.0;
   std::array<double, kPhaseCount> phase_seconds_{};
 };

@@ -47,6 +47,11 @@ TEST_P(BackendAgreement, RigidDropFollowsTheReference) {
   expect_drop_agrees(GetParam(), {"sphere_drop_rigid.json", 0.02});
 }
 
+TEST_P(BackendAgreement, DeformableDropFollowsTheReference) {
+  MSSPH_SKIP_WITHOUT(GetParam());
+  expect_drop_agrees(GetParam(), {"sphere_drop_deformable.json", 0.02});
+}
+
 TEST_P(BackendAgreement, FluidDropFollowsTheReference) {
   MSSPH_SKIP_WITHOUT(GetParam());
   expect_drop_agrees(GetParam(), {"sphere_drop_fluid.json", 0.05});

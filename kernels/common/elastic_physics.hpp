@@ -1,0 +1,138 @@
+#pragma once
+// Corotated SPH elasticity of deformable particles (paper 3.1.2, eq. 4-6), float32, for the CUDA
+// kernels and the host build: step 1 (rotations) with the elastic part of step 2 (strain, stress)
+// in one pass, the elastic forces of step 3 in a second. Conventions and derivations are the
+// reference's (cpu_reference/elasticity.hpp): (grad u)_ab = du_a/dX_b, d_ij = V0_j L_i grad W(X_i - X_j),
+// K_i = V0_i R_i P_i, f_i = sum_j (K_i d_ij - K_j d_ji). The rest bonds (neighbours, offsets,
+// weights, d_ij, d_ji) come precomputed from the reference's rest state, converted to float.
+#include "particle_views.hpp"
+
+namespace mssph::kernels {
+
+enum StrainCode : std::uint32_t { kGreenSaintVenant = 0, kCauchy = 1 };
+
+// One per deformable body.
+struct ElasticParameters {
+  std::uint32_t first_particle;   // canonical index of the body's first particle
+  std::uint32_t first_deformable; // its index among deformable particles
+  std::uint32_t strain;           // StrainCode
+  float lambda;                   // Lame lambda [Pa]
+  float mu;                       // shear modulus [Pa]
+  float young_modulus;            // E [Pa], scales the zero-energy control
+  float zero_energy_stiffness;    // alpha [-], 0 = off
+  float damping;                  // mass-proportional rate [1/s], 0 = off (bodies held by fixed regions)
+  float particle_mass;            // m = rho0 dx^3 [kg]
+};
+
+// A rest neighbour j of deformable particle i, 48 bytes in three aligned loads.
+struct RestBond {
+  Vec4 offset_weight;  // X_ij = X_j - X_i [m], w: m_j W_poly6(|X_ij|) for the moment matrix
+  Vec4 d_ij_kernel;    // d_ij [1/m], w: W_poly6(|X_ij|) for the zero-energy control
+  Vec4 d_ji_neighbour; // d_ji [1/m], w: j's canonical index (bits)
+};
+
+MSSPH_HD std::uint32_t bond_neighbour(const RestBond& b) { return index_from_float_bits(b.d_ji_neighbour.w); }
+
+struct DeformableView {
+  const ElasticParameters* bodies;   // per deformable body
+  const std::uint32_t* body_of;      // per deformable particle: index into bodies
+  const std::uint32_t* bond_start;   // per deformable particle, plus the end: its bonds
+  const RestBond* bonds;
+  const float* rest_volume;          // V0 per deformable particle [m^3]
+  const Vec4* position;              // canonical positions (read)
+  const Vec4* velocity;              // canonical velocities (read, damping)
+  Quat* rotation;                    // R_i as a quaternion; read as the warm start, then written
+  Mat3* stress_action;               // K_i = V0_i R_i P_i (world frame) [N m]
+  Mat3* deformation;                 // world-frame F_i = R_i (I + grad u_i), for the zero-energy control
+  Vec4* elastic_force;               // canonical order (non-deformable entries stay zero) [N]
+  std::uint32_t count;               // deformable particles
+};
+
+// The rotational part of A by the iterative method of Mueller et al. 2016 ("A robust method to
+// extract the rotational part of deformations"): rotate q by omega = sum_c r_c x a_c /
+// |sum_c r_c . a_c| until omega vanishes, starting from last step's rotation. It needs no SVD,
+// stays a proper rotation for flat or inverted neighbourhoods (where it keeps the rotation it
+// has), and converges in a few iterations when warm-started.
+MSSPH_HD Quat extract_rotation(const Mat3& a, Quat q) {
+  const Vec3 a0 = column(a, 0), a1 = column(a, 1), a2 = column(a, 2);
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    const Mat3 r = rotation_matrix(q);
+    const Vec3 r0 = column(r, 0), r1 = column(r, 1), r2 = column(r, 2);
+    const Vec3 torque = cross(r0, a0) + cross(r1, a1) + cross(r2, a2);
+    const float alignment = std::fabs(dot(r0, a0) + dot(r1, a1) + dot(r2, a2));
+    const Vec3 omega = (1.0f / (alignment + 1e-30f)) * torque;
+    const float angle = norm(omega);
+    if (angle < 1e-7f) break;
+    q = normalized(axis_angle((1.0f / angle) * omega, angle) * q);
+  }
+  return q;
+}
+
+// Step 1 and the elastic part of step 2 for deformable particle d: R_i, grad u_i (eq. 4), strain,
+// stress, K_i and F_i.
+MSSPH_HD void rotation_and_stress(const DeformableView& v, std::uint32_t d) {
+  const ElasticParameters& body = v.bodies[v.body_of[d]];
+  const std::uint32_t i = body.first_particle + (d - body.first_deformable);
+  const Vec3 x_i = xyz(v.position[i]);
+  Mat3 moment = zero_mat3();
+  for (std::uint32_t b = v.bond_start[d]; b < v.bond_start[d + 1]; ++b) {
+    const RestBond bond = v.bonds[b];
+    moment = moment + outer(bond.offset_weight.w * (xyz(v.position[bond_neighbour(bond)]) - x_i), xyz(bond.offset_weight));
+  }
+  const Quat q = extract_rotation(moment, v.rotation[d]);
+  const Mat3 rotation = rotation_matrix(q);
+  const Mat3 rotation_t = transpose(rotation);
+  Mat3 grad_u = zero_mat3();
+  for (std::uint32_t b = v.bond_start[d]; b < v.bond_start[d + 1]; ++b) {
+    const RestBond bond = v.bonds[b];
+    const Vec3 u_ji = rotation_t * (xyz(v.position[bond_neighbour(bond)]) - x_i) - xyz(bond.offset_weight);
+    grad_u = grad_u + outer(u_ji, xyz(bond.d_ij_kernel));
+  }
+  const Mat3 gt = transpose(grad_u);
+  Mat3 strain = 0.5f * (grad_u + gt);
+  if (body.strain == kGreenSaintVenant) strain = strain + 0.5f * (gt * grad_u);
+  Mat3 stress = (2.0f * body.mu) * strain;
+  const float pressure_like = body.lambda * trace(strain);
+  stress(0, 0) += pressure_like;
+  stress(1, 1) += pressure_like;
+  stress(2, 2) += pressure_like;
+  const Mat3 f_local = identity_mat3() + grad_u;
+  const Mat3 first_piola = body.strain == kGreenSaintVenant ? f_local * stress : stress;
+  v.rotation[d] = q;
+  v.stress_action[d] = v.rest_volume[d] * (rotation * first_piola);
+  v.deformation[d] = rotation * f_local;
+}
+
+// Step 3 for deformable particle d: the symmetrised elastic force of eq. 6, plus the zero-energy
+// control (Ganzenmueller 2015) and the mass-proportional damping when its body has them.
+MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) {
+  const ElasticParameters& body = v.bodies[v.body_of[d]];
+  const std::uint32_t i = body.first_particle + (d - body.first_deformable);
+  const Vec3 x_i = xyz(v.position[i]);
+  const Mat3 k_i = v.stress_action[d];
+  const Mat3 f_i = v.deformation[d];
+  Vec3 force{0, 0, 0};
+  for (std::uint32_t b = v.bond_start[d]; b < v.bond_start[d + 1]; ++b) {
+    const RestBond bond = v.bonds[b];
+    const std::uint32_t j = bond_neighbour(bond);
+    const std::uint32_t dj = body.first_deformable + (j - body.first_particle);
+    force += k_i * xyz(bond.d_ij_kernel) - v.stress_action[dj] * xyz(bond.d_ji_neighbour);
+    if (body.zero_energy_stiffness > 0.0f) {
+      // Ganzenmueller 2015: pull the pair to where both neighbourhoods' deformations put it.
+      const Vec3 rest = xyz(bond.offset_weight);
+      const Vec3 x_ij = xyz(v.position[j]) - x_i;
+      const float r = norm(x_ij);
+      if (r > 0.0f) {
+        const Vec3 n = (1.0f / r) * x_ij;
+        const float delta = dot((f_i + v.deformation[dj]) * rest - 2.0f * x_ij, n);
+        force += (-0.5f * body.zero_energy_stiffness * v.rest_volume[d] * v.rest_volume[dj] * bond.d_ij_kernel.w *
+                  body.young_modulus * delta / squared_norm(rest)) * n;
+      }
+    }
+  }
+  // A body held by fixed regions damps against the world (v_ref = 0).
+  if (body.damping > 0.0f) force -= (body.damping * body.particle_mass) * xyz(v.velocity[i]);
+  v.elastic_force[i] = make_vec4(force, 0.0f);
+}
+
+}  // namespace mssph::kernels
