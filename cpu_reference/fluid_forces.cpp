@@ -18,6 +18,8 @@ void compute_pressure_viscosity_forces(const ParticleSetup& setup, const Neighbo
   for (std::size_t i = 0; i < n; ++i) {
     Eigen::Vector3d internal = Eigen::Vector3d::Zero();
     Eigen::Vector3d interaction = Eigen::Vector3d::Zero();
+    Eigen::Vector3d pressure_sum = Eigen::Vector3d::Zero();
+    Eigen::Vector3d viscosity_sum = Eigen::Vector3d::Zero();
     const BodySetup& body_i = setup.bodies[setup.body[i]];
     if (body_i.kind != BodyKind::boundary) {
       for (const std::size_t* jp = neighbours.begin(i); jp != neighbours.end(i); ++jp) {
@@ -35,10 +37,14 @@ void compute_pressure_viscosity_forces(const ParticleSetup& setup, const Neighbo
                                     : interface_viscosity(body_i.material.viscosity, body_j.material.viscosity);
         const Eigen::Vector3d viscosity = mu * v_i * v_j * lap_w(r_ij.norm()) * (state.velocity[j] - state.velocity[i]);
         (same_body ? internal : interaction) += pressure + viscosity;
+        pressure_sum += pressure;
+        viscosity_sum += viscosity;
       }
     }
     state.internal_force[i] = internal;
     state.interaction_force[i] = interaction;
+    state.pressure_force[i] = pressure_sum;
+    state.viscosity_force[i] = viscosity_sum;
   }
 }
 

@@ -17,6 +17,8 @@ struct ParticleState {
   std::vector<double> pressure;           // P_i [Pa]
   std::vector<Eigen::Vector3d> internal_force;     // from particles of the same body [N]
   std::vector<Eigen::Vector3d> interaction_force;  // from particles of other bodies, eq. 7 [N]
+  std::vector<Eigen::Vector3d> pressure_force;     // the pressure part of both (eq. 2, 7) [N]
+  std::vector<Eigen::Vector3d> viscosity_force;    // the viscosity part of both (eq. 3, 7) [N]
 
   void resize(std::size_t n) {
     position.resize(n);
@@ -27,6 +29,8 @@ struct ParticleState {
     pressure.assign(n, 0.0);
     internal_force.assign(n, Eigen::Vector3d::Zero());
     interaction_force.assign(n, Eigen::Vector3d::Zero());
+    pressure_force.assign(n, Eigen::Vector3d::Zero());
+    viscosity_force.assign(n, Eigen::Vector3d::Zero());
   }
 };
 

@@ -126,6 +126,31 @@ void ReferenceBackend::integrate() {
   }
 }
 
+ForceEvaluation ReferenceBackend::evaluate_forces() {
+  compute_forces();
+  const std::size_t n = setup_.size();
+  ForceEvaluation out;
+  out.density = particles_.density;
+  out.pressure = particles_.pressure;
+  out.pressure_force = particles_.pressure_force;
+  out.viscosity_force = particles_.viscosity_force;
+  out.elastic_force.assign(n, Eigen::Vector3d::Zero());
+  out.rotation.assign(n, Eigen::Matrix3d::Identity());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_deformable(setup_, i)) continue;
+    out.elastic_force[i] = deformables_.elastic_force[i] + deformables_.hourglass_force[i] + deformables_.damping_force[i];
+    out.rotation[i] = deformables_.rotation[i];
+  }
+  return out;
+}
+
+void ReferenceBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& positions) {
+  for (std::size_t i = 0; i < setup_.size(); ++i) {
+    const BodyKind kind = setup_.bodies[setup_.body[i]].kind;
+    if (kind == BodyKind::fluid || kind == BodyKind::deformable) particles_.position[i] = positions[i];
+  }
+}
+
 BodyState ReferenceBackend::rigid_body_state(std::size_t body) {
   const RigidBodyState* rigid = rigid_body_of(body);
   if (!rigid) throw std::invalid_argument("body " + std::to_string(body) + " is not a movable rigid body");

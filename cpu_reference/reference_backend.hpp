@@ -26,6 +26,8 @@ class ReferenceBackend final : public Backend {
   ParticleSnapshot snapshot() override;
   std::vector<std::string> phase_names() const override;
   std::vector<double> last_phase_seconds() const override;
+  ForceEvaluation evaluate_forces() override;
+  void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) override;
 
   // For tests and validation: the full state.
   const ParticleSetup& setup() const { return setup_; }

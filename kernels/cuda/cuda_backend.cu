@@ -50,6 +50,12 @@ __global__ void cell_order_kernel(std::uint32_t n, const std::uint32_t* sorted_i
 // thread per particle walks ~200 candidates one dependent load after another; when the scene is
 // too small to fill the GPU, teams keep three walks in flight per particle and hide the memory
 // latency. Scenes that fill the GPU use single lanes, which waste nothing.
+// For comparisons: the pressure and viscosity sums of every sorted particle, not integrated.
+__global__ void force_probe_kernel(SortedView view, ForceSum* forces) {
+  const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
+  if (s < view.step.particle_count) forces[s] = pressure_viscosity_at(view, s);
+}
+
 __global__ void rotation_stress_kernel(DeformableView view) {
   const std::uint32_t d = blockIdx.x * blockDim.x + threadIdx.x;
   if (d < view.count) rotation_and_stress(view, d);
@@ -223,10 +229,15 @@ class CudaBackend final : public Backend {
   }
   std::vector<double> last_phase_seconds() const override;
   void synchronize() override { cuda_check(cudaStreamSynchronize(stream_), "synchronise"); }
+  ForceEvaluation evaluate_forces() override;
+  void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) override;
 
  private:
   static constexpr int kPhaseCount = 5;
   void record_step(cudaStream_t stream);
+  void launch_grid(cudaStream_t stream);
+  void launch_elasticity(cudaStream_t stream);
+  void launch_density(cudaStream_t stream);
   SortedView sorted_view() const;
   CanonicalState canonical_state();
   DeformableView deformable_view();
@@ -450,15 +461,9 @@ DeformableView CudaBackend::deformable_view() {
 // Paper 3.2 as a kernel sequence: grid (keys, radix sort, cell ranges and cell-ordered copies),
 // densities, forces with leap-frog integration, rigid-body dynamics. Events between the phases
 // time them.
-void CudaBackend::record_step(cudaStream_t stream) {
+void CudaBackend::launch_grid(cudaStream_t stream) {
   const unsigned blocks = blocks_for(n_);
   const int bits = static_cast<int>(scene_.grid.total_bits());
-  // External event records: the graph's replays record them, so their times can be read after
-  // each launch (a plain record during capture only orders the graph's nodes).
-  const auto mark = [&](std::size_t phase) {
-    cuda_check(cudaEventRecordWithFlags(events_[phase], stream, cudaEventRecordExternal), "record phase event");
-  };
-  mark(0);
   cell_keys_kernel<<<blocks, kBlock, 0, stream>>>(position_.data(), n_, scene_.grid, keys_.data());
   cuda_check(cub::DeviceRadixSort::SortPairs(sort_storage_.data(), sort_storage_bytes_, keys_.data(), sorted_keys_.data(),
                                              identity_.data(), sorted_id_.data(), n_, 0, bits, stream),
@@ -467,22 +472,42 @@ void CudaBackend::record_step(cudaStream_t stream) {
       sorted_keys_.data(), n_, scene_.grid.cell_count(), cell_start_.data());
   cell_order_kernel<<<blocks, kBlock, 0, stream>>>(n_, sorted_id_.data(), position_.data(), velocity_.data(),
                                                    body_.data(), sorted_position_.data(), sorted_velocity_.data());
-  mark(1);
-  if (deformables_ > 0) {
-    rotation_stress_kernel<<<blocks_for(deformables_), kBlock, 0, stream>>>(deformable_view());
-    elastic_force_kernel<<<blocks_for(deformables_), kBlock, 0, stream>>>(deformable_view());
-  }
-  mark(2);
+}
+
+void CudaBackend::launch_elasticity(cudaStream_t stream) {
+  if (deformables_ == 0) return;
+  rotation_stress_kernel<<<blocks_for(deformables_), kBlock, 0, stream>>>(deformable_view());
+  elastic_force_kernel<<<blocks_for(deformables_), kBlock, 0, stream>>>(deformable_view());
+}
+
+void CudaBackend::launch_density(cudaStream_t stream) {
   if (small_scene_) {
     density_kernel<kTeamLanes><<<blocks_for(std::size_t{n_} * kTeamLanes), kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
   } else {
-    density_kernel<1><<<blocks, kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
+    density_kernel<1><<<blocks_for(n_), kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
   }
+}
+
+// Paper 3.2 as a kernel sequence: grid (keys, radix sort, cell table, cell-ordered copies),
+// rotations and elastic forces, densities, forces with leap-frog integration, rigid-body dynamics.
+// Events between the phases time them.
+void CudaBackend::record_step(cudaStream_t stream) {
+  // External event records: the graph's replays record them, so their times can be read after
+  // each launch (a plain record during capture only orders the graph's nodes).
+  const auto mark = [&](std::size_t phase) {
+    cuda_check(cudaEventRecordWithFlags(events_[phase], stream, cudaEventRecordExternal), "record phase event");
+  };
+  mark(0);
+  launch_grid(stream);
+  mark(1);
+  launch_elasticity(stream);
+  mark(2);
+  launch_density(stream);
   mark(3);
   if (small_scene_) {
     forces_kernel<kTeamLanes><<<blocks_for(std::size_t{n_} * kTeamLanes), kBlock, 0, stream>>>(sorted_view(), canonical_state());
   } else {
-    forces_kernel<1><<<blocks, kBlock, 0, stream>>>(sorted_view(), canonical_state());
+    forces_kernel<1><<<blocks_for(n_), kBlock, 0, stream>>>(sorted_view(), canonical_state());
   }
   mark(4);
   if (!scene_.rigid_bodies.empty()) {
@@ -497,6 +522,59 @@ void CudaBackend::record_step(cudaStream_t stream) {
   }
   mark(5);
   cuda_check(cudaGetLastError(), "launch step kernels");
+}
+
+// The step's first three phases outside the graph, then the force sums written out in canonical
+// order instead of being integrated.
+ForceEvaluation CudaBackend::evaluate_forces() {
+  launch_grid(stream_);
+  launch_elasticity(stream_);
+  launch_density(stream_);
+  DeviceBuffer<ForceSum> forces(n_);
+  force_probe_kernel<<<blocks_for(n_), kBlock, 0, stream_>>>(sorted_view(), forces.data());
+  cuda_check(cudaGetLastError(), "launch force probe");
+  cuda_check(cudaStreamSynchronize(stream_), "evaluate forces");
+  const std::vector<ForceSum> sums = forces.download();
+  const std::vector<VolumePressure> vp = volume_pressure_.download();
+  const std::vector<std::uint32_t> id = sorted_id_.download();
+  const std::vector<Vec4> elastic = deformables_ > 0 ? elastic_force_.download() : std::vector<Vec4>(n_, Vec4{0, 0, 0, 0});
+  const std::vector<Quat> rotation = deformables_ > 0 ? rotation_.download() : std::vector<Quat>{};
+  const auto to_eigen = [](Vec3 v) { return Eigen::Vector3d(v.x, v.y, v.z); };
+  ForceEvaluation out;
+  out.density.resize(n_);
+  out.pressure.resize(n_);
+  out.pressure_force.resize(n_);
+  out.viscosity_force.resize(n_);
+  out.elastic_force.resize(n_);
+  out.rotation.assign(n_, Eigen::Matrix3d::Identity());
+  for (std::uint32_t s = 0; s < n_; ++s) {
+    const std::uint32_t i = id[s];
+    out.density[i] = scene_.bodies[scene_.body[i]].sph_mass / vp[s].volume;
+    out.pressure[i] = vp[s].pressure;
+    out.pressure_force[i] = to_eigen(sums[s].pressure);
+    out.viscosity_force[i] = to_eigen(sums[s].viscosity);
+    out.elastic_force[i] = to_eigen(xyz(elastic[i]));
+  }
+  for (std::uint32_t d = 0; d < rotation.size(); ++d) {
+    const ElasticParameters& body = scene_.elastic_bodies[scene_.deformable_body[d]];
+    const Mat3 r = rotation_matrix(rotation[d]);
+    Eigen::Matrix3d& out_r = out.rotation[body.first_particle + (d - body.first_deformable)];
+    for (int k = 0; k < 9; ++k) out_r(k / 3, k % 3) = r.m[k];
+  }
+  return out;
+}
+
+void CudaBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& positions) {
+  cuda_check(cudaStreamSynchronize(stream_), "set positions");
+  std::vector<Vec4> current = position_.download();
+  for (std::uint32_t i = 0; i < n_; ++i) {
+    const std::uint32_t kind = scene_.bodies[scene_.body[i]].kind;
+    if (kind == kFluid || kind == kDeformable) {
+      current[i] = Vec4{static_cast<float>(positions[i].x()), static_cast<float>(positions[i].y()),
+                        static_cast<float>(positions[i].z()), 0.0f};
+    }
+  }
+  position_.upload(current);
 }
 
 void CudaBackend::step() {

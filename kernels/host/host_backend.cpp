@@ -170,6 +170,46 @@ void HostBackend::step() {
   time_ += setup_.dt;
 }
 
+ForceEvaluation HostBackend::evaluate_forces() {
+  build_grid();
+  compute_elasticity();
+  compute_densities();
+  const std::size_t n = setup_.size();
+  ForceEvaluation out;
+  out.density.resize(n);
+  out.pressure.resize(n);
+  out.pressure_force.resize(n);
+  out.viscosity_force.resize(n);
+  out.elastic_force.resize(n);
+  out.rotation.assign(n, Eigen::Matrix3d::Identity());
+  const SortedView view = sorted_view();
+  const auto to_eigen = [](Vec3 v) { return Eigen::Vector3d(v.x, v.y, v.z); };
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::uint32_t i = sorted_id_[s];
+    const ForceSum f = pressure_viscosity_at(view, static_cast<std::uint32_t>(s));
+    out.density[i] = scene_.bodies[scene_.body[i]].sph_mass / volume_pressure_[s].volume;
+    out.pressure[i] = volume_pressure_[s].pressure;
+    out.pressure_force[i] = to_eigen(f.pressure);
+    out.viscosity_force[i] = to_eigen(f.viscosity);
+    out.elastic_force[i] = to_eigen(xyz(elastic_force_[i]));
+  }
+  for (std::uint32_t d = 0; d < rotation_.size(); ++d) {
+    const ElasticParameters& body = scene_.elastic_bodies[scene_.deformable_body[d]];
+    const Mat3 r = rotation_matrix(rotation_[d]);
+    Eigen::Matrix3d& out_r = out.rotation[body.first_particle + (d - body.first_deformable)];
+    for (int k = 0; k < 9; ++k) out_r(k / 3, k % 3) = r.m[k];
+  }
+  return out;
+}
+
+void HostBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& positions) {
+  for (std::size_t i = 0; i < setup_.size(); ++i) {
+    const std::uint32_t kind = scene_.bodies[scene_.body[i]].kind;
+    if (kind == kFluid || kind == kDeformable) scene_.position[i] = make_vec4(to_vec3(positions[i]), 0.0f);
+  }
+}
+
 std::vector<BodyState> HostBackend::body_states() {
   std::vector<BodyState> states;
   for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {

@@ -22,6 +22,8 @@ class HostBackend final : public Backend {
   ParticleSnapshot snapshot() override;
   std::vector<std::string> phase_names() const override;
   std::vector<double> last_phase_seconds() const override;
+  ForceEvaluation evaluate_forces() override;
+  void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) override;
 
  private:
   enum Phase { kGrid, kElasticity, kDensity, kForces, kRigid, kPhaseCount };

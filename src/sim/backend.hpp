@@ -43,6 +43,17 @@ struct ParticleSnapshot {
   std::vector<float> pressure;  // [Pa]
 };
 
+// One force evaluation at the current state, without stepping, per particle in canonical order:
+// what backends are compared on (tests, validation).
+struct ForceEvaluation {
+  std::vector<double> density;                   // [kg/m^3]
+  std::vector<double> pressure;                  // [Pa]
+  std::vector<Eigen::Vector3d> pressure_force;   // paper eq. 2 and the pressure part of eq. 7 [N]
+  std::vector<Eigen::Vector3d> viscosity_force;  // paper eq. 3 and the viscosity part of eq. 7 [N]
+  std::vector<Eigen::Vector3d> elastic_force;    // deformable bodies' own forces: eq. 6, zero-energy control, damping [N]
+  std::vector<Eigen::Matrix3d> rotation;         // R_i of deformable particles, identity elsewhere
+};
+
 class Backend {
  public:
   virtual ~Backend() = default;
@@ -64,6 +75,12 @@ class Backend {
   // tick (a GPU backend copies one small record).
   virtual BodyState rigid_body_state(std::size_t body) = 0;
   virtual ParticleSnapshot snapshot() = 0;
+
+  // For comparisons between backends: forces at the current state without stepping, and a way to
+  // start from a deformed state (positions of fluid and deformable particles, canonical order;
+  // other particles keep theirs).
+  virtual ForceEvaluation evaluate_forces() = 0;
+  virtual void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) = 0;
 
   // Blocks until queued work is done: a GPU backend returns from step() before the step has run.
   virtual void synchronize() {}
