@@ -147,20 +147,20 @@ TEST(SceneBuilder, JitterIsBoundedAndReproducible) {
   EXPECT_EQ(moved, plain.size()) << "another seed must give other offsets";
 }
 
-TEST(SceneBuilder, SphMassCalibratesTheRestLatticeToTheRestDensity) {
+TEST(SceneBuilder, RestLatticeIsAtRestDensityAndParticlesCarryTheirCellsMass) {
   // delta0 is the kernel sum of a particle inside the lattice. Recompute it from the built
   // particles: the centre of a 9-cell cube sees its full support (h = 2 dx) inside the cube.
   json b = body("fluid", box({9 * kDx, 9 * kDx, 9 * kDx}));
   b["rest_density"] = 997.0;
   const ParticleSetup setup = build_particles(scene_of({{"water", b}}));
-  const reference::Poly6Kernel w(setup.smoothing_length);
+  const reference::SpikyKernel w(setup.smoothing_length);
   const Vector3d centre = Vector3d::Zero();
   double delta = 0.0;
-  for (const Vector3d& x : setup.position) delta += w((x - centre).squaredNorm());
-  // Both sums add the same 27 non-zero terms in different orders: 1e-12 relative covers rounding.
+  for (const Vector3d& x : setup.position) delta += w((x - centre).norm());
+  // Both sums add the same non-zero terms in different orders: 1e-12 relative covers rounding.
   EXPECT_NEAR(setup.rest_number_density / delta, 1.0, 1e-12);
-  for (const double m : setup.mass) EXPECT_DOUBLE_EQ(m, 997.0 / setup.rest_number_density);
-  EXPECT_NEAR(setup.mass.front() * delta / 997.0, 1.0, 1e-12);  // rho = m delta = rho0 at rest
+  // Each particle stands for its lattice cell: m = rho0 dx^3, so the body weighs rho0 V.
+  for (const double m : setup.mass) EXPECT_DOUBLE_EQ(m, 997.0 * kDx * kDx * kDx);
 }
 
 TEST(SceneBuilder, RigidMassIsDensityTimesTheSampledVolume) {
