@@ -31,25 +31,17 @@ __global__ void identity_kernel(std::uint32_t n, std::uint32_t* values) {
   if (i < n) values[i] = i;
 }
 
-__global__ void cell_start_kernel(const std::uint32_t* sorted_keys, std::uint32_t n, std::uint32_t cells,
-                                  std::uint32_t* cell_start) {
-  const std::uint32_t k = blockIdx.x * blockDim.x + threadIdx.x;
-  if (k <= cells) cell_start[k] = first_key_at_least(sorted_keys, n, k);
-}
-
-__global__ void cell_order_kernel(std::uint32_t n, const std::uint32_t* sorted_id, const Vec4* position,
+// The grid's last stages in one launch over max(n, cells + 1) threads: thread t fills cell_start[t]
+// and copies sorted particle t into cell order.
+__global__ void cell_table_kernel(const std::uint32_t* sorted_keys, std::uint32_t n, std::uint32_t cells,
+                                  std::uint32_t* cell_start, const std::uint32_t* sorted_id, const Vec4* position,
                                   const Vec4* velocity, const std::uint32_t* body, Vec4* sorted_position,
                                   Vec4* sorted_velocity) {
-  const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
-  if (s < n) place_in_cell_order(s, sorted_id, position, velocity, body, sorted_position, sorted_velocity);
+  const std::uint32_t t = blockIdx.x * blockDim.x + threadIdx.x;
+  if (t <= cells) cell_start[t] = first_key_at_least(sorted_keys, n, t);
+  if (t < n) place_in_cell_order(t, sorted_id, position, velocity, body, sorted_position, sorted_velocity);
 }
 
-// The neighbour sums give each particle a team of Lanes consecutive lanes of a warp (1, or 4 for
-// small scenes): the lanes share the three z-layers of the 27 cells around it (with 4 lanes, one
-// layer each and lane 3 idles), then add their partial sums by shuffles in a fixed order. One
-// thread per particle walks ~200 candidates one dependent load after another; when the scene is
-// too small to fill the GPU, teams keep three walks in flight per particle and hide the memory
-// latency. Scenes that fill the GPU use single lanes, which waste nothing.
 // For comparisons: the pressure and viscosity sums of every sorted particle, not integrated.
 __global__ void force_probe_kernel(SortedView view, ForceSum* forces) {
   const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
@@ -129,10 +121,15 @@ struct RigidChunk {
 };
 
 // One block per chunk: the wrench of its particles' interaction forces about the body's centre.
-__global__ void rigid_chunk_wrench_kernel(const RigidChunk* chunks, const RigidBody* bodies, CanonicalState state,
-                                          Wrench* partial) {
+// The block that finishes a body's last chunk (a ticket counter tells) then adds the body's chunk
+// wrenches in chunk order and integrates the body (eq. 8, 9): which block does it varies, the sum's
+// order does not, so runs repeat bit for bit.
+__global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBody* bodies, CanonicalState state,
+                                              Wrench* partial, const std::uint32_t* first_chunk,
+                                              std::uint32_t* tickets, StepParameters step) {
   using BlockReduce = cub::BlockReduce<Wrench, kBlock>;
   __shared__ typename BlockReduce::TempStorage reduce_storage;
+  __shared__ bool last;
   const RigidChunk chunk = chunks[blockIdx.x];
   const Vec3 centre = bodies[chunk.rigid].position;
   Wrench wrench{{0, 0, 0}, {0, 0, 0}};
@@ -140,21 +137,27 @@ __global__ void rigid_chunk_wrench_kernel(const RigidChunk* chunks, const RigidB
     wrench = wrench + particle_wrench(xyz(state.position[i]), xyz(state.interaction_force[i]), centre);
   }
   const Wrench total = BlockReduce(reduce_storage).Reduce(wrench, WrenchSum());
-  if (threadIdx.x == 0) partial[blockIdx.x] = total;
-}
-
-// One thread per rigid body: its chunks' wrenches in order, then rigid-body dynamics (eq. 8, 9).
-__global__ void rigid_integrate_kernel(RigidBody* bodies, std::uint32_t rigid_count, const std::uint32_t* first_chunk,
-                                       const Wrench* partial, StepParameters step) {
-  const std::uint32_t r = blockIdx.x * blockDim.x + threadIdx.x;
-  if (r >= rigid_count) return;
-  Wrench total{{0, 0, 0}, {0, 0, 0}};
-  for (std::uint32_t c = first_chunk[r]; c < first_chunk[r + 1]; ++c) total = total + partial[c];
-  RigidBody body = bodies[r];
-  body.interaction_force = total.force;
-  body.interaction_torque = total.torque;
+  if (threadIdx.x == 0) {
+    partial[blockIdx.x] = total;
+    __threadfence();  // the partial is visible before the ticket is taken
+    const std::uint32_t chunks_of_body = first_chunk[chunk.rigid + 1] - first_chunk[chunk.rigid];
+    last = atomicAdd(&tickets[chunk.rigid], 1u) + 1u == chunks_of_body;
+  }
+  __syncthreads();
+  if (!last || threadIdx.x != 0) return;
+  __threadfence();
+  tickets[chunk.rigid] = 0;  // ready for the next step
+  Wrench sum{{0, 0, 0}, {0, 0, 0}};
+  for (std::uint32_t c = first_chunk[chunk.rigid]; c < first_chunk[chunk.rigid + 1]; ++c) {
+    // Loaded from L2 (other blocks wrote them; this block's L1 may not hold them yet).
+    const float* w = reinterpret_cast<const float*>(partial + c);
+    sum = sum + Wrench{{__ldcg(w), __ldcg(w + 1), __ldcg(w + 2)}, {__ldcg(w + 3), __ldcg(w + 4), __ldcg(w + 5)}};
+  }
+  RigidBody body = bodies[chunk.rigid];
+  body.interaction_force = sum.force;
+  body.interaction_torque = sum.torque;
   integrate_rigid_body(body, step.gravity, step.dt);
-  bodies[r] = body;
+  bodies[chunk.rigid] = body;
 }
 
 // One block per chunk: its particles follow the body.
@@ -274,6 +277,7 @@ class CudaBackend final : public Backend {
   DeviceBuffer<RigidChunk> rigid_chunks_;
   DeviceBuffer<std::uint32_t> first_chunk_;  // per rigid body, plus the end
   DeviceBuffer<Wrench> chunk_wrench_;
+  DeviceBuffer<std::uint32_t> rigid_tickets_;  // per rigid body: chunks done this step
   std::vector<BodyChunk> body_chunks_host_;
   DeviceBuffer<BodyChunk> body_chunks_;
   DeviceBuffer<BodySums> chunk_sums_;
@@ -395,6 +399,7 @@ CudaBackend::CudaBackend(ParticleSetup setup)
   rigid_chunks_ = DeviceBuffer<RigidChunk>(chunks);
   first_chunk_ = DeviceBuffer<std::uint32_t>(first_chunk);
   chunk_wrench_ = DeviceBuffer<Wrench>(chunks.size());
+  rigid_tickets_ = DeviceBuffer<std::uint32_t>(std::vector<std::uint32_t>(scene_.rigid_bodies.size(), 0));
   for (std::uint32_t b = 0; b < setup_.bodies.size(); ++b) {
     const auto first = static_cast<std::uint32_t>(setup_.bodies[b].first);
     const auto end = first + static_cast<std::uint32_t>(setup_.bodies[b].count);
@@ -462,16 +467,15 @@ DeformableView CudaBackend::deformable_view() {
 // densities, forces with leap-frog integration, rigid-body dynamics. Events between the phases
 // time them.
 void CudaBackend::launch_grid(cudaStream_t stream) {
-  const unsigned blocks = blocks_for(n_);
   const int bits = static_cast<int>(scene_.grid.total_bits());
-  cell_keys_kernel<<<blocks, kBlock, 0, stream>>>(position_.data(), n_, scene_.grid, keys_.data());
+  cell_keys_kernel<<<blocks_for(n_), kBlock, 0, stream>>>(position_.data(), n_, scene_.grid, keys_.data());
   cuda_check(cub::DeviceRadixSort::SortPairs(sort_storage_.data(), sort_storage_bytes_, keys_.data(), sorted_keys_.data(),
                                              identity_.data(), sorted_id_.data(), n_, 0, bits, stream),
              "radix sort");
-  cell_start_kernel<<<blocks_for(std::size_t{scene_.grid.cell_count()} + 1), kBlock, 0, stream>>>(
-      sorted_keys_.data(), n_, scene_.grid.cell_count(), cell_start_.data());
-  cell_order_kernel<<<blocks, kBlock, 0, stream>>>(n_, sorted_id_.data(), position_.data(), velocity_.data(),
-                                                   body_.data(), sorted_position_.data(), sorted_velocity_.data());
+  const std::uint32_t cells = scene_.grid.cell_count();
+  cell_table_kernel<<<blocks_for(std::max<std::size_t>(n_, std::size_t{cells} + 1)), kBlock, 0, stream>>>(
+      sorted_keys_.data(), n_, cells, cell_start_.data(), sorted_id_.data(), position_.data(), velocity_.data(),
+      body_.data(), sorted_position_.data(), sorted_velocity_.data());
 }
 
 void CudaBackend::launch_elasticity(cudaStream_t stream) {
@@ -512,11 +516,9 @@ void CudaBackend::record_step(cudaStream_t stream) {
   mark(4);
   if (!scene_.rigid_bodies.empty()) {
     const auto chunks = static_cast<unsigned>(rigid_chunks_.size());
-    const auto rigid_count = static_cast<std::uint32_t>(scene_.rigid_bodies.size());
-    rigid_chunk_wrench_kernel<<<chunks, kBlock, 0, stream>>>(rigid_chunks_.data(), rigid_bodies_.data(),
-                                                             canonical_state(), chunk_wrench_.data());
-    rigid_integrate_kernel<<<blocks_for(rigid_count), kBlock, 0, stream>>>(rigid_bodies_.data(), rigid_count,
-                                                                           first_chunk_.data(), chunk_wrench_.data(), scene_.step);
+    rigid_wrench_integrate_kernel<<<chunks, kBlock, 0, stream>>>(rigid_chunks_.data(), rigid_bodies_.data(),
+                                                                 canonical_state(), chunk_wrench_.data(),
+                                                                 first_chunk_.data(), rigid_tickets_.data(), scene_.step);
     rigid_place_kernel<<<chunks, kBlock, 0, stream>>>(rigid_chunks_.data(), rigid_bodies_.data(), canonical_state(),
                                                       rest_offset_.data());
   }
