@@ -32,11 +32,19 @@ void step_time(benchmark::State& state, const std::string& backend_name, mssph::
   std::unique_ptr<mssph::Backend> backend = mssph::make_backend(backend_name, std::move(setup));
   for (int k = 0; k < kWarmUp; ++k) backend->step();
   backend->synchronize();
+  const std::vector<std::string> phases = backend->phase_names();
+  std::vector<double> phase_seconds(phases.size(), 0.0);
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
     for (int k = 0; k < kBatch; ++k) backend->step();
     backend->synchronize();
     state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    // The phases of each batch's last step: where a step's time goes (device events on a GPU).
+    const std::vector<double> last = backend->last_phase_seconds();
+    for (std::size_t p = 0; p < phases.size(); ++p) phase_seconds[p] += last[p];
+  }
+  for (std::size_t p = 0; p < phases.size(); ++p) {
+    state.counters["phase_" + phases[p] + "_seconds"] = phase_seconds[p] / static_cast<double>(state.iterations());
   }
   state.counters["particles"] = total_particles;
   state.counters["step_seconds"] =

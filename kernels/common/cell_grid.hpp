@@ -47,20 +47,30 @@ struct CellRanges {
   GridShape shape;
   const std::uint32_t* cell_start;  // cell_count() + 1 entries
 
-  // Calls visit(s) for every sorted particle s in the 9 cells of the layer cz + dz around x.
+  // Calls visit(s) for every sorted particle s in the 27 cells around x that falls to `lane` of a
+  // team of `lanes`: lane k takes candidates k, k + lanes, k + 2 lanes, ... of each contiguous
+  // range. One lane alone (the host, large GPU scenes) visits every candidate; a team of lanes
+  // splits the walk evenly, so a small scene keeps several independent loads in flight per
+  // particle instead of one dependent walk of ~200 candidates.
   template <class Visit>
-  MSSPH_HD void for_each_candidate_in_layer(Vec3 x, int dz, Visit&& visit) const {
+  MSSPH_HD void for_each_candidate(Vec3 x, std::uint32_t lane, std::uint32_t lanes, Visit&& visit) const {
     int cx, cy, cz;
     shape.cell_of(x, cx, cy, cz);
-    for (int dy = -1; dy <= 1; ++dy) {
-      const std::uint32_t first = shape.key(cx - 1, cy + dy, cz + dz);
-      const std::uint32_t last = shape.key(cx + 1, cy + dy, cz + dz);
-      if (last == first + 2) {
-        for (std::uint32_t s = cell_start[first]; s < cell_start[last + 1]; ++s) visit(s);
-      } else {  // the row wraps around the grid's x period: three separate cells
-        for (int dx = -1; dx <= 1; ++dx) {
-          const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
-          for (std::uint32_t s = cell_start[k]; s < cell_start[k + 1]; ++s) visit(s);
+    const auto visit_range = [&](std::uint32_t first_cell, std::uint32_t end_cell) {
+      const std::uint32_t end = cell_start[end_cell];
+      for (std::uint32_t s = cell_start[first_cell] + lane; s < end; s += lanes) visit(s);
+    };
+    for (int dz = -1; dz <= 1; ++dz) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        const std::uint32_t first = shape.key(cx - 1, cy + dy, cz + dz);
+        const std::uint32_t last = shape.key(cx + 1, cy + dy, cz + dz);
+        if (last == first + 2) {
+          visit_range(first, last + 1);
+        } else {  // the row wraps around the grid's x period: three separate cells
+          for (int dx = -1; dx <= 1; ++dx) {
+            const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
+            visit_range(k, k + 1);
+          }
         }
       }
     }
@@ -69,7 +79,7 @@ struct CellRanges {
   // Calls visit(s) for every sorted particle s in the 27 cells around x.
   template <class Visit>
   MSSPH_HD void for_each_candidate(Vec3 x, Visit&& visit) const {
-    for (int dz = -1; dz <= 1; ++dz) for_each_candidate_in_layer(x, dz, visit);
+    for_each_candidate(x, 0, 1, visit);
   }
 };
 

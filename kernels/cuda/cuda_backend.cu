@@ -11,6 +11,7 @@
 
 #include <array>
 #include <sstream>
+#include <type_traits>
 
 namespace mssph::kernels {
 namespace {
@@ -58,6 +59,9 @@ __global__ void elastic_force_kernel(DeformableView view) {
   if (d < view.count) elastic_force(view, d);
 }
 
+// The neighbour sums give each particle a team of Lanes consecutive lanes of a warp (1 to 8,
+// see choose_team_lanes): the lanes split its candidates (CellRanges::for_each_candidate) and add
+// their partial sums by shuffles in a fixed order, so a sum's order depends only on Lanes.
 template <unsigned Lanes>
 __device__ float team_sum(float x) {
   for (unsigned offset = 1; offset < Lanes; offset *= 2) x += __shfl_xor_sync(0xffffffffu, x, offset);
@@ -66,11 +70,6 @@ __device__ float team_sum(float x) {
 template <unsigned Lanes>
 __device__ Vec3 team_sum(Vec3 v) {
   return {team_sum<Lanes>(v.x), team_sum<Lanes>(v.y), team_sum<Lanes>(v.z)};
-}
-
-template <unsigned Lanes, class Visit>
-__device__ void visit_team_layers(const SortedView& view, Vec3 x, unsigned lane, Visit&& visit) {
-  for (unsigned layer = lane; layer < 3; layer += Lanes) view.grid.for_each_candidate_in_layer(x, static_cast<int>(layer) - 1, visit);
 }
 
 template <unsigned Lanes>
@@ -82,7 +81,7 @@ __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure)
   DensitySum sum{0.0f};
   if (active) {
     const Vec3 x_i = xyz(view.position[s]);
-    visit_team_layers<Lanes>(view, x_i, lane, [&](std::uint32_t t) { add_density_pair(sum, view, x_i, t); });
+    view.grid.for_each_candidate(x_i, lane, Lanes, [&](std::uint32_t t) { add_density_pair(sum, view, x_i, t); });
   }
   sum.delta = team_sum<Lanes>(sum.delta);
   if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s).volume_pressure;
@@ -97,13 +96,33 @@ __global__ void forces_kernel(SortedView view, CanonicalState state) {
   ForceSum sum = zero_force_sum();
   if (active) {
     const ForceParticle i = load_force_particle(view, s);
-    if (receives_forces(i)) visit_team_layers<Lanes>(view, i.x, lane, [&](std::uint32_t t) { add_force_pair(sum, i, view, t); });
+    if (receives_forces(i)) view.grid.for_each_candidate(i.x, lane, Lanes, [&](std::uint32_t t) { add_force_pair(sum, i, view, t); });
   }
   sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction)};
   if (active && lane == 0) apply_forces(view, state, s, sum);
 }
 
-constexpr unsigned kTeamLanes = 4;
+// Lanes per particle: the most (up to 8) that keep n * lanes within two waves of resident
+// threads. A small scene then has ~8x the threads in flight; a scene that fills the GPU on its
+// own keeps one lane per particle, which wastes no shuffles.
+unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads) {
+  unsigned lanes = 8;
+  while (lanes > 1 && particles * lanes > 2 * resident_threads) lanes /= 2;
+  return lanes;
+}
+
+// Calls launch(std::integral_constant<unsigned, L>) for the team size L = lanes, so each launch
+// site names its kernel once.
+template <class Launch>
+void with_team_lanes(unsigned lanes, Launch&& launch) {
+  switch (lanes) {
+    case 8: launch(std::integral_constant<unsigned, 8>{}); break;
+    case 4: launch(std::integral_constant<unsigned, 4>{}); break;
+    case 2: launch(std::integral_constant<unsigned, 2>{}); break;
+    default: launch(std::integral_constant<unsigned, 1>{}); break;
+  }
+}
+
 
 struct WrenchSum {
   __device__ Wrench operator()(const Wrench& a, const Wrench& b) const { return a + b; }
@@ -286,7 +305,7 @@ class CudaBackend final : public Backend {
   cudaGraph_t graph_ = nullptr;
   cudaGraphExec_t graph_exec_ = nullptr;
   std::array<cudaEvent_t, kPhaseCount + 1> events_{};
-  bool small_scene_ = false;  // too few particles to fill the GPU with one thread each
+  unsigned team_lanes_ = 1;  // lanes per particle in the neighbour sums (choose_team_lanes)
   double time_ = 0.0;
   bool stepped_ = false;
 };
@@ -418,7 +437,7 @@ CudaBackend::CudaBackend(ParticleSetup setup)
   cuda_check(cudaGetDeviceProperties(&properties, 0), "read device properties");
   const std::size_t resident_threads =
       static_cast<std::size_t>(properties.multiProcessorCount) * static_cast<std::size_t>(properties.maxThreadsPerMultiProcessor);
-  small_scene_ = std::size_t{n_} * kTeamLanes <= 2 * resident_threads;
+  team_lanes_ = choose_team_lanes(n_, resident_threads);
 
   cuda_check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "create stream");
   for (cudaEvent_t& e : events_) cuda_check(cudaEventCreate(&e), "create event");
@@ -463,9 +482,7 @@ DeformableView CudaBackend::deformable_view() {
                         stress_action_.data(),  deformation_.data(),     elastic_force_.data(), deformables_};
 }
 
-// Paper 3.2 as a kernel sequence: grid (keys, radix sort, cell ranges and cell-ordered copies),
-// densities, forces with leap-frog integration, rigid-body dynamics. Events between the phases
-// time them.
+// The neighbour grid: cell keys, radix sort, then the cell table and the cell-ordered copies.
 void CudaBackend::launch_grid(cudaStream_t stream) {
   const int bits = static_cast<int>(scene_.grid.total_bits());
   cell_keys_kernel<<<blocks_for(n_), kBlock, 0, stream>>>(position_.data(), n_, scene_.grid, keys_.data());
@@ -485,11 +502,10 @@ void CudaBackend::launch_elasticity(cudaStream_t stream) {
 }
 
 void CudaBackend::launch_density(cudaStream_t stream) {
-  if (small_scene_) {
-    density_kernel<kTeamLanes><<<blocks_for(std::size_t{n_} * kTeamLanes), kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
-  } else {
-    density_kernel<1><<<blocks_for(n_), kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
-  }
+  with_team_lanes(team_lanes_, [&](auto lanes) {
+    constexpr unsigned L = decltype(lanes)::value;
+    density_kernel<L><<<blocks_for(std::size_t{n_} * L), kBlock, 0, stream>>>(sorted_view(), volume_pressure_.data());
+  });
 }
 
 // Paper 3.2 as a kernel sequence: grid (keys, radix sort, cell table, cell-ordered copies),
@@ -508,11 +524,10 @@ void CudaBackend::record_step(cudaStream_t stream) {
   mark(2);
   launch_density(stream);
   mark(3);
-  if (small_scene_) {
-    forces_kernel<kTeamLanes><<<blocks_for(std::size_t{n_} * kTeamLanes), kBlock, 0, stream>>>(sorted_view(), canonical_state());
-  } else {
-    forces_kernel<1><<<blocks_for(n_), kBlock, 0, stream>>>(sorted_view(), canonical_state());
-  }
+  with_team_lanes(team_lanes_, [&](auto lanes) {
+    constexpr unsigned L = decltype(lanes)::value;
+    forces_kernel<L><<<blocks_for(std::size_t{n_} * L), kBlock, 0, stream>>>(sorted_view(), canonical_state());
+  });
   mark(4);
   if (!scene_.rigid_bodies.empty()) {
     const auto chunks = static_cast<unsigned>(rigid_chunks_.size());

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# The checks that need a GPU, on an already built tree: the cuda backend's tests (one step and
+# many steps against the reference, repeatability), compute-sanitizer memcheck and racecheck on a
+# short run of each sphere-drop scene, and the Figure 2 step-time benchmarks as JSON.
+#
+# Usage: scripts/gpu_checks.sh [BUILD_DIR] [OUT_DIR] [BENCHMARK_FILTER]
+#   BUILD_DIR         default build
+#   OUT_DIR           default results/gpu-checks; logs, test XML and benchmark JSON land here
+#   BENCHMARK_FILTER  Google Benchmark regex, default step/cuda (all media and sizes)
+# Exit code: the number of failed stages (0: all passed).
+set -uo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}
+out=${2:-results/gpu-checks}
+filter=${3:-step/cuda}
+mkdir -p "$out"
+failures=0
+
+stage() {  # stage NAME COMMAND...: runs COMMAND, logs to $out/NAME.log, counts a failure
+  local name=$1
+  shift
+  echo "== $name: $*"
+  local start=$SECONDS
+  if "$@" >"$out/$name.log" 2>&1; then
+    echo "   passed ($((SECONDS - start)) s)"
+  else
+    echo "   FAILED with exit code $? ($((SECONDS - start)) s); last lines of $out/$name.log:"
+    tail -n 15 "$out/$name.log"
+    failures=$((failures + 1))
+  fi
+}
+
+nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm --format=csv >"$out/device.csv" 2>&1
+cat "$out/device.csv"
+"$build/mssph" info | tee "$out/mssph_info.txt"
+
+stage one_step_tests "$build/tests/backends/test_one_step_agreement" --gtest_filter='*cuda*' \
+  --gtest_output="xml:$out/one_step_tests.xml"
+stage many_step_tests "$build/tests/backends/test_backend_agreement" --gtest_filter='*cuda*' \
+  --gtest_output="xml:$out/many_step_tests.xml"
+
+# A short coarse run of every medium: the fluid scene has fluid, a rigid sphere and a container;
+# the deformable one an elastic block with fixed particles, a rigid sphere and a boundary.
+short_run=(--backend cuda -q --set simulation/particle_spacing=0.04 --set simulation/duration=0.01)
+for scene in sphere_drop_fluid sphere_drop_deformable; do
+  for tool in memcheck racecheck; do
+    stage "${tool}_${scene}" compute-sanitizer --tool "$tool" --error-exitcode 9 \
+      "$build/mssph" run "configs/$scene.json" "${short_run[@]}" --out "$out/${tool}_${scene}.h5"
+    rm -f "$out/${tool}_${scene}.h5" "$out/${tool}_${scene}.h5.xdmf"
+  done
+done
+
+stage benchmarks "$build/benchmarks/mssph_backend_benchmarks" --benchmark_filter="$filter" \
+  --benchmark_min_time=0.2 --benchmark_out="$out/backend_benchmarks.json" --benchmark_out_format=json
+
+echo "gpu checks: $failures stage(s) failed; logs in $out"
+exit "$failures"
