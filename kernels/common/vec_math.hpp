@@ -70,6 +70,11 @@ MSSPH_HD Mat3 operator+(const Mat3& a, const Mat3& b) {
   for (int k = 0; k < 9; ++k) c.m[k] = a.m[k] + b.m[k];
   return c;
 }
+MSSPH_HD Mat3 operator-(const Mat3& a, const Mat3& b) {
+  Mat3 c;
+  for (int k = 0; k < 9; ++k) c.m[k] = a.m[k] - b.m[k];
+  return c;
+}
 MSSPH_HD Mat3 operator*(float s, const Mat3& a) {
   Mat3 c;
   for (int k = 0; k < 9; ++k) c.m[k] = s * a.m[k];

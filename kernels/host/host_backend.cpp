@@ -33,7 +33,6 @@ HostBackend::HostBackend(ParticleSetup setup) : setup_(std::move(setup)), scene_
   const std::size_t n = setup_.size();
   cell_start_.assign(std::size_t{scene_.grid.cell_count()} + 1, 0);
   sorted_id_.resize(n);
-  sorted_key_.resize(n);
   sorted_position_.resize(n);
   sorted_velocity_.resize(n);
   volume_pressure_.resize(n);
@@ -70,21 +69,16 @@ SortedView HostBackend::sorted_view() const {
 // same cell table and cell-ordered copies as the CUDA backend.
 void HostBackend::build_grid() {
   const std::size_t n = setup_.size();
-  const std::uint32_t cells = scene_.grid.cell_count();
   std::vector<std::uint32_t> key(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) key[i] = scene_.grid.key_of(xyz(scene_.position[i]));
-  std::vector<std::uint32_t> next(cells + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) ++next[key[i] + 1];
-  for (std::size_t k = 1; k < next.size(); ++k) next[k] += next[k - 1];
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t s = next[key[i]]++;
-    sorted_id_[s] = static_cast<std::uint32_t>(i);
-    sorted_key_[s] = key[i];
-  }
+  // The prefix sum of the cell counts is the cell table itself (the GPU finds it by binary search).
+  std::fill(cell_start_.begin(), cell_start_.end(), 0u);
+  for (std::size_t i = 0; i < n; ++i) ++cell_start_[key[i] + 1];
+  for (std::size_t k = 1; k < cell_start_.size(); ++k) cell_start_[k] += cell_start_[k - 1];
+  std::vector<std::uint32_t> next(cell_start_.begin(), cell_start_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) sorted_id_[next[key[i]]++] = static_cast<std::uint32_t>(i);
   const auto count = static_cast<std::uint32_t>(n);
-#pragma omp parallel for schedule(static)
-  for (std::uint32_t k = 0; k <= cells; ++k) cell_start_[k] = first_key_at_least(sorted_key_.data(), count, k);
 #pragma omp parallel for schedule(static)
   for (std::uint32_t s = 0; s < count; ++s) {
     place_in_cell_order(s, sorted_id_.data(), scene_.position.data(), scene_.velocity.data(), scene_.body.data(),
