@@ -114,6 +114,15 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
   scene.step.inverse_gradient_consistency = static_cast<float>(1.0 / setup.gradient_consistency);
   scene.step.particle_count = static_cast<std::uint32_t>(setup.size());
 
+  if (setup.size() > 0) {
+    Eigen::Vector3d lo = setup.position.front(), hi = setup.position.front();
+    for (const Eigen::Vector3d& x : setup.position) {
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    scene.origin = 0.5 * (lo + hi);
+  }
+
   for (const BodySetup& b : setup.bodies) {
     BodyParameters p{};
     p.kind = kind_code(b.kind);
@@ -130,7 +139,7 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
       r.mass = static_cast<float>(b.mass);
       const Eigen::Matrix3d inverse = b.inertia_body.inverse();
       for (int k = 0; k < 9; ++k) r.inverse_inertia_body.m[k] = static_cast<float>(inverse(k / 3, k % 3));
-      r.position = to_vec3(b.centre_of_mass);
+      r.position = scene.to_kernel_frame(b.centre_of_mass);
       r.orientation = {static_cast<float>(b.orientation.x()), static_cast<float>(b.orientation.y()),
                        static_cast<float>(b.orientation.z()), static_cast<float>(b.orientation.w())};
       r.velocity = to_vec3(b.velocity);
@@ -144,7 +153,7 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
   const std::size_t n = setup.size();
   scene.position.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
-    scene.position.push_back(to_vec4(setup.position[i]));
+    scene.position.push_back(make_vec4(scene.to_kernel_frame(setup.position[i]), 0.0f));
     scene.velocity.push_back(to_vec4(setup.velocity[i]));
     scene.rest_offset.push_back(to_vec4(setup.rest_offset[i]));
     scene.body.push_back(setup.body[i]);
@@ -155,12 +164,12 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
   return scene;
 }
 
-BodyState to_body_state(const BodySums& sums, const RigidBody* rigid, const BodySetup& body) {
+BodyState to_body_state(const FloatScene& scene, const BodySums& sums, const RigidBody* rigid, const BodySetup& body) {
   BodyState s;
   s.max_speed = std::sqrt(sums.max_speed);
   if (rigid) {
     s.mass = rigid->mass;
-    s.centre_of_mass = {rigid->position.x, rigid->position.y, rigid->position.z};
+    s.centre_of_mass = scene.to_world(rigid->position);
     s.linear_momentum = rigid->mass * Eigen::Vector3d(rigid->velocity.x, rigid->velocity.y, rigid->velocity.z);
     s.angular_momentum = {rigid->angular_momentum.x, rigid->angular_momentum.y, rigid->angular_momentum.z};
     s.orientation = Eigen::Quaterniond(rigid->orientation.w, rigid->orientation.x, rigid->orientation.y, rigid->orientation.z);
@@ -172,13 +181,14 @@ BodyState to_body_state(const BodySums& sums, const RigidBody* rigid, const Body
     return s;
   }
   s.mass = sums.mass;
-  s.centre_of_mass = to_eigen(sums.moment) / sums.mass;
+  const Eigen::Vector3d centre = to_eigen(sums.moment) / sums.mass;  // kernels' frame
+  s.centre_of_mass = scene.origin + centre;
   s.linear_momentum = to_eigen(sums.momentum);
-  // Shift from the origin to the centre of mass: L_c = L_o - c x p, tau_c = tau_o - c x F.
-  s.angular_momentum = to_eigen(sums.angular_origin) - s.centre_of_mass.cross(s.linear_momentum);
+  // Shift from the kernels' origin to the centre of mass: L_c = L_o - c x p, tau_c = tau_o - c x F.
+  s.angular_momentum = to_eigen(sums.angular_origin) - centre.cross(s.linear_momentum);
   s.kinetic_energy = sums.kinetic_energy;
   s.interaction_force = to_eigen(sums.force);
-  s.interaction_torque = to_eigen(sums.torque_origin) - s.centre_of_mass.cross(s.interaction_force);
+  s.interaction_torque = to_eigen(sums.torque_origin) - centre.cross(s.interaction_force);
   if (body.kind == BodyKind::rigid) s.orientation = body.orientation;  // a fixed rigid body
   return s;
 }

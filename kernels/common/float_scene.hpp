@@ -14,7 +14,11 @@
 
 namespace mssph::kernels {
 
+// Positions in the kernels are relative to `origin`, the centre of the scene's starting bounding
+// box, so float32 keeps its resolution (about 1e-7 of the distance to the origin) for elastic
+// displacements wherever the scene sits in the world.
 struct FloatScene {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // world position of the kernels' origin [m]
   StepParameters step;
   GridShape grid;
   std::vector<BodyParameters> bodies;
@@ -33,6 +37,12 @@ struct FloatScene {
   std::vector<std::uint32_t> bond_start;       // deformable particle d: bonds[bond_start[d] .. bond_start[d + 1])
   std::vector<RestBond> bonds;
   std::vector<float> rest_volume;              // V0 [m^3]
+
+  Vec3 to_kernel_frame(const Eigen::Vector3d& world) const {
+    const Eigen::Vector3d local = world - origin;
+    return {static_cast<float>(local.x()), static_cast<float>(local.y()), static_cast<float>(local.z())};
+  }
+  Eigen::Vector3d to_world(Vec3 local) const { return origin + Eigen::Vector3d(local.x, local.y, local.z); }
 };
 
 // Throws InputError for what the float backends do not run: damping of a deformable body that no
@@ -40,10 +50,12 @@ struct FloatScene {
 FloatScene make_float_scene(const ParticleSetup& setup);
 
 // Grid bits per axis: enough cells of side h to cover the starting bounding box (at least 4 per
-// axis), with at most about 2 cells per particle in all so the cell table stays small.
+// axis), with at most about 2 cells per particle in all so the cell table stays small. Positions
+// in the kernels' frame.
 GridShape choose_grid_shape(const std::vector<Vec4>& positions, double h);
 
-// A body's logged state from its particle sums, or from its rigid-body state when it moves as one.
-BodyState to_body_state(const BodySums& sums, const RigidBody* rigid, const BodySetup& body);
+// A body's logged state, in world coordinates, from its particle sums, or from its rigid-body
+// state when it moves as one.
+BodyState to_body_state(const FloatScene& scene, const BodySums& sums, const RigidBody* rigid, const BodySetup& body);
 
 }  // namespace mssph::kernels

@@ -587,8 +587,7 @@ void CudaBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& pos
   for (std::uint32_t i = 0; i < n_; ++i) {
     const std::uint32_t kind = scene_.bodies[scene_.body[i]].kind;
     if (kind == kFluid || kind == kDeformable) {
-      current[i] = Vec4{static_cast<float>(positions[i].x()), static_cast<float>(positions[i].y()),
-                        static_cast<float>(positions[i].z()), 0.0f};
+      current[i] = make_vec4(scene_.to_kernel_frame(positions[i]), 0.0f);
     }
   }
   position_.upload(current);
@@ -642,7 +641,7 @@ BodyState CudaBackend::rigid_body_state(std::size_t body) {
   BodySums sums = zero_body_sums();
   const double bound = norm(rigid.velocity) + norm(angular_velocity(rigid)) * rigid_reach_[index];
   sums.max_speed = bound * bound;
-  return to_body_state(sums, &rigid, setup_.bodies[body]);
+  return to_body_state(scene_, sums, &rigid, setup_.bodies[body]);
 }
 
 std::vector<BodyState> CudaBackend::body_states() {
@@ -663,7 +662,7 @@ std::vector<BodyState> CudaBackend::body_states() {
   std::vector<BodyState> states;
   for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
     const std::uint32_t r = scene_.bodies[b].rigid_index;
-    states.push_back(to_body_state(sums[b], r == kNotRigid ? nullptr : &rigid[r], setup_.bodies[b]));
+    states.push_back(to_body_state(scene_, sums[b], r == kNotRigid ? nullptr : &rigid[r], setup_.bodies[b]));
   }
   return states;
 }
@@ -678,7 +677,9 @@ ParticleSnapshot CudaBackend::snapshot() {
   out.position.reserve(3 * n_);
   out.velocity.reserve(3 * n_);
   for (std::uint32_t i = 0; i < n_; ++i) {
-    out.position.insert(out.position.end(), {position[i].x, position[i].y, position[i].z});
+    const Eigen::Vector3d world = scene_.to_world(xyz(position[i]));
+    out.position.insert(out.position.end(),
+                        {static_cast<float>(world.x()), static_cast<float>(world.y()), static_cast<float>(world.z())});
     out.velocity.insert(out.velocity.end(), {velocity[i].x, velocity[i].y, velocity[i].z});
   }
   // Densities and pressures of the last force evaluation, back in canonical order.

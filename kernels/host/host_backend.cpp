@@ -200,7 +200,7 @@ ForceEvaluation HostBackend::evaluate_forces() {
 void HostBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& positions) {
   for (std::size_t i = 0; i < setup_.size(); ++i) {
     const std::uint32_t kind = scene_.bodies[scene_.body[i]].kind;
-    if (kind == kFluid || kind == kDeformable) scene_.position[i] = make_vec4(to_vec3(positions[i]), 0.0f);
+    if (kind == kFluid || kind == kDeformable) scene_.position[i] = make_vec4(scene_.to_kernel_frame(positions[i]), 0.0f);
   }
 }
 
@@ -214,7 +214,7 @@ std::vector<BodyState> HostBackend::body_states() {
       add_particle(sums, xyz(scene_.position[i]), xyz(scene_.velocity[i]), mass, xyz(interaction_force_[i]));
     }
     const std::uint32_t rigid = scene_.bodies[b].rigid_index;
-    states.push_back(to_body_state(sums, rigid == kNotRigid ? nullptr : &scene_.rigid_bodies[rigid], body));
+    states.push_back(to_body_state(scene_, sums, rigid == kNotRigid ? nullptr : &scene_.rigid_bodies[rigid], body));
   }
   return states;
 }
@@ -225,7 +225,7 @@ BodyState HostBackend::rigid_body_state(std::size_t body) {
   for (std::uint32_t i = rigid.first; i < rigid.first + rigid.count; ++i) {
     add_particle(sums, xyz(scene_.position[i]), xyz(scene_.velocity[i]), 0.0f, Vec3{0, 0, 0});
   }
-  return to_body_state(sums, &rigid, setup_.bodies[body]);
+  return to_body_state(scene_, sums, &rigid, setup_.bodies[body]);
 }
 
 ParticleSnapshot HostBackend::snapshot() {
@@ -236,7 +236,8 @@ ParticleSnapshot HostBackend::snapshot() {
   out.density.resize(n);
   out.pressure.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const float p[3] = {scene_.position[i].x, scene_.position[i].y, scene_.position[i].z};
+    const Eigen::Vector3d world = scene_.to_world(xyz(scene_.position[i]));
+    const float p[3] = {static_cast<float>(world.x()), static_cast<float>(world.y()), static_cast<float>(world.z())};
     const float v[3] = {scene_.velocity[i].x, scene_.velocity[i].y, scene_.velocity[i].z};
     for (int a = 0; a < 3; ++a) {
       out.position[3 * i + static_cast<std::size_t>(a)] = p[a];
