@@ -3,10 +3,32 @@
 #include "commands.hpp"
 #include "util/build_info.hpp"
 #include "util/host_info.hpp"
+#ifdef MSSPH_HAVE_CUDA_BACKEND
+#include "cuda/cuda_backend.hpp"
+#endif
 
 #include <iostream>
 
 namespace mssph::cli {
+
+namespace {
+
+// One line per visible CUDA device, or why there are none.
+void print_gpus() {
+#ifdef MSSPH_HAVE_CUDA_BACKEND
+  const std::vector<kernels::CudaDeviceInfo> devices = kernels::cuda_devices();
+  if (devices.empty()) std::cout << "  GPUs:         none visible (no CUDA driver or device)\n";
+  for (const kernels::CudaDeviceInfo& d : devices) {
+    std::cout << "  GPU " << d.index << ":        " << d.name << ", compute capability " << d.compute_major << "."
+              << d.compute_minor << ", " << d.multiprocessors << " multiprocessors, "
+              << d.total_memory / (1024 * 1024) << " MiB\n";
+  }
+#else
+  std::cout << "  GPUs:         not used (built without the CUDA backend)\n";
+#endif
+}
+
+}  // namespace
 
 void add_info_command(CLI::App& app, int& exit_code) {
   CLI::App* info = app.add_subcommand("info", "Print version, build options, backends and devices");
@@ -21,6 +43,7 @@ void add_info_command(CLI::App& app, int& exit_code) {
               << "  backends:    ";
     for (const std::string& name : available_backends()) std::cout << " " << name;
     std::cout << "\n";
+    print_gpus();
     exit_code = 0;
   });
 }

@@ -2,6 +2,9 @@
 // and nothing written (the working directory, where the default output would go, stays empty).
 #include "backend_factory.hpp"
 #include "cli_fixture.hpp"
+#ifdef MSSPH_HAVE_CUDA_BACKEND
+#include "cuda/cuda_backend.hpp"
+#endif
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -64,6 +67,17 @@ TEST_F(BadInput, BackendNotBuilt) {
     tried = true;
   }
   if (!tried) GTEST_SKIP() << "this build has every backend";
+}
+
+// A build with the CUDA backend on a machine without a GPU (as CI): asking for it is bad input
+// that says what to use instead.
+TEST_F(BadInput, CudaWithoutADevice) {
+#ifdef MSSPH_HAVE_CUDA_BACKEND
+  if (!kernels::cuda_devices().empty()) GTEST_SKIP() << "a CUDA device is present";
+  expect_rejected({"run", kScene, "--backend", "cuda"}, {"--backend cuda", "no CUDA device", "--backend cpu"});
+#else
+  GTEST_SKIP() << "built without the CUDA backend (BackendNotBuilt covers this build)";
+#endif
 }
 
 TEST_F(BadInput, OutIsADirectory) {

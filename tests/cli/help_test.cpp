@@ -43,6 +43,7 @@ TEST_F(Help, InfoNamesVersionAndBackends) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   expect_mentions(r.out, {"mssph " + build_info().version, build_info().git_commit});
   expect_mentions(r.out, available_backends());
+  expect_mentions(r.out, {"GPU"});  // a line per device, or why none is used
 }
 
 TEST_F(Help, NoSubcommandIsBadInput) {
