@@ -33,11 +33,14 @@ void set_rigid_mass_properties(BodySetup& body, const std::vector<Vector3d>& wor
   body.inertia_body = inertia;
 }
 
-// Rejects particles of different bodies closer than half a spacing: such a start state would
-// explode at the first step. A hash grid of cell size dx keeps this linear.
-void check_overlaps(const ParticleSetup& setup) {
+// Each particle stands for the cube of side dx around its lattice site, aligned with its body. A
+// particle of one body inside (or on the boundary of) a cube of another body means their volumes
+// overlap by half a spacing or more, e.g. a ball placed inside a block whatever the offset of
+// their lattices: such a start state would explode at the first step. Tested on the lattice sites
+// before jitter; a hash grid of cell size dx keeps this linear.
+void check_overlaps(const Scene& scene, const ParticleSetup& setup, const std::vector<Vector3d>& site) {
   const double dx = setup.spacing;
-  const double min_distance = 0.5 * dx;
+  const double half = 0.5 * dx * (1.0 + 1e-9);  // boundary included: interleaved lattices overlap
   struct KeyHash {
     std::size_t operator()(const Eigen::Vector3i& c) const {
       return (static_cast<std::size_t>(c.x()) * 73856093u) ^ (static_cast<std::size_t>(c.y()) * 19349663u) ^
@@ -46,25 +49,27 @@ void check_overlaps(const ParticleSetup& setup) {
   };
   std::unordered_map<Eigen::Vector3i, std::vector<std::size_t>, KeyHash> cells;
   const auto cell_of = [&](const Vector3d& x) { return Eigen::Vector3i((x / dx).array().floor().cast<int>()); };
-  for (std::size_t i = 0; i < setup.size(); ++i) cells[cell_of(setup.position[i])].push_back(i);
+  for (std::size_t i = 0; i < setup.size(); ++i) cells[cell_of(site[i])].push_back(i);
+  std::vector<Eigen::Matrix3d> to_body_frame;
+  for (const BodySetup& b : setup.bodies) to_body_frame.push_back(b.orientation.toRotationMatrix().transpose());
   for (std::size_t i = 0; i < setup.size(); ++i) {
-    const Eigen::Vector3i c = cell_of(setup.position[i]);
+    const Eigen::Vector3i c = cell_of(site[i]);
     for (int dz = -1; dz <= 1; ++dz) {
       for (int dy = -1; dy <= 1; ++dy) {
         for (int dxc = -1; dxc <= 1; ++dxc) {
           const auto it = cells.find(c + Eigen::Vector3i(dxc, dy, dz));
           if (it == cells.end()) continue;
           for (std::size_t j : it->second) {
-            if (setup.body[j] <= setup.body[i]) continue;  // each pair of bodies once
-            if ((setup.position[i] - setup.position[j]).norm() < min_distance) {
-              std::ostringstream where;
-              where << "[" << setup.position[i].x() << ", " << setup.position[i].y() << ", "
-                    << setup.position[i].z() << "]";
-              throw InputError(
-                  "bodies \"" + setup.bodies[setup.body[i]].name + "\" and \"" + setup.bodies[setup.body[j]].name +
-                  "\" overlap: particles closer than half a particle spacing near " + where.str() +
-                  " m; move them apart");
-            }
+            if (setup.body[j] == setup.body[i]) continue;
+            const Vector3d offset = to_body_frame[setup.body[j]] * (site[i] - site[j]);
+            if (offset.cwiseAbs().maxCoeff() > half) continue;
+            const std::string& a = setup.bodies[setup.body[std::min(i, j)]].name;
+            const std::string& b = setup.bodies[setup.body[std::max(i, j)]].name;
+            std::ostringstream where;
+            where << "[" << site[i].x() << ", " << site[i].y() << ", " << site[i].z() << "]";
+            throw InputError(scene.source_file + ": /bodies/" + b + "/position: bodies \"" + a + "\" and \"" + b +
+                             "\" overlap near " + where.str() + " m (their particles' cells of side " +
+                             std::to_string(dx) + " m intersect by half a spacing or more); move them apart");
           }
         }
       }
@@ -88,6 +93,7 @@ ParticleSetup build_particles(const Scene& scene) {
   std::mt19937_64 random(sim.seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   const double jitter = sim.jitter * sim.particle_spacing;
+  std::vector<Vector3d> lattice_site;  // every particle's position before jitter
 
   for (const BodyConfig& config : scene.bodies) {
     const std::vector<Vector3d> local = sample_shape(config.shape, sim.particle_spacing);
@@ -112,6 +118,7 @@ ParticleSetup build_particles(const Scene& scene) {
     world.reserve(local.size());
     for (const Vector3d& p : local) {
       Vector3d x = config.position + rotation * p;
+      lattice_site.push_back(x);
       if (jitter > 0.0) x += jitter * Vector3d(unit(random), unit(random), unit(random));
       world.push_back(x);
     }
@@ -144,7 +151,7 @@ ParticleSetup build_particles(const Scene& scene) {
     }
     setup.bodies.push_back(body);
   }
-  check_overlaps(setup);
+  check_overlaps(scene, setup, lattice_site);
   return setup;
 }
 

@@ -244,11 +244,24 @@ TEST(SceneBuilder, RejectsAnEmptyBodyByName) {
   EXPECT_THAT(message, HasSubstr("make it larger or the spacing smaller"));
 }
 
-TEST(SceneBuilder, RejectsOverlappingBodiesNamingBoth) {
+TEST(SceneBuilder, RejectsOverlappingBodiesNamingFileKeyAndBoth) {
   const Scene scene = scene_of({{"left", body("fluid", box({0.1, 0.1, 0.1}))},
                                 {"right", body("rigid", box({0.1, 0.1, 0.1}), {0.05, 0.0, 0.0})}});
   EXPECT_THAT(input_error_of([&] { build_particles(scene); }),
-              StartsWith("bodies \"left\" and \"right\" overlap: particles closer than half a particle spacing"));
+              StartsWith("builder_test.json: /bodies/right/position: bodies \"left\" and \"right\" overlap near"));
+}
+
+TEST(SceneBuilder, RejectsABodyInsideAnotherWhateverTheirLatticesOffset) {
+  // A ball inside a block, its lattice shifted by half a spacing on every axis: no particle pair
+  // is closer than 0.87 dx, yet the volumes coincide.
+  const double shift = 0.5 * kDx;
+  json ball = body("rigid", {{"type", "sphere"}, {"radius", 0.05}}, {shift, shift, shift});
+  const Scene scene = scene_of({{"block", body("deformable", box({0.3, 0.3, 0.3}))}, {"ball", ball}});
+  EXPECT_THAT(input_error_of([&] { build_particles(scene); }), HasSubstr("bodies \"ball\" and \"block\" overlap"));
+  // Rotated by 45 degrees about z, the block still holds it.
+  json turned = body("deformable", box({0.3, 0.3, 0.3}));
+  turned["orientation"] = {0.0, 0.0, std::sin(std::numbers::pi / 8), std::cos(std::numbers::pi / 8)};
+  EXPECT_THROW(build_particles(scene_of({{"block", turned}, {"ball", ball}})), InputError);
 }
 
 TEST(SceneBuilder, OverlapMeansCloserThanHalfASpacing) {
