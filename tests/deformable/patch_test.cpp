@@ -77,6 +77,7 @@ std::vector<Matrix3d> interior_stresses(reference::ReferenceBackend& backend, co
   for (std::size_t i : testing::interior_particles(backend, 0, backend.setup().smoothing_length)) {
     stresses.push_back(backend.deformables().stress[i]);
   }
+  EXPECT_GT(stresses.size(), 100u) << "the block must have interior particles for the test to mean anything";
   return stresses;
 }
 
@@ -90,7 +91,6 @@ TEST(PatchTest, UniaxialStressGivesYoungsModulus) {
     reference::ReferenceBackend backend = block(true, strain);
     const double e = 1e-3;
     const std::vector<Matrix3d> stresses = interior_stresses(backend, uniaxial_stress_stretch(e));
-    ASSERT_GT(stresses.size(), 100u);
     for (const Matrix3d& sigma : stresses) {
       EXPECT_NEAR(sigma(0, 0) / (kYoung * e), 1.0, 0.02) << strain;
       EXPECT_NEAR(sigma(1, 1) / (kYoung * e), 0.0, 0.02) << strain << ": lateral faces are stress-free";

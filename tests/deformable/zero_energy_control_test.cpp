@@ -48,7 +48,9 @@ void add_hourglass_mode(reference::ReferenceBackend& backend, double amplitude) 
 
 // Particles at least 2 h inside: they and all their neighbours have complete neighbourhoods.
 std::vector<std::size_t> deep_interior(const reference::ReferenceBackend& backend) {
-  return testing::interior_particles(backend, 0, 2.0 * backend.setup().smoothing_length);
+  std::vector<std::size_t> deep = testing::interior_particles(backend, 0, 2.0 * backend.setup().smoothing_length);
+  EXPECT_FALSE(deep.empty()) << "the block must have a deep interior for the test to mean anything";
+  return deep;
 }
 
 // The mode's amplitude over the deep interior, in units of `amplitude`.
