@@ -10,6 +10,7 @@
 #include <cub/cub.cuh>
 
 #include <array>
+#include <cstring>
 #include <sstream>
 #include <type_traits>
 
@@ -299,7 +300,15 @@ class CudaBackend final : public Backend {
   DeviceBuffer<std::uint32_t> rigid_tickets_;  // per rigid body: chunks done this step
   std::vector<BodyChunk> body_chunks_host_;
   DeviceBuffer<BodyChunk> body_chunks_;
-  DeviceBuffer<BodySums> chunk_sums_;
+  // What a logged sample reads back, in one allocation so that it comes back in one copy: the
+  // body-sum partials of every chunk, then a copy of the rigid bodies' states.
+  DeviceBuffer<unsigned char> readback_;
+  std::size_t readback_rigid_offset_ = 0;
+  BodySums* readback_sums() { return reinterpret_cast<BodySums*>(readback_.data()); }
+  RigidBody* readback_rigid() { return reinterpret_cast<RigidBody*>(readback_.data() + readback_rigid_offset_); }
+  std::vector<RigidBody> rigid_host_;     // the rigid bodies as last read back...
+  std::uint64_t rigid_host_step_ = ~0ull;  // ...after this many steps
+  std::uint64_t steps_ = 0;
 
   cudaStream_t stream_ = nullptr;
   cudaGraph_t graph_ = nullptr;
@@ -342,6 +351,9 @@ void require_usable_device(std::string& name) {
   }
 }
 
+// Where the rigid bodies start in the read-back buffer: after the chunk sums, 16-byte aligned.
+std::size_t readback_rigid_offset(std::size_t body_chunks) { return (body_chunks * sizeof(BodySums) + 15) / 16 * 16; }
+
 // Every device allocation the backend makes for a scene.
 std::size_t scene_bytes(const FloatScene& scene, std::size_t sort_bytes) {
   const std::size_t n = scene.position.size();
@@ -351,7 +363,7 @@ std::size_t scene_bytes(const FloatScene& scene, std::size_t sort_bytes) {
   const std::size_t rigid_chunks = n / kChunk + scene.rigid_bodies.size();
   const std::size_t body_chunks = n / kChunk + scene.bodies.size();
   const std::size_t bodies = scene.bodies.size() * sizeof(BodyParameters) + body_chunks * (sizeof(BodyChunk) + sizeof(BodySums)) +
-                             scene.rigid_bodies.size() * (sizeof(RigidBody) + sizeof(std::uint32_t)) +
+                             scene.rigid_bodies.size() * (2 * sizeof(RigidBody) + sizeof(std::uint32_t)) + 16 +
                              rigid_chunks * (sizeof(RigidChunk) + sizeof(Wrench));
   const std::size_t deformable = scene.deformable_body.empty()
                                      ? 0
@@ -425,7 +437,8 @@ CudaBackend::CudaBackend(ParticleSetup setup)
     for (std::uint32_t f = first; f < end; f += kChunk) body_chunks_host_.push_back({b, f, std::min(kChunk, end - f)});
   }
   body_chunks_ = DeviceBuffer<BodyChunk>(body_chunks_host_);
-  chunk_sums_ = DeviceBuffer<BodySums>(body_chunks_host_.size());
+  readback_rigid_offset_ = readback_rigid_offset(body_chunks_host_.size());
+  readback_ = DeviceBuffer<unsigned char>(readback_rigid_offset_ + scene_.rigid_bodies.size() * sizeof(RigidBody));
   for (const RigidBody& r : scene_.rigid_bodies) {
     float reach = 0.0f;
     for (std::uint32_t i = r.first; i < r.first + r.count; ++i) reach = std::max(reach, norm(xyz(scene_.rest_offset[i])));
@@ -596,6 +609,7 @@ void CudaBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& pos
 void CudaBackend::step() {
   cuda_check(cudaGraphLaunch(graph_exec_, stream_), "launch step graph");
   time_ += setup_.dt;
+  ++steps_;
   stepped_ = true;
 }
 
@@ -630,39 +644,49 @@ void CudaBackend::set_external_wrench(std::size_t body, const Eigen::Vector3d& f
              "upload external wrench");
 }
 
-// One small device-to-host copy: what a haptic tick needs. The fastest particle's speed is
-// bounded by |v| + |omega| r_max instead of being summed over the particles.
+// What a haptic tick needs: one small device-to-host copy, or none when a logged sample has read
+// every body back since the last step. The fastest particle's speed is bounded by
+// |v| + |omega| r_max instead of being summed over the particles.
 BodyState CudaBackend::rigid_body_state(std::size_t body) {
   const std::uint32_t index = rigid_index(body);
   RigidBody rigid{};
-  cuda_check(cudaMemcpyAsync(&rigid, rigid_bodies_.data() + index, sizeof rigid, cudaMemcpyDeviceToHost, stream_),
-             "download rigid body");
-  cuda_check(cudaStreamSynchronize(stream_), "download rigid body");
+  if (rigid_host_step_ == steps_) {
+    rigid = rigid_host_[index];
+  } else {
+    cuda_check(cudaMemcpyAsync(&rigid, rigid_bodies_.data() + index, sizeof rigid, cudaMemcpyDeviceToHost, stream_),
+               "download rigid body");
+    cuda_check(cudaStreamSynchronize(stream_), "download rigid body");
+  }
   BodySums sums = zero_body_sums();
   const double bound = norm(rigid.velocity) + norm(angular_velocity(rigid)) * rigid_reach_[index];
   sums.max_speed = bound * bound;
   return to_body_state(scene_, sums, &rigid, setup_.bodies[body]);
 }
 
+// The chunk sums and a device-side copy of the rigid bodies land side by side in the read-back
+// buffer, which comes back in one copy.
 std::vector<BodyState> CudaBackend::body_states() {
   body_sums_kernel<<<static_cast<unsigned>(body_chunks_host_.size()), kBlock, 0, stream_>>>(
-      body_chunks_.data(), bodies_.data(), canonical_state(), chunk_sums_.data());
+      body_chunks_.data(), bodies_.data(), canonical_state(), readback_sums());
   cuda_check(cudaGetLastError(), "launch body sums");
-  std::vector<BodySums> partial(body_chunks_host_.size());
-  cuda_check(cudaMemcpyAsync(partial.data(), chunk_sums_.data(), chunk_sums_.bytes(), cudaMemcpyDeviceToHost, stream_),
-             "download body sums");
-  std::vector<RigidBody> rigid(scene_.rigid_bodies.size());
-  if (!rigid.empty()) {
-    cuda_check(cudaMemcpyAsync(rigid.data(), rigid_bodies_.data(), rigid_bodies_.bytes(), cudaMemcpyDeviceToHost, stream_),
-               "download rigid bodies");
+  if (!scene_.rigid_bodies.empty()) {
+    cuda_check(cudaMemcpyAsync(readback_rigid(), rigid_bodies_.data(), rigid_bodies_.bytes(), cudaMemcpyDeviceToDevice, stream_),
+               "gather rigid bodies");
   }
+  std::vector<unsigned char> bytes(readback_.bytes());
+  cuda_check(cudaMemcpyAsync(bytes.data(), readback_.data(), bytes.size(), cudaMemcpyDeviceToHost, stream_), "download body states");
   cuda_check(cudaStreamSynchronize(stream_), "body states");
+  std::vector<BodySums> partial(body_chunks_host_.size());
+  std::memcpy(partial.data(), bytes.data(), partial.size() * sizeof(BodySums));
+  rigid_host_.resize(scene_.rigid_bodies.size());
+  std::memcpy(rigid_host_.data(), bytes.data() + readback_rigid_offset_, rigid_host_.size() * sizeof(RigidBody));
+  rigid_host_step_ = steps_;
   std::vector<BodySums> sums(setup_.bodies.size(), zero_body_sums());
   for (std::size_t c = 0; c < partial.size(); ++c) sums[body_chunks_host_[c].body] = combine(sums[body_chunks_host_[c].body], partial[c]);
   std::vector<BodyState> states;
   for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
     const std::uint32_t r = scene_.bodies[b].rigid_index;
-    states.push_back(to_body_state(scene_, sums[b], r == kNotRigid ? nullptr : &rigid[r], setup_.bodies[b]));
+    states.push_back(to_body_state(scene_, sums[b], r == kNotRigid ? nullptr : &rigid_host_[r], setup_.bodies[b]));
   }
   return states;
 }
