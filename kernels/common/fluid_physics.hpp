@@ -136,23 +136,7 @@ MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, std::ui
   leapfrog(c.position[i], c.velocity[i], total, body.sph_mass, c.fixed[i] != 0, v.step);
 }
 
-// ---- The grid's last stages, after the keys are sorted ----
-
-// cell_start[k]: the first sorted particle whose key is not below k (binary search), for every
-// k in [0, cell count]: one independent search per cell, so all cells fill at once.
-MSSPH_HD std::uint32_t first_key_at_least(const std::uint32_t* sorted_keys, std::uint32_t n, std::uint32_t k) {
-  std::uint32_t lo = 0;
-  std::uint32_t hi = n;
-  while (lo < hi) {
-    const std::uint32_t mid = lo + (hi - lo) / 2;
-    if (sorted_keys[mid] < k) {
-      lo = mid + 1;
-    } else {
-      hi = mid;
-    }
-  }
-  return lo;
-}
+// ---- The grid's last stage: particles in cell order ----
 
 // Copies sorted particle s's position (with its body index) and velocity into cell order.
 MSSPH_HD void place_in_cell_order(std::uint32_t s, const std::uint32_t* sorted_id, const Vec4* position,

@@ -23,25 +23,50 @@ unsigned blocks_for(std::size_t n) { return static_cast<unsigned>((n + kBlock - 
 
 // ---- Kernels: each is a thin loop around one of the shared per-particle functions. ----
 
-__global__ void cell_keys_kernel(const Vec4* position, std::uint32_t n, GridShape grid, std::uint32_t* keys) {
+// The neighbour grid by a counting sort in three launches, stable like a sort of (key, index)
+// pairs (the cpu backend's order), so every run lays the particles out alike:
+// 1. each particle's cell key, and a count per cell (integer atomics: the counts, not their
+//    order, are kept);
+// 2. an exclusive scan of the counts: the cell table, cell_start[k] = particles in cells below k;
+// 3. each particle takes a slot in its cell's range (atomically, in no fixed order) and gives
+//    back its count, so the counts are zero again for the next step; then
+// 4. one thread per cell sorts its few slots by particle index (insertion sort), which makes
+//    the order within a cell canonical; then one thread per particle copies it into cell order.
+__global__ void cell_count_kernel(const Vec4* position, std::uint32_t n, GridShape grid, std::uint32_t* keys,
+                                  std::uint32_t* cell_count) {
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i < n) keys[i] = grid.key_of(xyz(position[i]));
+  if (i >= n) return;
+  const std::uint32_t key = grid.key_of(xyz(position[i]));
+  keys[i] = key;
+  atomicAdd(&cell_count[key], 1u);
 }
 
-__global__ void identity_kernel(std::uint32_t n, std::uint32_t* values) {
+__global__ void cell_slot_kernel(const std::uint32_t* keys, std::uint32_t n, const std::uint32_t* cell_start,
+                                 std::uint32_t* cell_count, std::uint32_t* sorted_id) {
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i < n) values[i] = i;
+  if (i >= n) return;
+  const std::uint32_t key = keys[i];
+  sorted_id[cell_start[key] + atomicSub(&cell_count[key], 1u) - 1u] = i;
 }
 
-// The grid's last stages in one launch over max(n, cells + 1) threads: thread t fills cell_start[t]
-// and copies sorted particle t into cell order.
-__global__ void cell_table_kernel(const std::uint32_t* sorted_keys, std::uint32_t n, std::uint32_t cells,
-                                  std::uint32_t* cell_start, const std::uint32_t* sorted_id, const Vec4* position,
+__global__ void cell_sort_kernel(std::uint32_t cells, const std::uint32_t* cell_start, std::uint32_t* sorted_id) {
+  const std::uint32_t k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k >= cells) return;
+  const std::uint32_t first = cell_start[k];
+  const std::uint32_t end = cell_start[k + 1];
+  for (std::uint32_t s = first + 1; s < end; ++s) {
+    const std::uint32_t id = sorted_id[s];
+    std::uint32_t t = s;
+    for (; t > first && sorted_id[t - 1] > id; --t) sorted_id[t] = sorted_id[t - 1];
+    sorted_id[t] = id;
+  }
+}
+
+__global__ void cell_order_kernel(std::uint32_t n, const std::uint32_t* sorted_id, const Vec4* position,
                                   const Vec4* velocity, const std::uint32_t* body, Vec4* sorted_position,
                                   Vec4* sorted_velocity) {
-  const std::uint32_t t = blockIdx.x * blockDim.x + threadIdx.x;
-  if (t <= cells) cell_start[t] = first_key_at_least(sorted_keys, n, t);
-  if (t < n) place_in_cell_order(t, sorted_id, position, velocity, body, sorted_position, sorted_velocity);
+  const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
+  if (s < n) place_in_cell_order(s, sorted_id, position, velocity, body, sorted_position, sorted_velocity);
 }
 
 // For comparisons: the pressure and viscosity sums of every sorted particle, not integrated.
@@ -278,11 +303,11 @@ class CudaBackend final : public Backend {
   DeviceBuffer<std::uint32_t> body_;
   DeviceBuffer<std::uint8_t> fixed_;
   // Grid and cell-ordered copies.
-  DeviceBuffer<std::uint32_t> keys_, sorted_keys_, identity_, sorted_id_, cell_start_;
+  DeviceBuffer<std::uint32_t> keys_, sorted_id_, cell_count_, cell_start_;
   DeviceBuffer<Vec4> sorted_position_, sorted_velocity_;
   DeviceBuffer<VolumePressure> volume_pressure_;
-  DeviceBuffer<unsigned char> sort_storage_;
-  std::size_t sort_storage_bytes_ = 0;
+  DeviceBuffer<unsigned char> scan_storage_;
+  std::size_t scan_storage_bytes_ = 0;
   // Deformable bodies.
   std::uint32_t deformables_ = 0;
   DeviceBuffer<ElasticParameters> elastic_bodies_;
@@ -319,13 +344,12 @@ class CudaBackend final : public Backend {
   bool stepped_ = false;
 };
 
-std::size_t sort_temp_bytes(std::uint32_t n, int bits) {
+// Temporary storage of the cell table's scan over cells + 1 counts.
+std::size_t scan_temp_bytes(std::uint32_t cells) {
   std::size_t bytes = 0;
-  cuda_check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, static_cast<const std::uint32_t*>(nullptr),
-                                             static_cast<std::uint32_t*>(nullptr),
-                                             static_cast<const std::uint32_t*>(nullptr),
-                                             static_cast<std::uint32_t*>(nullptr), n, 0, bits),
-             "size the radix sort");
+  cuda_check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, static_cast<const std::uint32_t*>(nullptr),
+                                           static_cast<std::uint32_t*>(nullptr), cells + 1),
+             "size the cell-table scan");
   return bytes;
 }
 
@@ -355,11 +379,11 @@ void require_usable_device(std::string& name) {
 std::size_t readback_rigid_offset(std::size_t body_chunks) { return (body_chunks * sizeof(BodySums) + 15) / 16 * 16; }
 
 // Every device allocation the backend makes for a scene.
-std::size_t scene_bytes(const FloatScene& scene, std::size_t sort_bytes) {
+std::size_t scene_bytes(const FloatScene& scene, std::size_t scan_bytes) {
   const std::size_t n = scene.position.size();
   const std::size_t canonical = 4 * sizeof(Vec4) + sizeof(std::uint32_t) + sizeof(std::uint8_t);
-  const std::size_t grid = 4 * sizeof(std::uint32_t) + 2 * sizeof(Vec4) + sizeof(VolumePressure);
-  const std::size_t cells = (std::size_t{scene.grid.cell_count()} + 1) * sizeof(std::uint32_t);
+  const std::size_t grid = 2 * sizeof(std::uint32_t) + 2 * sizeof(Vec4) + sizeof(VolumePressure);
+  const std::size_t cells = 2 * (std::size_t{scene.grid.cell_count()} + 1) * sizeof(std::uint32_t);
   const std::size_t rigid_chunks = n / kChunk + scene.rigid_bodies.size();
   const std::size_t body_chunks = n / kChunk + scene.bodies.size();
   const std::size_t bodies = scene.bodies.size() * sizeof(BodyParameters) + body_chunks * (sizeof(BodyChunk) + sizeof(BodySums)) +
@@ -370,15 +394,14 @@ std::size_t scene_bytes(const FloatScene& scene, std::size_t sort_bytes) {
                                      : n * sizeof(Vec4) + scene.bonds.size() * sizeof(RestBond) +
                                            scene.deformable_body.size() * (2 * sizeof(std::uint32_t) + sizeof(float) +
                                                                            sizeof(Quat) + 2 * sizeof(Mat3));
-  return n * (canonical + grid) + cells + bodies + deformable + sort_bytes;
+  return n * (canonical + grid) + cells + bodies + deformable + scan_bytes;
 }
 
 CudaBackend::CudaBackend(ParticleSetup setup)
     : setup_(std::move(setup)), scene_(make_float_scene(setup_)), n_(static_cast<std::uint32_t>(setup_.size())) {
   require_usable_device(device_name_);
-  const int bits = static_cast<int>(scene_.grid.total_bits());
-  sort_storage_bytes_ = sort_temp_bytes(n_, bits);
-  const std::size_t needed = scene_bytes(scene_, sort_storage_bytes_);
+  scan_storage_bytes_ = scan_temp_bytes(scene_.grid.cell_count());
+  const std::size_t needed = scene_bytes(scene_, scan_storage_bytes_);
   std::size_t free_bytes = 0;
   std::size_t total_bytes = 0;
   cuda_check(cudaMemGetInfo(&free_bytes, &total_bytes), "read free device memory");
@@ -407,14 +430,13 @@ CudaBackend::CudaBackend(ParticleSetup setup)
   body_ = DeviceBuffer<std::uint32_t>(scene_.body);
   fixed_ = DeviceBuffer<std::uint8_t>(scene_.fixed);
   keys_ = DeviceBuffer<std::uint32_t>(n_);
-  sorted_keys_ = DeviceBuffer<std::uint32_t>(n_);
-  identity_ = DeviceBuffer<std::uint32_t>(n_);
   sorted_id_ = DeviceBuffer<std::uint32_t>(n_);
+  cell_count_ = DeviceBuffer<std::uint32_t>(std::vector<std::uint32_t>(std::size_t{scene_.grid.cell_count()} + 1, 0u));
   cell_start_ = DeviceBuffer<std::uint32_t>(std::size_t{scene_.grid.cell_count()} + 1);
   sorted_position_ = DeviceBuffer<Vec4>(n_);
   sorted_velocity_ = DeviceBuffer<Vec4>(n_);
   volume_pressure_ = DeviceBuffer<VolumePressure>(std::vector<VolumePressure>(n_, VolumePressure{0, 0}));
-  sort_storage_ = DeviceBuffer<unsigned char>(sort_storage_bytes_);
+  scan_storage_ = DeviceBuffer<unsigned char>(scan_storage_bytes_);
   bodies_ = DeviceBuffer<BodyParameters>(scene_.bodies);
   rigid_bodies_ = DeviceBuffer<RigidBody>(scene_.rigid_bodies);
   std::vector<RigidChunk> chunks;
@@ -454,8 +476,6 @@ CudaBackend::CudaBackend(ParticleSetup setup)
 
   cuda_check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "create stream");
   for (cudaEvent_t& e : events_) cuda_check(cudaEventCreate(&e), "create event");
-  identity_kernel<<<blocks_for(n_), kBlock, 0, stream_>>>(n_, identity_.data());
-  cuda_check(cudaGetLastError(), "launch identity kernel");
 
   // The whole step is captured once and replayed: one launch per step instead of one per kernel.
   cuda_check(cudaStreamBeginCapture(stream_, cudaStreamCaptureModeThreadLocal), "begin graph capture");
@@ -495,17 +515,19 @@ DeformableView CudaBackend::deformable_view() {
                         stress_action_.data(),  deformation_.data(),     elastic_force_.data(), deformables_};
 }
 
-// The neighbour grid: cell keys, radix sort, then the cell table and the cell-ordered copies.
+// The neighbour grid: counts per cell, their scan (the cell table), slots, the order within each
+// cell, cell-ordered copies (see cell_count_kernel).
 void CudaBackend::launch_grid(cudaStream_t stream) {
-  const int bits = static_cast<int>(scene_.grid.total_bits());
-  cell_keys_kernel<<<blocks_for(n_), kBlock, 0, stream>>>(position_.data(), n_, scene_.grid, keys_.data());
-  cuda_check(cub::DeviceRadixSort::SortPairs(sort_storage_.data(), sort_storage_bytes_, keys_.data(), sorted_keys_.data(),
-                                             identity_.data(), sorted_id_.data(), n_, 0, bits, stream),
-             "radix sort");
   const std::uint32_t cells = scene_.grid.cell_count();
-  cell_table_kernel<<<blocks_for(std::max<std::size_t>(n_, std::size_t{cells} + 1)), kBlock, 0, stream>>>(
-      sorted_keys_.data(), n_, cells, cell_start_.data(), sorted_id_.data(), position_.data(), velocity_.data(),
-      body_.data(), sorted_position_.data(), sorted_velocity_.data());
+  cell_count_kernel<<<blocks_for(n_), kBlock, 0, stream>>>(position_.data(), n_, scene_.grid, keys_.data(), cell_count_.data());
+  cuda_check(cub::DeviceScan::ExclusiveSum(scan_storage_.data(), scan_storage_bytes_, cell_count_.data(), cell_start_.data(),
+                                           cells + 1, stream),
+             "cell-table scan");
+  cell_slot_kernel<<<blocks_for(n_), kBlock, 0, stream>>>(keys_.data(), n_, cell_start_.data(), cell_count_.data(),
+                                                          sorted_id_.data());
+  cell_sort_kernel<<<blocks_for(cells), kBlock, 0, stream>>>(cells, cell_start_.data(), sorted_id_.data());
+  cell_order_kernel<<<blocks_for(n_), kBlock, 0, stream>>>(n_, sorted_id_.data(), position_.data(), velocity_.data(),
+                                                          body_.data(), sorted_position_.data(), sorted_velocity_.data());
 }
 
 void CudaBackend::launch_elasticity(cudaStream_t stream) {
@@ -738,7 +760,7 @@ std::vector<CudaDeviceInfo> cuda_devices() {
 
 std::size_t cuda_backend_bytes(const ParticleSetup& setup) {
   const FloatScene scene = make_float_scene(setup);
-  return scene_bytes(scene, sort_temp_bytes(static_cast<std::uint32_t>(setup.size()), static_cast<int>(scene.grid.total_bits())));
+  return scene_bytes(scene, scan_temp_bytes(scene.grid.cell_count()));
 }
 
 std::unique_ptr<Backend> make_cuda_backend(ParticleSetup setup) { return std::make_unique<CudaBackend>(std::move(setup)); }

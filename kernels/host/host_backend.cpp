@@ -72,7 +72,7 @@ void HostBackend::build_grid() {
   std::vector<std::uint32_t> key(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) key[i] = scene_.grid.key_of(xyz(scene_.position[i]));
-  // The prefix sum of the cell counts is the cell table itself (the GPU finds it by binary search).
+  // The prefix sum of the cell counts is the cell table itself, as the GPU's scan makes it.
   std::fill(cell_start_.begin(), cell_start_.end(), 0u);
   for (std::size_t i = 0; i < n; ++i) ++cell_start_[key[i] + 1];
   for (std::size_t k = 1; k < cell_start_.size(); ++k) cell_start_[k] += cell_start_[k - 1];
