@@ -543,7 +543,7 @@ void CudaBackend::launch_density(cudaStream_t stream) {
   });
 }
 
-// Paper 3.2 as a kernel sequence: grid (keys, radix sort, cell table, cell-ordered copies),
+// Paper 3.2 as a kernel sequence: grid (counting sort into cells, cell-ordered copies),
 // rotations and elastic forces, densities, forces with leap-frog integration, rigid-body dynamics.
 // Events between the phases time them.
 void CudaBackend::record_step(cudaStream_t stream) {
