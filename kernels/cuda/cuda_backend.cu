@@ -23,8 +23,8 @@ unsigned blocks_for(std::size_t n) { return static_cast<unsigned>((n + kBlock - 
 
 // ---- Kernels: each is a thin loop around one of the shared per-particle functions. ----
 
-// The neighbour grid by a counting sort in three launches, stable like a sort of (key, index)
-// pairs (the cpu backend's order), so every run lays the particles out alike:
+// The neighbour grid by a counting sort, stable like a sort of (key, index) pairs (the cpu
+// backend's order), so every run lays the particles out alike. Four kernels and a CUB scan:
 // 1. each particle's cell key, and a count per cell (integer atomics: the counts, not their
 //    order, are kept);
 // 2. an exclusive scan of the counts: the cell table, cell_start[k] = particles in cells below k;
