@@ -1,0 +1,22 @@
+#pragma once
+// The Python half of the CLI: plots and reports are Python scripts (h5py, NumPy, matplotlib with
+// the Agg backend) under scripts/ that read only HDF5 and JSON files, so users can run and restyle
+// them on their own. The CLI runs them with Debian's python3 (the one that sees python3-h5py), as
+// the tests do.
+#include <string>
+#include <vector>
+
+namespace mssph::cli {
+
+// The interpreter: $MSSPH_PYTHON if set, else the one found at configure time.
+std::string python_interpreter();
+
+// The absolute path of a script given relative to the source tree's scripts/ folder
+// (e.g. "figures/figure3.py"); $MSSPH_SCRIPTS_DIR overrides the folder.
+std::string python_script_path(const std::string& relative);
+
+// Runs the script with the arguments, its stdout and stderr passed through, and returns its exit
+// code (127 when the interpreter could not be started, 128 + N when killed by signal N).
+int run_python_script(const std::string& relative, const std::vector<std::string>& arguments);
+
+}  // namespace mssph::cli
