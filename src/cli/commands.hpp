@@ -3,9 +3,13 @@
 // the callback's exit code through the shared slot.
 #include <CLI/CLI.hpp>
 
+#include <string>
+
 namespace mssph::cli {
 
 void add_run_command(CLI::App& app, int& exit_code);
 void add_info_command(CLI::App& app, int& exit_code);
+// command_line: the whole invocation, recorded in the figures' HDF5 files.
+void add_figure_command(CLI::App& app, int& exit_code, const std::string& command_line);
 
 }  // namespace mssph::cli

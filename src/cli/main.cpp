@@ -21,6 +21,9 @@ int main(int argc, char** argv) {
   int exit_code = mssph::kExitOk;
   mssph::cli::add_run_command(app, exit_code);
   mssph::cli::add_info_command(app, exit_code);
+  std::string command_line;
+  for (int k = 0; k < argc; ++k) command_line += (k ? " " : "") + std::string(argv[k]);
+  mssph::cli::add_figure_command(app, exit_code, command_line);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -27,4 +27,13 @@ std::string host_cpu_name() {
   return model + " (" + std::to_string(threads) + " threads)";
 }
 
+std::string gpu_driver_version() {
+  std::ifstream version("/proc/driver/nvidia/version");
+  std::string line;
+  if (!std::getline(version, line)) return "none";
+  // "NVRM version: NVIDIA UNIX x86_64 Kernel Module  550.54.15  Tue Mar  5 ..." -> from "Kernel Module" on.
+  const auto module = line.find("Kernel Module");
+  return module == std::string::npos ? line : line.substr(module);
+}
+
 }  // namespace mssph
