@@ -30,11 +30,16 @@ BodyKind medium_of(const std::string& name) {
 }
 
 // The sizes to time: the given ones, then a 1-2-5 log scale above them up to --max (inclusive).
-std::vector<long long> sizes_to_time(const Figure2Options& options) {
+std::vector<long long> sizes_to_time(const Figure2Options& options, BlockGeometry geometry) {
   std::vector<long long> sizes = options.sizes;
   if (sizes.empty()) throw InputError("--sizes: expected at least one particle count");
+  // The paper geometry needs one whole layer of its 0.5 m base at 2 cm spacing (25 x 25).
+  const long long smallest = geometry == BlockGeometry::paper ? 625 : 100;
   for (long long n : sizes) {
-    if (n < 100) throw InputError("--sizes: " + std::to_string(n) + ": expected particle counts >= 100");
+    if (n < smallest) {
+      throw InputError("--sizes: " + std::to_string(n) + ": expected particle counts >= " + std::to_string(smallest) +
+                       " with --geometry " + to_string(geometry));
+    }
   }
   std::sort(sizes.begin(), sizes.end());
   sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
@@ -151,8 +156,8 @@ int make_figure2(const Figure2Options& options, const std::string& command_line)
   std::vector<BodyKind> media;
   for (const std::string& m : options.media) media.push_back(medium_of(m));
   if (media.empty()) throw InputError("--media: expected at least one of fluid, deformable, rigid");
-  const std::vector<long long> sizes = sizes_to_time(options);
   const BlockGeometry geometry = block_geometry_from_string(options.geometry);
+  const std::vector<long long> sizes = sizes_to_time(options, geometry);
   if (!(options.min_seconds > 0.0)) throw InputError("--min-time: expected a positive number of seconds");
   const std::string backend_name = resolve_backend_name(options.backend);
   const std::string path = (std::filesystem::path(options.out) / "figure2.h5").string();

@@ -2,6 +2,7 @@
 // simulated Virtuose, dropped on a 50 x 50 x 20 cm rigid, deformable and fluid block. Each drop is
 // an ordinary run with its own HDF5 log; scripts/figures/figure3.py draws the three force curves
 // on one graph and checks their shapes against physics.
+#include "config/scene_loader.hpp"
 #include "figure_command.hpp"
 #include "python_script.hpp"
 #include "scene_run.hpp"
@@ -57,6 +58,8 @@ int make_figure3(const Figure3Options& options) {
     r.overrides.insert(r.overrides.end(), options.overrides.begin(), options.overrides.end());
     requests.push_back(std::move(r));
   }
+  // Every scene is loaded with its overrides before the first run starts: a bad --set fails at once.
+  for (const SceneRunRequest& r : requests) load_scene(r.scene_path, r.overrides);
   for (std::size_t m = 0; m < requests.size(); ++m) {
     std::fprintf(stderr, "figure 3: run %zu of 3, %s block at %s resolution (%.0f cm)\n", m + 1, media[m].c_str(),
                  options.resolution.c_str(), 100.0 * spacing);
