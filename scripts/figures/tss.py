@@ -85,10 +85,12 @@ def contact_phases(run):
 
 def force_changes(run, phases):
     """For each phase and body, the largest change of the body's interaction force from its value at
-    rest (mean over the 0.1 s before the first contact) [N], and the proxy's peak force [N]."""
+    rest (mean from the end of the start-up, 0.3 s, to the first contact) [N], and the proxy's peak
+    force [N]. The largest change, not the mean: a body's support (the bone's ground, the blood's
+    basin) takes over a steady push, but not at once."""
     t = run["time"]
     first = phases[0][0]
-    rest_window = (t >= first - 0.1) & (t < first)
+    rest_window = (t >= min(0.3, 0.5 * first)) & (t < first)
     changes = []
     for start, end, _ in phases:
         inside = (t >= start) & (t <= end)
