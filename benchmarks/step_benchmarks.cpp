@@ -19,6 +19,7 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -95,6 +96,13 @@ void time_steps(benchmark::State& state, const Scene& scene, const std::string& 
     std::vector<double> last = sim.backend().last_phase_seconds();
     if (sim.coupled()) last.push_back(sim.last_coupling_seconds());
     for (std::size_t p = 0; p < phases.size(); ++p) phase_seconds[p] += last[p];
+  }
+  // A step that blew up times NaN arithmetic, not the simulation: such a run is an error.
+  for (const BodyState& body : sim.backend().body_states()) {
+    if (!std::isfinite(body.kinetic_energy)) {
+      state.SkipWithError("the simulation blew up (non-finite kinetic energy): the time means nothing");
+      return;
+    }
   }
   for (std::size_t p = 0; p < phases.size(); ++p) {
     state.counters["phase_" + phases[p] + "_seconds"] = phase_seconds[p] / static_cast<double>(state.iterations());
