@@ -43,16 +43,23 @@ def main(argv):
     print(f"\nLargest same-build deviation of a median ratio: {worst_ratio:.3f}x (either way).")
     print(f"Threshold: {threshold * 100:.0f}% (next 5 % step above it, plus 5 % margin, at least 10 %).\n")
 
+    # The delay is the fastest step benchmark's baseline step time: that benchmark's step takes
+    # 2x the baseline's, the others less (the haptic tick, far below a step, many times more).
     delayed = load(delayed_path)
-    print("## Known slowdown: MSSPH_BENCH_STEP_DELAY_US = the fastest step benchmark's step time\n")
+    steps = [b for b in delayed["benchmarks"] if b["name"].startswith("step/")]
+    doubled = min(steps, key=lambda b: b["baseline_median_seconds"])
+    print("## Known slowdown: MSSPH_BENCH_STEP_DELAY_US = the fastest step benchmark's baseline step time\n")
     print("| benchmark | ratio | p | fails at the threshold |")
     print("| --- | ---: | ---: | --- |")
     caught = False
-    for b in delayed["benchmarks"]:
+    for b in steps:
         fails = b["ratio"] > 1.0 + threshold and b["p_value"] < delayed["alpha"]
-        caught = caught or (fails and b["ratio"] >= 1.9)
-        print(f"| `{b['name']}` | {b['ratio']:.3f} | {b['p_value']:.3g} | {'yes' if fails else 'no'} |")
-    print(f"\nA 2x slowdown {'fails' if caught else 'does NOT fail'} the gate at {threshold * 100:.0f}%.")
+        if b is doubled:
+            caught = fails
+        mark = " (2x)" if b is doubled else ""
+        print(f"| `{b['name']}`{mark} | {b['ratio']:.3f} | {b['p_value']:.3g} | {'yes' if fails else 'no'} |")
+    print(f"\nThe benchmark slowed down 2x, `{doubled['name']}`, {'fails' if caught else 'does NOT fail'} "
+          f"the gate at {threshold * 100:.0f}%.")
     with open(threshold_file, "w") as f:
         f.write(f"{threshold * 100:.0f}%\n")
     return 0 if caught else 1
