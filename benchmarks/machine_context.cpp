@@ -17,16 +17,17 @@
 namespace mssph::bench {
 namespace {
 
-// The GPU the cuda backend runs on (device 0), or why none.
+// The GPU the cuda backend runs on (device 0), or "none": a property of the machine, the same
+// whether this binary was built with the CUDA backend or not (mssph_cuda_backend says that).
 std::string gpu_name() {
 #ifdef MSSPH_HAVE_CUDA_BACKEND
   const std::vector<kernels::CudaDeviceInfo> devices = kernels::cuda_devices();
-  if (devices.empty()) return "none visible";
+  if (devices.empty()) return "none";
   const kernels::CudaDeviceInfo& d = devices.front();
   return d.name + " (sm_" + std::to_string(d.compute_major) + std::to_string(d.compute_minor) + ", " +
          std::to_string(d.total_memory / (1024 * 1024)) + " MiB)";
 #else
-  return "none (built without CUDA)";
+  return "none";
 #endif
 }
 
@@ -49,6 +50,7 @@ void add_machine_context() {
   benchmark::AddCustomContext("mssph_cpu", host_cpu_name());
   benchmark::AddCustomContext("mssph_cpu_cores", std::to_string(std::thread::hardware_concurrency()));
   benchmark::AddCustomContext("mssph_gpu", gpu_name());
+  benchmark::AddCustomContext("mssph_cuda_backend", b.cuda_backend ? "built for sm_" + b.cuda_architectures : "not built");
   benchmark::AddCustomContext("mssph_gpu_driver", gpu_driver());
   const double delay = step_delay_seconds();
   if (delay > 0.0) {

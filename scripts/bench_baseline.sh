@@ -7,10 +7,11 @@
 # 1. the baseline: the gate's benchmarks (scripts/bench_gate_settings.sh) -> DIR/cpu_gate.json;
 # 2. the noise study: N more runs of the same build, each compared with the baseline;
 # 3. a known slowdown: one run with MSSPH_BENCH_STEP_DELAY_US set to the fastest step benchmark's
-#    step time (that benchmark then takes 2x), which must fail the gate;
+#    baseline step time (that benchmark then takes 2x), which must fail the gate;
 # then DIR/noise_study.md (the ratios' spread and the threshold that follows), DIR/threshold
-# (read by scripts/bench_gate.sh) and DIR/noise/ (each comparison, as JSON). Each run takes 25-40 s on 2 quiet cores; N = 10 (the
-# default) about 6-8 minutes in all. Exits 1 when the known slowdown does not fail the gate.
+# (read by scripts/bench_gate.sh) and DIR/noise/ (each comparison, as JSON). A run took 32 s on
+# the 2-core CI machine kind at load average 10: N = 10, the default, then takes about 7 minutes
+# (less on a quiet machine). Exits 1 when the known slowdown does not fail the gate.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/bench_gate_settings.sh

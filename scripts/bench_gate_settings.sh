@@ -1,7 +1,8 @@
 # The CPU benchmark gate's settings, sourced by scripts/bench_gate.sh and scripts/bench_baseline.sh
 # so that a baseline and the runs compared with it are always made the same way.
 #
-# The smallest host size of every medium and the haptic tick: about 25-40 s on 2 quiet cores.
+# The smallest host size of every medium and the haptic tick: a run took about 30 s on the 2-core
+# CI machine kind at load average 10.
 GATE_FILTER='^step/cpu/(fluid|rigid|deformable|mixed)/2000/|^haptic_tick/cpu$'
 # 10 repetitions a side: complete separation gives p = 2 / C(20, 10) = 1.1e-5, so a real
 # slowdown is significant even when a few repetitions are disturbed.

@@ -53,10 +53,11 @@ TEST_F(GateSelfTest, PassesTheSameBuildAndCatchesTheDelayedOne) {
   ASSERT_EQ(d.exit_code, 0) << d.err;
   EXPECT_TRUE(read_json(work("delayed.json"))["context"].contains("mssph_test_step_delay_us"));
 
-  // The delay is wall time added to every step, so the delayed run's ratio is at least 2 plus its
-  // own step time over A's, whatever the load; the threshold of 50 % stays clear of both that and
-  // the spread between two undelayed runs on a loaded 2-core machine (up to ~1.3x measured with
-  // other work running). scripts/bench_gate.sh uses the threshold from the noise study.
+  // The delay is wall time added to every step, so the delayed run's ratio is 2 plus its own step
+  // time over A's, whatever the load. The threshold of 50 % stays below that and above the spread
+  // of two undelayed runs: the median ratios of same-build runs stayed within 0.73-1.37 in the
+  // noise study of results/baselines/ci-2core/ (a 2-core VM at load average 10-13), and this test
+  // runs alone (RUN_SERIAL). scripts/bench_gate.sh uses the threshold from the noise study.
   const ProcessResult same = mssph({"bench", "compare", work("a.json"), work("b.json"), "--threshold", "50%"});
   EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
   const ProcessResult slow = mssph({"bench", "compare", work("a.json"), work("delayed.json"), "--threshold", "50%",
