@@ -78,6 +78,7 @@ std::vector<std::string> benchmark_flags(const BenchArgs& a) {
 
 int run_bench(const BenchArgs& a) {
   bench::step_delay_seconds();  // a malformed test hook is bad input before anything runs
+  if (a.scene.empty() && !a.overrides.empty()) throw InputError("--set applies to a scene file: mssph bench SCENE.json --set ...");
   if (!a.scene.empty()) {
     for (const std::string& backend : a.backends.empty() ? std::vector<std::string>{"auto"} : a.backends) {
       bench::register_scene_benchmark(a.scene, a.overrides, resolve_backend_name(backend));

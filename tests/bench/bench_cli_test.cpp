@@ -149,6 +149,9 @@ TEST_F(Bench, BadInputExitsTwo) {
   EXPECT_EQ(hook.exit_code, 2);
   expect_mentions(hook.err, {"MSSPH_BENCH_STEP_DELAY_US=soon", "microseconds"});
   EXPECT_EQ(mssph({"bench", work("no_scene.json")}).exit_code, 2);
+  const ProcessResult set = mssph({"bench", "--set", "simulation/dt=1e-4"});
+  EXPECT_EQ(set.exit_code, 2);
+  expect_mentions(set.err, {"--set applies to a scene file"});
   EXPECT_EQ(mssph({"bench", "--backend", "gpu"}).exit_code, 2);
 }
 
