@@ -8,9 +8,7 @@ find_package(Threads REQUIRED)
 if(MSSPH_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()
-if(MSSPH_BUILD_BENCHMARKS)
-  find_package(benchmark REQUIRED)
-endif()
+find_package(benchmark REQUIRED)                         # `mssph bench` and the benchmark programs
 
 # FindHDF5 (CMake 3.25) gives variables, not always an imported target: wrap them once.
 if(NOT TARGET mssph_hdf5)

@@ -1,0 +1,190 @@
+// Per-step time of the float32 backends: the paper's Figure 2 blocks (fluid, rigid, deformable)
+// and the mixed scene with the coupled proxy, from 2k to 1M particles; one scene file's step;
+// and the haptic tick. Each benchmark iteration runs a batch of steps and waits for the device
+// once, so a GPU's asynchronous launches are timed as they run in a simulation.
+#include "backend_factory.hpp"
+#include "benchmark_suite.hpp"
+#include "config/scene_loader.hpp"
+#include "haptics/haptics_run.hpp"
+#include "haptics/haptics_session.hpp"
+#include "haptics/virtual_coupling.hpp"
+#include "mixed_scene.hpp"
+#include "scene/block_scene.hpp"
+#include "scene/scene_builder.hpp"
+#include "step_delay.hpp"
+#ifdef MSSPH_HAVE_CUDA_BACKEND
+#include "cuda/cuda_backend.hpp"
+#endif
+
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mssph::bench {
+namespace {
+
+constexpr int kBatch = 50;    // steps per timed iteration
+constexpr int kWarmUp = 20;   // steps before timing: graph upload, caches, first grid
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// A scene being stepped as `mssph run` steps it: the haptic session (when the scene has a proxy)
+// sets the coupling wrench before each step.
+class SteppedScene {
+ public:
+  SteppedScene(const Scene& scene, const std::string& backend_name, benchmark::State& state) {
+    ParticleSetup setup = build_particles(scene);
+    particles_ = static_cast<double>(setup.size());
+    if (scene.proxy) haptics_.emplace(scene.proxy->haptics, proxy_model_of(scene, setup), scene.simulation.dt);
+#ifdef MSSPH_HAVE_CUDA_BACKEND
+    if (backend_name == "cuda") {
+      state.counters["device_bytes_per_particle"] = static_cast<double>(kernels::cuda_backend_bytes(setup)) / particles_;
+    }
+#else
+    (void)state;
+#endif
+    backend_ = make_backend(backend_name, std::move(setup));
+  }
+
+  void step() {
+    if (haptics_) {
+      const auto start = Clock::now();
+      haptics_->before_step(*backend_, steps_);
+      last_coupling_seconds_ = seconds_since(start);
+    }
+    backend_->step();
+    ++steps_;
+  }
+
+  Backend& backend() { return *backend_; }
+  double particles() const { return particles_; }
+  bool coupled() const { return haptics_.has_value(); }
+  double last_coupling_seconds() const { return last_coupling_seconds_; }
+
+ private:
+  std::unique_ptr<Backend> backend_;
+  std::optional<HapticsSession> haptics_;
+  std::size_t steps_ = 0;
+  double particles_ = 0.0;
+  double last_coupling_seconds_ = 0.0;
+};
+
+void time_steps(benchmark::State& state, const Scene& scene, const std::string& backend_name) {
+  const double delay = step_delay_seconds();
+  SteppedScene sim(scene, backend_name, state);
+  for (int k = 0; k < kWarmUp; ++k) sim.step();
+  sim.backend().synchronize();
+  std::vector<std::string> phases = sim.backend().phase_names();
+  if (sim.coupled()) phases.push_back("coupling");
+  std::vector<double> phase_seconds(phases.size(), 0.0);
+  for (auto _ : state) {
+    const auto start = Clock::now();
+    for (int k = 0; k < kBatch; ++k) {
+      sim.step();
+      busy_wait(delay);
+    }
+    sim.backend().synchronize();
+    state.SetIterationTime(seconds_since(start));
+    // The phases of each batch's last step: where a step's time goes (device events on a GPU;
+    // the coupling phase is host wall time, including the wait for the proxy's read-back).
+    std::vector<double> last = sim.backend().last_phase_seconds();
+    if (sim.coupled()) last.push_back(sim.last_coupling_seconds());
+    for (std::size_t p = 0; p < phases.size(); ++p) phase_seconds[p] += last[p];
+  }
+  // A step that blew up times NaN arithmetic, not the simulation: such a run is an error.
+  for (const BodyState& body : sim.backend().body_states()) {
+    if (!std::isfinite(body.kinetic_energy)) {
+      state.SkipWithError("the simulation blew up (non-finite kinetic energy): the time means nothing");
+      return;
+    }
+  }
+  for (std::size_t p = 0; p < phases.size(); ++p) {
+    state.counters["phase_" + phases[p] + "_seconds"] = phase_seconds[p] / static_cast<double>(state.iterations());
+  }
+  state.counters["particles"] = sim.particles();
+  state.counters["step_seconds"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * kBatch, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// One haptic tick as the haptic thread runs it: read the proxy's state back from the backend,
+// evaluate the virtual coupling against a handle held 1 cm above it, hand the wrench back.
+void time_haptic_tick(benchmark::State& state, const std::string& backend_name) {
+  const Scene scene = mixed_scene(2000);
+  SteppedScene sim(scene, backend_name, state);
+  for (int k = 0; k < kWarmUp; ++k) sim.step();
+  sim.backend().synchronize();
+  const ProxyModel proxy = proxy_model_of(scene, build_particles(scene));
+  const SpringDamperGains& gains = scene.proxy->haptics.coupling;
+  const BodyState start = sim.backend().rigid_body_state(proxy.body);
+  Pose handle;
+  handle.position = start.centre_of_mass + Eigen::Vector3d(0.0, 0.0, 0.01);
+  const double delay = step_delay_seconds();
+  for (auto _ : state) {
+    const BodyState s = sim.backend().rigid_body_state(proxy.body);
+    const Pose pose{s.centre_of_mass, s.orientation};
+    const Twist twist{s.linear_momentum / s.mass, s.angular_velocity};
+    const Wrench w = spring_damper_wrench(gains, handle, Twist{}, pose, twist);
+    sim.backend().set_external_wrench(proxy.body, w.force, w.torque);
+    busy_wait(delay);
+  }
+  state.counters["particles"] = sim.particles();
+}
+
+std::vector<long> sizes_for(const std::string& backend) {
+  // The host runs the small sizes only: beyond 30k particles a step takes seconds there.
+  if (backend == "cuda") return {2000, 5000, 10000, 30000, 100000, 300000, 1000000};
+  return {2000, 5000, 10000, 30000};
+}
+
+}  // namespace
+
+std::vector<std::string> default_benchmark_backends() {
+  std::vector<std::string> backends;
+  for (const std::string& backend : available_backends()) {
+    if (backend == "reference") continue;
+#ifdef MSSPH_HAVE_CUDA_BACKEND
+    if (backend == "cuda" && kernels::cuda_devices().empty()) continue;  // built with CUDA, run without a GPU
+#endif
+    backends.push_back(backend);
+  }
+  return backends;
+}
+
+void register_suite(const std::vector<std::string>& backends) {
+  using SceneOf = std::function<Scene(std::size_t)>;
+  const std::vector<std::pair<std::string, SceneOf>> media{
+      {"fluid", [](std::size_t n) { return block_scene(BodyKind::fluid, n); }},
+      {"rigid", [](std::size_t n) { return block_scene(BodyKind::rigid, n); }},
+      {"deformable", [](std::size_t n) { return block_scene(BodyKind::deformable, n); }},
+      {"mixed", [](std::size_t n) { return mixed_scene(n); }}};
+  for (const std::string& backend : backends) {
+    for (const auto& [medium, scene_of] : media) {
+      for (long n : sizes_for(backend)) {
+        const std::string name = "step/" + backend + "/" + medium + "/" + std::to_string(n);
+        benchmark::RegisterBenchmark(name.c_str(), [backend, scene_of, n](benchmark::State& state) {
+          time_steps(state, scene_of(static_cast<std::size_t>(n)), backend);
+        })->UseManualTime()->Unit(benchmark::kMicrosecond);
+      }
+    }
+    benchmark::RegisterBenchmark(("haptic_tick/" + backend).c_str(), time_haptic_tick, backend)
+        ->Unit(benchmark::kMicrosecond);
+  }
+}
+
+void register_scene_benchmark(const std::string& scene_path, const std::vector<std::string>& overrides,
+                              const std::string& backend) {
+  const Scene scene = load_scene(scene_path, overrides);
+  build_particles(scene);  // a scene that cannot be built fails here, before any benchmark runs
+  const std::string name = "scene/" + backend + "/" + scene.name;
+  benchmark::RegisterBenchmark(name.c_str(), [scene, backend](benchmark::State& state) {
+    time_steps(state, scene, backend);
+  })->UseManualTime()->Unit(benchmark::kMicrosecond);
+}
+
+}  // namespace mssph::bench

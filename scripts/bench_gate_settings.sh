@@ -1,0 +1,25 @@
+# The CPU benchmark gate's settings, sourced by scripts/bench_gate.sh and scripts/bench_baseline.sh
+# so that a baseline and the runs compared with it are always made the same way.
+#
+# The smallest host size of every medium and the haptic tick: a run took about 30 s on the 2-core
+# CI machine kind at load average 10.
+GATE_FILTER='^step/cpu/(fluid|rigid|deformable|mixed)/2000/|^haptic_tick/cpu$'
+# 10 repetitions a side: complete separation gives p = 2 / C(20, 10) = 1.1e-5, so a real
+# slowdown is significant even when a few repetitions are disturbed.
+GATE_REPETITIONS=10
+# One batch of 50 steps per repetition (each batch takes longer than this).
+GATE_MIN_TIME=0.01
+# One OpenMP thread: the gate watches the cost of the kernels; on a 2-core VM a second thread
+# that waits at every barrier for a core a neighbour holds adds more noise than information.
+GATE_THREADS=1
+# The CI machine's baseline (results/baselines/ci-2core/README.md says how it was made).
+GATE_BASELINE_DIR=results/baselines/ci-2core
+GATE_BASELINE="$GATE_BASELINE_DIR/cpu_gate.json"
+
+# gate_bench OUT.json [extra mssph bench arguments]: one run of the gate's benchmarks.
+gate_bench() {
+  local out=$1
+  shift
+  OMP_NUM_THREADS=$GATE_THREADS "$MSSPH" bench --backend cpu --filter "$GATE_FILTER" \
+    --repetitions "$GATE_REPETITIONS" --min-time "$GATE_MIN_TIME" --out "$out" "$@" >&2
+}

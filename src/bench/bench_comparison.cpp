@@ -1,0 +1,114 @@
+#include "bench/bench_comparison.hpp"
+
+#include "bench/mann_whitney.hpp"
+#include "util/errors.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace mssph::bench {
+namespace {
+
+std::string context_value(const BenchmarkResults& results, const std::string& key) {
+  const auto it = results.context.find(key);
+  return it == results.context.end() ? "(not recorded)" : it->second;
+}
+
+BenchmarkComparison compare_one(const std::string& name, const std::vector<double>& baseline,
+                                const std::vector<double>& current, const CompareOptions& options,
+                                std::optional<double>& smallest_attainable_p) {
+  BenchmarkComparison c;
+  c.name = name;
+  c.baseline_repetitions = baseline.size();
+  c.current_repetitions = current.size();
+  c.baseline_median = median(baseline);
+  c.current_median = median(current);
+  c.ratio = c.current_median / c.baseline_median;
+  const MannWhitneyResult test = mann_whitney_u(current, baseline);
+  c.u = test.u;
+  c.p_value = test.p_value;
+  c.exact = test.exact;
+  const double floor_p = smallest_p_value(current.size(), baseline.size());
+  const bool significant = c.p_value < options.alpha;
+  if (c.ratio > 1.0 + options.threshold) {
+    c.verdict = significant ? Verdict::slower : Verdict::not_significant;
+  } else if (c.ratio < 1.0 / (1.0 + options.threshold)) {
+    c.verdict = significant ? Verdict::faster : Verdict::not_significant;
+  } else {
+    c.verdict = Verdict::unchanged;
+  }
+  if (floor_p >= options.alpha) {
+    smallest_attainable_p = std::min(smallest_attainable_p.value_or(1.0), floor_p);
+    if (c.verdict == Verdict::not_significant) c.verdict = Verdict::untestable;
+  }
+  return c;
+}
+
+}  // namespace
+
+const char* to_string(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::slower: return "SLOWER";
+    case Verdict::faster: return "faster";
+    case Verdict::unchanged: return "unchanged";
+    case Verdict::not_significant: return "not significant";
+    case Verdict::untestable: return "too few repetitions";
+  }
+  return "?";
+}
+
+bool ComparisonReport::failed() const {
+  return std::any_of(benchmarks.begin(), benchmarks.end(), [](const auto& b) { return b.verdict == Verdict::slower; });
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) throw std::invalid_argument("median of no values");
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::vector<ContextDifference> machine_differences(const BenchmarkResults& baseline, const BenchmarkResults& current) {
+  std::vector<ContextDifference> differences;
+  for (const std::string& key : kMachineKeys) {
+    const std::string a = context_value(baseline, key);
+    const std::string b = context_value(current, key);
+    if (a != b) differences.push_back({key, a, b});
+  }
+  return differences;
+}
+
+ComparisonReport compare(const BenchmarkResults& baseline, const BenchmarkResults& current, const CompareOptions& options) {
+  ComparisonReport report;
+  report.baseline_path = baseline.path;
+  report.current_path = current.path;
+  report.options = options;
+  report.machine_differences = machine_differences(baseline, current);
+  if (!report.machine_differences.empty() && !options.force) {
+    std::string message = "the files come from different machines or builds, whose times do not compare:";
+    for (const ContextDifference& d : report.machine_differences) {
+      message += "\n  " + d.key + ": baseline \"" + d.baseline + "\", current \"" + d.current + "\"";
+    }
+    throw InputError(message + "\n(--force compares them anyway)");
+  }
+  for (const std::string& name : baseline.names) {
+    const auto it = current.seconds.find(name);
+    if (it == current.seconds.end()) {
+      report.only_in_baseline.push_back(name);
+      continue;
+    }
+    report.benchmarks.push_back(
+        compare_one(name, baseline.seconds.at(name), it->second, options, report.smallest_attainable_p));
+  }
+  for (const std::string& name : current.names) {
+    if (!baseline.seconds.count(name)) report.only_in_current.push_back(name);
+  }
+  for (const std::string& e : baseline.errors) report.errors.push_back(baseline.path + ": " + e);
+  for (const std::string& e : current.errors) report.errors.push_back(current.path + ": " + e);
+  if (report.benchmarks.empty()) {
+    throw InputError(baseline.path + " and " + current.path + " have no benchmark in common");
+  }
+  return report;
+}
+
+}  // namespace mssph::bench

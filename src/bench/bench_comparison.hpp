@@ -1,0 +1,73 @@
+#pragma once
+// `mssph bench compare`: per benchmark common to a baseline and a current result file, the ratio
+// of median times, a two-sided Mann-Whitney U test over the repetitions, and a verdict. The gate
+// fails only on a slowdown that is both larger than the threshold and significant, so that a
+// noisy machine alone does not fail it.
+#include "bench/benchmark_results.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mssph::bench {
+
+struct CompareOptions {
+  double threshold = 0.10;  // a slowdown beyond median ratio 1 + threshold can fail the gate
+  double alpha = 0.05;      // significance level of the test
+  bool force = false;       // compare files from different machines or build types anyway
+};
+
+enum class Verdict {
+  slower,           // ratio > 1 + threshold and significant: fails the gate
+  faster,           // ratio < 1 / (1 + threshold) and significant
+  unchanged,        // within the threshold (significant or not)
+  not_significant,  // beyond the threshold but not significant: noise cannot be ruled out
+  untestable        // fewer repetitions than the test can decide on
+};
+const char* to_string(Verdict verdict);
+
+struct BenchmarkComparison {
+  std::string name;
+  std::size_t baseline_repetitions = 0;
+  std::size_t current_repetitions = 0;
+  double baseline_median = 0.0;  // [s]
+  double current_median = 0.0;   // [s]
+  double ratio = 0.0;            // current / baseline median
+  double u = 0.0;                // Mann-Whitney U of the current sample
+  double p_value = 1.0;
+  bool exact = false;
+  Verdict verdict = Verdict::unchanged;
+};
+
+// A machine context key whose values differ between the files.
+struct ContextDifference {
+  std::string key;
+  std::string baseline;
+  std::string current;
+};
+
+struct ComparisonReport {
+  std::string baseline_path;
+  std::string current_path;
+  CompareOptions options;
+  std::vector<ContextDifference> machine_differences;  // only compared under --force
+  std::vector<BenchmarkComparison> benchmarks;
+  std::vector<std::string> only_in_baseline;
+  std::vector<std::string> only_in_current;
+  std::vector<std::string> errors;  // benchmarks that failed in either file
+  // When some benchmark's repetitions are too few for any difference to be significant: the
+  // smallest p-value its sizes allow, for the note in the output.
+  std::optional<double> smallest_attainable_p;
+
+  bool failed() const;  // any verdict "slower"
+};
+
+std::vector<ContextDifference> machine_differences(const BenchmarkResults& baseline, const BenchmarkResults& current);
+
+// Throws InputError when the files share no benchmark, or, without options.force, when their
+// machine context differs (the message names each differing key and both values).
+ComparisonReport compare(const BenchmarkResults& baseline, const BenchmarkResults& current, const CompareOptions& options);
+
+double median(std::vector<double> values);
+
+}  // namespace mssph::bench

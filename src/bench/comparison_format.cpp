@@ -1,0 +1,168 @@
+#include "bench/comparison_format.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace mssph::bench {
+namespace {
+
+// A time with a unit that keeps three to four significant digits.
+std::string format_time(double seconds) {
+  const char* unit = "s";
+  double value = seconds;
+  if (seconds < 1e-6) {
+    value = seconds * 1e9;
+    unit = "ns";
+  } else if (seconds < 1e-3) {
+    value = seconds * 1e6;
+    unit = "us";
+  } else if (seconds < 1.0) {
+    value = seconds * 1e3;
+    unit = "ms";
+  }
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.4g %s", value, unit);
+  return buffer;
+}
+
+std::string format_number(const char* pattern, double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
+
+std::string percent(double fraction) { return format_number("%.0f%%", 100.0 * fraction); }
+
+std::vector<std::vector<std::string>> rows_of(const ComparisonReport& report) {
+  std::vector<std::vector<std::string>> rows;
+  rows.push_back({"benchmark", "baseline", "current", "ratio", "p", "n", "verdict"});
+  for (const BenchmarkComparison& b : report.benchmarks) {
+    rows.push_back({b.name, format_time(b.baseline_median), format_time(b.current_median),
+                    format_number("%.3f", b.ratio), format_number("%.3g", b.p_value),
+                    std::to_string(b.baseline_repetitions) + "/" + std::to_string(b.current_repetitions),
+                    to_string(b.verdict)});
+  }
+  return rows;
+}
+
+// Lines that explain the numbers: the test, the gate's rule, the caveats.
+std::vector<std::string> notes_of(const ComparisonReport& report) {
+  const CompareOptions& o = report.options;
+  std::vector<std::string> notes;
+  notes.push_back("baseline " + report.baseline_path + ", current " + report.current_path +
+                  "; times are medians over repetitions (per step where the benchmark reports step_seconds), ratio = current / baseline.");
+  notes.push_back("p: two-sided Mann-Whitney U test over the repetitions (exact without ties and with at most 20 "
+                  "per side, else normal approximation with tie and continuity correction); significant when p < " +
+                  format_number("%g", o.alpha) + ".");
+  notes.push_back("The gate fails (exit 1) on a benchmark whose ratio exceeds " + format_number("%.3f", 1.0 + o.threshold) +
+                  " (threshold " + percent(o.threshold) + ") with a significant difference.");
+  if (report.smallest_attainable_p) {
+    notes.push_back("Too few repetitions for some benchmarks: with their counts the smallest p-value the test can give "
+                    "is " + format_number("%.3g", *report.smallest_attainable_p) +
+                    ", not below alpha, so no difference there can be significant; run more repetitions "
+                    "(at least 4 per side for alpha 0.05).");
+  }
+  for (const ContextDifference& d : report.machine_differences) {
+    notes.push_back("forced: " + d.key + " differs (baseline \"" + d.baseline + "\", current \"" + d.current + "\").");
+  }
+  for (const std::string& name : report.only_in_baseline) notes.push_back("only in the baseline: " + name);
+  for (const std::string& name : report.only_in_current) notes.push_back("only in the current file: " + name);
+  for (const std::string& e : report.errors) notes.push_back("error reported by the benchmark: " + e);
+  notes.push_back(std::string("Result: ") + (report.failed() ? "FAIL, significantly slower beyond the threshold."
+                                                              : "pass."));
+  return notes;
+}
+
+std::string as_table(const ComparisonReport& report) {
+  const auto rows = rows_of(report);
+  std::vector<std::size_t> widths(rows.front().size(), 0);
+  for (const auto& row : rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) widths[c] = std::max(widths[c], row[c].size());
+  }
+  std::ostringstream out;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    for (std::size_t c = 0; c < rows[r].size(); ++c) {
+      const std::string& cell = rows[r][c];
+      const std::string pad(widths[c] - cell.size(), ' ');
+      // Names and verdicts left-aligned, numbers right-aligned.
+      const bool left = c == 0 || c + 1 == rows[r].size();
+      out << (c ? "  " : "") << (left ? cell + pad : pad + cell);
+    }
+    out << "\n";
+  }
+  out << "\n";
+  for (const std::string& note : notes_of(report)) out << note << "\n";
+  return out.str();
+}
+
+std::string as_markdown(const ComparisonReport& report) {
+  const auto rows = rows_of(report);
+  std::ostringstream out;
+  out << "### mssph bench compare: " << (report.failed() ? "FAIL" : "pass") << "\n\n";
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    out << "|";
+    for (std::size_t c = 0; c < rows[r].size(); ++c) {
+      const bool highlight = r > 0 && report.benchmarks[r - 1].verdict == Verdict::slower && c + 1 == rows[r].size();
+      out << " " << (c == 0 && r > 0 ? "`" + rows[r][c] + "`" : highlight ? "**" + rows[r][c] + "**" : rows[r][c])
+          << " |";
+    }
+    out << "\n";
+    if (r == 0) {
+      out << "|";
+      for (std::size_t c = 0; c < rows[r].size(); ++c) out << (c == 0 || c + 1 == rows[r].size() ? " --- |" : " ---: |");
+      out << "\n";
+    }
+  }
+  out << "\n";
+  for (const std::string& note : notes_of(report)) out << "- " << note << "\n";
+  return out.str();
+}
+
+std::string as_json(const ComparisonReport& report) {
+  nlohmann::json doc;
+  doc["baseline"] = report.baseline_path;
+  doc["current"] = report.current_path;
+  doc["threshold"] = report.options.threshold;
+  doc["alpha"] = report.options.alpha;
+  doc["test"] = "two-sided Mann-Whitney U";
+  doc["failed"] = report.failed();
+  doc["benchmarks"] = nlohmann::json::array();
+  for (const BenchmarkComparison& b : report.benchmarks) {
+    doc["benchmarks"].push_back({{"name", b.name},
+                                 {"baseline_median_seconds", b.baseline_median},
+                                 {"current_median_seconds", b.current_median},
+                                 {"baseline_repetitions", b.baseline_repetitions},
+                                 {"current_repetitions", b.current_repetitions},
+                                 {"ratio", b.ratio},
+                                 {"u", b.u},
+                                 {"p_value", b.p_value},
+                                 {"exact", b.exact},
+                                 {"verdict", to_string(b.verdict)}});
+  }
+  doc["only_in_baseline"] = report.only_in_baseline;
+  doc["only_in_current"] = report.only_in_current;
+  doc["errors"] = report.errors;
+  doc["forced_differences"] = nlohmann::json::array();
+  for (const ContextDifference& d : report.machine_differences) {
+    doc["forced_differences"].push_back({{"key", d.key}, {"baseline", d.baseline}, {"current", d.current}});
+  }
+  doc["smallest_attainable_p"] =
+      report.smallest_attainable_p ? nlohmann::json(*report.smallest_attainable_p) : nlohmann::json(nullptr);
+  return doc.dump(2) + "\n";
+}
+
+}  // namespace
+
+std::string format_report(const ComparisonReport& report, ReportFormat format) {
+  switch (format) {
+    case ReportFormat::table: return as_table(report);
+    case ReportFormat::markdown: return as_markdown(report);
+    case ReportFormat::json: return as_json(report);
+  }
+  return {};
+}
+
+}  // namespace mssph::bench

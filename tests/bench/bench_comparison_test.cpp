@@ -1,0 +1,146 @@
+// Verdicts, the machine check and reading Google Benchmark JSON.
+#include "bench/bench_comparison.hpp"
+#include "bench/comparison_format.hpp"
+#include "temp_dir.hpp"
+#include "util/errors.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace mssph::bench {
+namespace {
+
+// Benchmarks in the order given, as in a file.
+BenchmarkResults results(const std::string& path, const std::vector<std::pair<std::string, std::vector<double>>>& times,
+                         const std::string& cpu = "Test CPU (2 threads)") {
+  BenchmarkResults r;
+  r.path = path;
+  r.context = {{"mssph_cpu", cpu}, {"mssph_gpu", "none"}, {"mssph_build_type", "Release"}};
+  for (const auto& [name, seconds] : times) {
+    r.names.push_back(name);
+    r.seconds[name] = seconds;
+  }
+  return r;
+}
+
+const std::vector<double> kBase{1.00, 1.02, 0.98, 1.01, 0.99, 1.03};
+
+std::vector<double> scaled(const std::vector<double>& v, double factor) {
+  std::vector<double> out;
+  for (double x : v) out.push_back(x * factor);
+  return out;
+}
+
+TEST(BenchComparison, VerdictsFollowThresholdAndSignificance) {
+  const BenchmarkResults base = results("a.json", {{"two_x", kBase}, {"same", kBase}, {"fast", kBase}, {"five_pct", kBase}});
+  const BenchmarkResults cur = results(
+      "b.json", {{"two_x", scaled(kBase, 2.0)}, {"same", {1.01, 0.99, 1.0, 1.02, 0.985, 1.015}},
+                 {"fast", scaled(kBase, 0.5)}, {"five_pct", scaled(kBase, 1.05)}});
+  const ComparisonReport report = compare(base, cur, CompareOptions{});
+  ASSERT_EQ(report.benchmarks.size(), 4u);
+  EXPECT_EQ(report.benchmarks[0].verdict, Verdict::slower);
+  EXPECT_NEAR(report.benchmarks[0].ratio, 2.0, 1e-12);
+  EXPECT_NEAR(report.benchmarks[0].p_value, 2.0 / 924.0, 1e-12);  // complete separation, C(12, 6) = 924
+  EXPECT_EQ(report.benchmarks[1].verdict, Verdict::unchanged);
+  EXPECT_EQ(report.benchmarks[2].verdict, Verdict::faster);
+  // 5 % slower, every repetition: significant, but within the 10 % threshold.
+  EXPECT_EQ(report.benchmarks[3].verdict, Verdict::unchanged);
+  EXPECT_LT(report.benchmarks[3].p_value, 0.05);
+  EXPECT_TRUE(report.failed());
+  EXPECT_FALSE(report.smallest_attainable_p.has_value());
+}
+
+TEST(BenchComparison, SlowerButNotSignificantDoesNotFail) {
+  // Median 1.5x, but the samples overlap: one outlier-heavy run is no evidence.
+  const ComparisonReport report = compare(results("a", {{"b", {1.0, 3.0, 1.0, 3.0, 1.0}}}),
+                                          results("b", {{"b", {1.5, 1.1, 3.1, 0.9, 2.9}}}), CompareOptions{});
+  EXPECT_EQ(report.benchmarks[0].verdict, Verdict::not_significant);
+  EXPECT_FALSE(report.failed());
+}
+
+TEST(BenchComparison, TooFewRepetitionsAreSaidSo) {
+  const ComparisonReport report =
+      compare(results("a", {{"b", {1.0, 1.0, 1.0}}}), results("b", {{"b", {2.0, 2.1, 2.2}}}), CompareOptions{});
+  EXPECT_EQ(report.benchmarks[0].verdict, Verdict::untestable);
+  ASSERT_TRUE(report.smallest_attainable_p.has_value());
+  EXPECT_NEAR(*report.smallest_attainable_p, 0.1, 1e-12);
+  EXPECT_FALSE(report.failed());
+  EXPECT_NE(format_report(report, ReportFormat::table).find("Too few repetitions"), std::string::npos);
+}
+
+TEST(BenchComparison, RefusesDifferentMachinesUnlessForced) {
+  const BenchmarkResults base = results("a.json", {{"b", kBase}}, "Intel Xeon (2 threads)");
+  const BenchmarkResults cur = results("b.json", {{"b", kBase}}, "AMD EPYC (2 threads)");
+  try {
+    compare(base, cur, CompareOptions{});
+    FAIL() << "different CPUs compared";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("mssph_cpu"), std::string::npos) << message;
+    EXPECT_NE(message.find("Intel Xeon (2 threads)"), std::string::npos) << message;
+    EXPECT_NE(message.find("--force"), std::string::npos) << message;
+    EXPECT_EQ(message.find("mssph_build_type"), std::string::npos) << message;
+  }
+  CompareOptions forced;
+  forced.force = true;
+  const ComparisonReport report = compare(base, cur, forced);
+  ASSERT_EQ(report.machine_differences.size(), 1u);
+  EXPECT_EQ(report.machine_differences[0].key, "mssph_cpu");
+}
+
+TEST(BenchComparison, NoCommonBenchmarkIsBadInput) {
+  EXPECT_THROW(compare(results("a", {{"x", kBase}}), results("b", {{"y", kBase}}), CompareOptions{}), InputError);
+}
+
+TEST(BenchComparison, MedianOfOddAndEvenCounts) {
+  EXPECT_DOUBLE_EQ(median({3, 1, 2}), 2.0);
+  EXPECT_DOUBLE_EQ(median({4, 1, 3, 2}), 2.5);
+}
+
+void write(const std::filesystem::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+TEST(BenchmarkResultsFile, ReadsRepetitionsAndSkipsAggregates) {
+  const test::TempDir dir;
+  const nlohmann::json doc = {
+      {"context", {{"mssph_cpu", "X"}, {"num_cpus", 2}}},
+      {"benchmarks",
+       {{{"name", "t"}, {"run_name", "t"}, {"run_type", "iteration"}, {"real_time", 2.0}, {"time_unit", "ms"}},
+        {{"name", "t"}, {"run_name", "t"}, {"run_type", "iteration"}, {"real_time", 4.0}, {"time_unit", "ms"}},
+        {{"name", "t_mean"}, {"run_name", "t"}, {"run_type", "aggregate"}, {"real_time", 3.0}, {"time_unit", "ms"}},
+        {{"name", "s/manual_time"}, {"run_name", "s/manual_time"}, {"run_type", "iteration"}, {"real_time", 50.0},
+         {"time_unit", "us"}, {"step_seconds", 1e-6}},
+        {{"name", "e"}, {"run_type", "iteration"}, {"error_occurred", true}, {"error_message", "no GPU"}}}}};
+  write(dir / "r.json", doc.dump());
+  const BenchmarkResults r = read_benchmark_results((dir / "r.json").string());
+  EXPECT_EQ(r.context.at("mssph_cpu"), "X");
+  EXPECT_EQ(r.context.at("num_cpus"), "2");
+  ASSERT_EQ(r.names, (std::vector<std::string>{"t", "s/manual_time"}));
+  EXPECT_EQ(r.seconds.at("t"), (std::vector<double>{2e-3, 4e-3}));
+  EXPECT_EQ(r.seconds.at("s/manual_time"), (std::vector<double>{1e-6}));  // per step, not per batch
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_NE(r.errors[0].find("no GPU"), std::string::npos);
+}
+
+TEST(BenchmarkResultsFile, BadFilesNameTheFileAndTheProblem) {
+  const test::TempDir dir;
+  write(dir / "text.json", "not json");
+  write(dir / "object.json", R"({"a": 1})");
+  write(dir / "unit.json", R"({"context": {}, "benchmarks": [{"name": "t", "real_time": 1, "time_unit": "hours"}]})");
+  const auto message_of = [&](const std::string& name) {
+    try {
+      read_benchmark_results((dir / name).string());
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message_of("missing.json").find("missing.json: cannot open"), std::string::npos);
+  EXPECT_NE(message_of("text.json").find("text.json: not JSON"), std::string::npos);
+  EXPECT_NE(message_of("object.json").find("no \"context\" object"), std::string::npos);
+  EXPECT_NE(message_of("unit.json").find("/benchmarks/0/time_unit"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mssph::bench
