@@ -63,8 +63,12 @@ void add_figure2(CLI::App& figure, int& exit_code, const std::string& command_li
   });
 }
 
+// The shipped scenes, wherever mssph is run from.
+const std::string kShippedConfigs = MSSPH_SOURCE_DIR "/configs";
+
 void add_figure3(CLI::App& figure, int& exit_code) {
   auto o = std::make_shared<Figure3Options>();
+  o->configs = kShippedConfigs;
   CLI::App* cmd = figure.add_subcommand("3", "Paper Figure 3: force on a sphere dropped on rigid, deformable, fluid");
   cmd->add_option("--backend", o->backend, kBackendHelp)
       ->check(CLI::IsMember({"reference", "cpu", "cuda", "auto"}))
@@ -94,6 +98,7 @@ void add_figure3(CLI::App& figure, int& exit_code) {
 
 void add_figure_tss(CLI::App& figure, int& exit_code) {
   auto o = std::make_shared<FigureTssOptions>();
+  o->scene = kShippedConfigs + "/tap_squeeze_stir.json";
   CLI::App* cmd = figure.add_subcommand(
       "tss", "One world, three states: tap a bone, squeeze an organ, stir blood, with one proxy");
   cmd->add_option("--backend", o->backend, kBackendHelp)

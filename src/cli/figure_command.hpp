@@ -21,7 +21,7 @@ struct Figure3Options {
   std::string backend = "auto";
   std::string resolution = "paper";  // coarse (4 cm), paper (2 cm), fine (1 cm)
   std::string out = "results/runs/figure3";
-  std::string configs = "configs";  // where sphere_drop_{rigid,deformable,fluid}.json are
+  std::string configs;  // where sphere_drop_{rigid,deformable,fluid}.json are
   std::vector<std::string> overrides;
   bool quiet = false;
 };
@@ -29,7 +29,7 @@ struct Figure3Options {
 struct FigureTssOptions {
   std::string backend = "auto";
   std::string out = "results/runs/figure_tss";
-  std::string scene = "configs/tap_squeeze_stir.json";
+  std::string scene;
   std::vector<std::string> overrides;
   bool quiet = false;
 };
