@@ -19,6 +19,7 @@ import matplotlib
 import numpy as np
 
 matplotlib.use("Agg")
+matplotlib.rcParams["svg.fonttype"] = "none"  # SVG text stays text: editable and searchable
 import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)
 
 

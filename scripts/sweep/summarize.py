@@ -114,7 +114,7 @@ def write_csv(path, columns):
     partial = path.with_name(path.name + ".partial")
     names = list(columns)
     with open(partial, "w", newline="") as out:
-        writer = csv.writer(out)
+        writer = csv.writer(out, lineterminator="\n")
         writer.writerow(names)
         for row in zip(*(columns[n] for n in names)):
             writer.writerow(["" if isinstance(v, float) and math.isnan(v) else

@@ -113,6 +113,7 @@ std::vector<RunSlot> make_slots(const SweepArgs& args) {
 }
 
 void check_arguments(const SweepArgs& args) {
+  if (!args.gpus.empty()) split_gpus(args.gpus);
   if (!args.gpus.empty() && args.jobs != 1) {
     throw InputError("--gpus and --jobs: give one; --gpus runs one point per listed GPU at a time");
   }

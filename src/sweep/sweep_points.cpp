@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <stdexcept>
 
 namespace mssph::sweep {
 namespace {
@@ -103,19 +104,23 @@ void validate_points(const SweepFile& sweep, const std::vector<std::string>& com
       throw InputError(sweep.source_file + ": point " + std::to_string(point.index) + " (" + point.describe() +
                        ") is rejected by the scene loader: " + e.what());
     }
+    // Distinct values give distinct scenes (the file admits no duplicates), so equal names could
+    // only be a collision of the 64-bit hash: two points would then share one log.
     const auto [it, inserted] = seen.emplace(point.hash, point.index);
     if (!inserted) {
-      throw InputError(sweep.source_file + ": points " + std::to_string(it->second) + " (" +
-                       points[it->second].describe() + ") and " + std::to_string(point.index) + " (" +
-                       point.describe() + ") run the same scene");
+      throw std::runtime_error(sweep.source_file + ": points " + std::to_string(it->second) + " (" +
+                               points[it->second].describe() + ") and " + std::to_string(point.index) + " (" +
+                               point.describe() + ") hash to the same name point-" + point.hash);
     }
   }
 }
 
-std::string point_hash(const nlohmann::json& scene_document) {
+std::string point_hash(const nlohmann::json& scene_document) { return fnv1a_64_hex(scene_document.dump()); }
+
+std::string fnv1a_64_hex(std::string_view bytes) {
   // FNV-1a, 64 bits (Fowler, Noll, Vo; offset basis and prime from the published parameters).
   std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (const unsigned char c : scene_document.dump()) {
+  for (const unsigned char c : bytes) {
     h ^= c;
     h *= 0x100000001b3ULL;
   }

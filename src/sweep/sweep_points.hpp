@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -36,12 +37,15 @@ std::vector<SweepPoint> expand_points(const SweepFile& sweep, const std::vector<
 // Loads every point's scene through the scene loader, exactly as `mssph run` would, and names the
 // point by its hash. The first point the loader rejects throws an InputError naming the sweep
 // file, the point and the loader's reason (scene file, JSON path, what was expected). So does a
-// command-line --set of a swept path, and two points that would run the same scene.
+// command-line --set of a swept path.
 void validate_points(const SweepFile& sweep, const std::vector<std::string>& command_line_overrides,
                      std::vector<SweepPoint>& points);
 
 // 64-bit FNV-1a of the scene document's compact JSON (keys sorted), as 16 hex digits. The run
 // log's `config` attribute is that document, so a log's point name can be checked from the log.
 std::string point_hash(const nlohmann::json& scene_document);
+
+// 64-bit FNV-1a of the bytes, as 16 hex digits.
+std::string fnv1a_64_hex(std::string_view bytes);
 
 }  // namespace mssph::sweep
