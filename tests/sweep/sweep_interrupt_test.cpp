@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 
 #include <csignal>
+#include <cstdlib>
 #include <thread>
 
 namespace mssph::test {
@@ -15,6 +16,10 @@ using ::testing::HasSubstr;
 
 class SweepInterrupt : public SweepCli {
  protected:
+  // The test reads the logs of points while they run (and lock their files).
+  SweepInterrupt() { setenv("HDF5_USE_FILE_LOCKING", "FALSE", 1); }
+  ~SweepInterrupt() override { unsetenv("HDF5_USE_FILE_LOCKING"); }
+
   // Long enough points (2000 steps, a few seconds each) that the signal finds one running.
   std::vector<std::string> args() const {
     return {"sweep", tiny_product_sweep(), "--out", out(), "--backend", "cpu", "--set", "simulation/duration=1.0"};
