@@ -20,9 +20,9 @@ class SweepInterrupt : public SweepCli {
   SweepInterrupt() { setenv("HDF5_USE_FILE_LOCKING", "FALSE", 1); }
   ~SweepInterrupt() override { unsetenv("HDF5_USE_FILE_LOCKING"); }
 
-  // Long enough points (2000 steps, a few seconds each) that the signal finds one running.
+  // Points of 800 steps (about a second each) for the signal to find one running.
   std::vector<std::string> args() const {
-    return {"sweep", tiny_product_sweep(), "--out", out(), "--backend", "cpu", "--set", "simulation/duration=1.0"};
+    return {"sweep", tiny_product_sweep(), "--out", out(), "--backend", "cpu", "--set", "simulation/duration=0.4"};
   }
   std::size_t completed_logs() const {
     std::size_t n = 0;
