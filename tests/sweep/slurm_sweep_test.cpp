@@ -7,7 +7,6 @@
 
 #include <gmock/gmock.h>
 
-#include <cstdlib>
 
 namespace mssph::test {
 namespace {
@@ -20,8 +19,8 @@ using SlurmSweep = SweepCli;
 TEST_F(SlurmSweep, ArrayJobAndMergeGiveTheSummaryOfALocalRun) {
   SlurmCluster cluster;
   if (const auto why_not = cluster.start()) GTEST_SKIP() << "Slurm cannot be started here: " << *why_not;
-  // The same threads in the array tasks (which inherit this environment) as in the local run.
-  setenv("OMP_NUM_THREADS", "1", 1);
+  // The array tasks inherit this environment, OMP_NUM_THREADS=1 included (see SweepCli), so
+  // they run the points with the same threads as the local run.
 
   const std::string slurm_out = work("slurm_sweep");
   const ProcessResult emitted = mssph({"sweep", tiny_product_sweep(), "--out", slurm_out, "--backend", "cpu",
@@ -41,7 +40,6 @@ TEST_F(SlurmSweep, ArrayJobAndMergeGiveTheSummaryOfALocalRun) {
 
   const ProcessResult local = mssph({"sweep", tiny_product_sweep(), "--out", out(), "--backend", "cpu"});
   ASSERT_EQ(local.exit_code, 0) << local.err;
-  unsetenv("OMP_NUM_THREADS");
   const std::string from_slurm = read_file(slurm_out + "/summary.csv");
   EXPECT_EQ(from_slurm, read_file(out() + "/summary.csv")) << "Slurm and local summaries differ";
   EXPECT_THAT(from_slurm, HasSubstr(",completed,completed"));

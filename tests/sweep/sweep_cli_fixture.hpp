@@ -5,6 +5,8 @@
 
 #include <sys/stat.h>
 
+#include <cstdlib>
+#include <optional>
 #include <sstream>
 
 namespace mssph::test {
@@ -13,6 +15,21 @@ inline std::string tiny_product_sweep() { return data_file("sweeps/tiny_product.
 
 class SweepCli : public Cli {
  protected:
+  // One OpenMP thread per point: the tiny test scenes gain nothing from more, and on a shared
+  // machine two spinning threads per point make test times swing by two orders of magnitude.
+  SweepCli() {
+    if (const char* previous = std::getenv("OMP_NUM_THREADS")) previous_threads_ = previous;
+    setenv("OMP_NUM_THREADS", "1", 1);
+  }
+  ~SweepCli() override {
+    if (previous_threads_) {
+      setenv("OMP_NUM_THREADS", previous_threads_->c_str(), 1);
+    } else {
+      unsetenv("OMP_NUM_THREADS");
+    }
+  }
+  std::optional<std::string> previous_threads_;
+
   // As Cli::mssph, with room for a sweep of several runs on a busy machine.
   ProcessResult mssph(const std::vector<std::string>& args) const { return start(args)->wait(std::chrono::minutes(10)); }
 

@@ -1,5 +1,6 @@
 // `mssph sweep` end to end: every point an ordinary `mssph run` with its own log, named by its
 // hash and tagged with its parameters; the summary, the dry run, the Slurm scripts and the plots.
+#include "commands.hpp"
 #include "sweep/sweep_points.hpp"
 #include "sweep_cli_fixture.hpp"
 
@@ -99,6 +100,19 @@ TEST_F(SweepRun, PlotDrawsEveryNumericMetricAsLinesAndHeatMaps) {
   const ProcessResult bad = mssph({"sweep", "plot", out(), "--metric", "final_status"});
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_THAT(bad.err, HasSubstr("numeric metrics are peak_interaction_force, time_to_peak, peak_rendered_force"));
+}
+
+TEST_F(SweepRun, HelpListsEveryOptionResumeAndExitCodes) {
+  const ProcessResult r = mssph({"sweep", "--help"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  CLI::App app;
+  int exit_code = 0;
+  cli::add_sweep_command(app, exit_code);
+  for (const CLI::Option* option : app.get_subcommand("sweep")->get_options()) EXPECT_THAT(r.out, HasSubstr(option->get_name()));
+  for (const char* phrase : {"merge", "plot", "--retry-failed", "\"completed\"", "point-<hash>.h5", "SLURM_ARRAY_TASK_ID",
+                             "Exit codes: 0", "2 bad input", "3 a point failed"}) {
+    EXPECT_THAT(r.out, HasSubstr(phrase));
+  }
 }
 
 }  // namespace
