@@ -72,6 +72,15 @@ TEST_F(SweepBadInput, BadArguments) {
   expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"only shape the scripts of --emit-slurm"}, {"--partition", "gpu"});
 }
 
+TEST_F(SweepBadInput, RunRejectsATagWithoutANameBeforeWriting) {
+  for (const char* tag : {"a/b=1", "=1", "no_equals"}) {
+    const ProcessResult r = mssph({"run", data_file("tiny_drop.json"), "--out", work("tagged.h5"), "--tag", tag});
+    EXPECT_EQ(r.exit_code, 2) << tag << ": " << r.err;
+    EXPECT_THAT(r.err, HasSubstr(std::string("--tag ") + tag + ": expected NAME=VALUE"));
+    EXPECT_TRUE(work_entries().empty()) << tag;
+  }
+}
+
 TEST_F(SweepBadInput, MergeAndPlotOfAFolderThatIsNoSweep) {
   for (const char* sub : {"merge", "plot"}) {
     const ProcessResult r = mssph({"sweep", sub, work("nothing_here")});
