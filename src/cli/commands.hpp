@@ -12,5 +12,6 @@ void add_info_command(CLI::App& app, int& exit_code);
 // command_line: the whole invocation, recorded in the figures' HDF5 files.
 void add_figure_command(CLI::App& app, int& exit_code, const std::string& command_line);
 void add_bench_command(CLI::App& app, int& exit_code);
+void add_sweep_command(CLI::App& app, int& exit_code);
 
 }  // namespace mssph::cli

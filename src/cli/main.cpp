@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   for (int k = 0; k < argc; ++k) command_line += (k ? " " : "") + std::string(argv[k]);
   mssph::cli::add_figure_command(app, exit_code, command_line);
   mssph::cli::add_bench_command(app, exit_code);
+  mssph::cli::add_sweep_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

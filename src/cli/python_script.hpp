@@ -19,4 +19,8 @@ std::string python_script_path(const std::string& relative);
 // code (127 when the interpreter could not be started, 128 + N when killed by signal N).
 int run_python_script(const std::string& relative, const std::vector<std::string>& arguments);
 
+// As run_python_script, but the script's stdout is returned in `output` instead of printed.
+int run_python_script_capturing(const std::string& relative, const std::vector<std::string>& arguments,
+                                std::string& output);
+
 }  // namespace mssph::cli

@@ -33,6 +33,10 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--record-device", args->record_device,
                   "Write the haptic device's trajectory (one pose per haptic tick) to FILE, .csv or .h5, in the "
                   "format a \"recorded\" trajectory replays");
+  cmd->add_option("--tag", args->tags,
+                  "Record NAME=VALUE as an attribute of the log's /tags group (repeatable; a number is stored as a "
+                  "number); mssph sweep tags each point's log with its parameters")
+      ->allow_extra_args(false);
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or start-up lines (warnings and errors still print)");
   cmd->footer(
       "The run log: one HDF5 file per run. Root attributes record the version, git commit, backend,\n"

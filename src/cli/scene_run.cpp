@@ -10,6 +10,8 @@
 #include "util/build_info.hpp"
 #include "util/errors.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -38,6 +40,41 @@ void print_summary_line(const std::string& output, const RunSummary& summary, co
   std::fflush(stdout);
 }
 
+struct Tag {
+  std::string name;
+  nlohmann::json value;
+};
+
+// NAME=VALUE; NAME becomes an attribute name, so it is not empty and has no '/' (which h5py
+// tools read as a path).
+std::vector<Tag> parse_tags(const std::vector<std::string>& tags) {
+  std::vector<Tag> out;
+  for (const std::string& tag : tags) {
+    const auto equals = tag.find('=');
+    const std::string name = tag.substr(0, equals);
+    if (equals == std::string::npos || name.empty() || name.find('/') != std::string::npos) {
+      throw InputError("--tag " + tag + ": expected NAME=VALUE with a NAME without '/'");
+    }
+    const std::string text = tag.substr(equals + 1);
+    nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
+    if (value.is_discarded() || !value.is_number()) value = text;
+    out.push_back({name, value});
+  }
+  return out;
+}
+
+void write_tags(RunLog& log, const std::vector<Tag>& tags) {
+  for (const Tag& t : tags) {
+    if (t.value.is_number_integer()) {
+      log.set_attribute("/tags", t.name, t.value.get<long long>());
+    } else if (t.value.is_number()) {
+      log.set_attribute("/tags", t.name, t.value.get<double>());
+    } else {
+      log.set_attribute("/tags", t.name, t.value.get<std::string>());
+    }
+  }
+}
+
 }  // namespace
 
 std::string command_line_of(const SceneRunRequest& request) {
@@ -45,6 +82,7 @@ std::string command_line_of(const SceneRunRequest& request) {
   if (!request.output.empty()) line += " --out " + request.output;
   for (const std::string& o : request.overrides) line += " --set " + o;
   if (!request.record_device.empty()) line += " --record-device " + request.record_device;
+  for (const std::string& t : request.tags) line += " --tag " + t;
   return line;
 }
 
@@ -53,6 +91,7 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   const Scene scene = load_scene(request.scene_path, request.overrides);
   const std::string scene_text = read_text(request.scene_path);
   const std::string backend_name = resolve_backend_name(request.backend);
+  const std::vector<Tag> tags = parse_tags(request.tags);
   SceneRunResult result;
   result.output = request.output.empty() ? default_output_path(scene.name, backend_name) : request.output;
   check_output_path(result.output);
@@ -93,6 +132,7 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   std::string joined_warnings;
   for (const std::string& w : warnings) joined_warnings += w + "\n";
   log.set_attribute("/", "warnings", joined_warnings);
+  write_tags(log, tags);
 
   try {
     result.summary =

@@ -18,6 +18,9 @@ struct SceneRunRequest {
   std::string backend = "auto";
   std::string output;                  // "" for the default path results/runs/<scene>_<backend>.h5
   std::string record_device;           // "" for none
+  // --tag NAME=VALUE: attributes of the log's /tags group, e.g. a sweep point's parameter values.
+  // VALUE is stored as a number when it is one, else as text.
+  std::vector<std::string> tags;
   bool quiet = false;
 };
 

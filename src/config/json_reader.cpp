@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <sstream>
 
 namespace mssph {
@@ -51,6 +52,30 @@ std::string Interval::describe() const {
   if (has_lo) return std::string(lo_open ? "> " : ">= ") + format_number(lo);
   if (has_hi) return std::string(hi_open ? "< " : "<= ") + format_number(hi);
   return "finite";
+}
+
+nlohmann::json read_json_file(const std::string& path, const std::string& what) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open " + what);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    std::size_t line = 1;
+    std::size_t column = 1;
+    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: " +
+                     e.what());
+  }
 }
 
 std::string escape_pointer_token(const std::string& key) {

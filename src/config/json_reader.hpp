@@ -76,6 +76,10 @@ class JsonReader {
   std::string pointer_;
 };
 
+// Reads and parses a JSON file. Fails with an InputError naming the file ("cannot open <what>") or
+// the line and column of a syntax error, which is what an editor shows.
+nlohmann::json read_json_file(const std::string& path, const std::string& what);
+
 // JSON pointer escaping of one key ('~' -> "~0", '/' -> "~1").
 std::string escape_pointer_token(const std::string& key);
 // A short description of a JSON value's type and content for error messages.

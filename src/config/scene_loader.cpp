@@ -6,9 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 namespace mssph {
 namespace {
@@ -239,31 +237,6 @@ OutputConfig read_output(const JsonReader& root, const SimulationConfig& sim) {
   return out;
 }
 
-nlohmann::json parse_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open scene file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    // Turn the byte offset into a line and column, which is what an editor shows.
-    std::size_t line = 1;
-    std::size_t column = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        column = 1;
-      } else {
-        ++column;
-      }
-    }
-    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: " +
-                     e.what());
-  }
-}
-
 }  // namespace
 
 const char* to_string(BodyKind kind) {
@@ -342,7 +315,7 @@ Scene parse_scene(const nlohmann::json& document, const std::string& file) {
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  nlohmann::json document = parse_json_file(path);
+  nlohmann::json document = read_json_file(path, "scene file");
   for (const std::string& assignment : overrides) {
     try {
       apply_override(document, assignment);

@@ -28,7 +28,8 @@ std::vector<std::filesystem::path> shipped_scenes() {
   std::vector<std::filesystem::path> scenes;
   for (const auto& entry : std::filesystem::directory_iterator(std::string(MSSPH_SOURCE_DIR) + "/configs")) {
     const std::string name = entry.path().filename().string();
-    if (entry.path().extension() == ".json" && name.find(".schema.") == std::string::npos) {
+    // Not scenes: the schemas and the sweep files (sweep_*.json, checked by tests/sweep).
+    if (entry.path().extension() == ".json" && name.find(".schema.") == std::string::npos && name.rfind("sweep_", 0) != 0) {
       scenes.push_back(entry.path());
     }
   }

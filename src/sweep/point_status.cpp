@@ -1,0 +1,42 @@
+#include "sweep/point_status.hpp"
+
+#include "io/hdf5_handle.hpp"
+
+#include <filesystem>
+
+namespace mssph::sweep {
+
+PointState classify_status(const std::string& status) {
+  const auto starts = [&](const char* prefix) { return status.rfind(prefix, 0) == 0; };
+  if (status == "completed") return PointState::completed;
+  // `mssph run` marks a run stopped by SIGINT/SIGTERM "failed: interrupted ..." (older logs) or
+  // "interrupted ..."; either way the point itself did not fail and is run again.
+  if (starts("interrupted") || starts("failed: interrupted")) return PointState::interrupted;
+  if (starts("failed")) return PointState::failed;
+  return PointState::incomplete;
+}
+
+PointStatus read_point_status(const std::string& log_path) {
+  if (!std::filesystem::exists(log_path)) return {PointState::missing, ""};
+  h5::silence_error_printing();
+  try {
+    const h5::Handle file = h5::file(H5Fopen(log_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open " + log_path);
+    const std::string status = h5::read_string_attribute(file.id(), "status");
+    return {classify_status(status), status};
+  } catch (const h5::Error& e) {
+    return {PointState::incomplete, std::string("unreadable (") + e.what() + ")"};
+  }
+}
+
+const char* to_string(PointState state) {
+  switch (state) {
+    case PointState::missing: return "missing";
+    case PointState::completed: return "completed";
+    case PointState::failed: return "failed";
+    case PointState::interrupted: return "interrupted";
+    case PointState::incomplete: return "incomplete";
+  }
+  return "?";
+}
+
+}  // namespace mssph::sweep

@@ -1,0 +1,93 @@
+// Bad sweep files and arguments: exit code 2 with the file, JSON path, point and reason, before
+// anything runs or is written.
+#include "sweep_cli_fixture.hpp"
+#include "sweep_test_files.hpp"
+
+#include <gmock/gmock.h>
+
+namespace mssph::test {
+namespace {
+
+using ::testing::HasSubstr;
+
+struct BadSweep {
+  std::string name;
+  nlohmann::json document;
+  std::vector<std::string> expected;  // substrings of stderr
+};
+
+class SweepBadInput : public SweepCli {
+ protected:
+  void expect_rejected(const nlohmann::json& document, const std::vector<std::string>& expected,
+                       const std::vector<std::string>& extra_args = {}) {
+    const std::string file = write_json(files_, "bad_sweep.json", document);
+    std::vector<std::string> args{"sweep", file, "--out", out(), "--backend", "cpu"};
+    args.insert(args.end(), extra_args.begin(), extra_args.end());
+    const ProcessResult r = mssph(args);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    for (const std::string& e : expected) EXPECT_THAT(r.err, HasSubstr(e)) << document.dump();
+    EXPECT_TRUE(work_entries().empty()) << "nothing may be written before every point is accepted";
+  }
+  TempDir files_;
+};
+
+const nlohmann::json kDensity = {{"path", "bodies/ball/density"}, {"values", {400, 600}}};
+
+TEST_F(SweepBadInput, UnknownKeyInTheScene) {
+  expect_rejected(tiny_sweep({{{"path", "bodies/ball/densty"}, {"values", {400}}}}),
+                  {"point 0 (densty=400)", "tiny_drop.json: /bodies/ball/densty: unknown key 'densty'",
+                   "did you mean 'density'"});
+}
+
+TEST_F(SweepBadInput, PathWhoseParentIsNotInTheScene) {
+  expect_rejected(tiny_sweep({{{"path", "bodies/bal/density"}, {"values", {400}}}}),
+                  {"point 0 (density=400)", "/bodies/bal is not an object in the scene"});
+}
+
+TEST_F(SweepBadInput, EmptyValueList) {
+  expect_rejected(tiny_sweep({{{"path", "bodies/ball/density"}, {"values", nlohmann::json::array()}}}),
+                  {"bad_sweep.json: /parameters/0/values: expected at least one value, got an empty list"});
+}
+
+TEST_F(SweepBadInput, AValueTheSceneLoaderRejects) {
+  // Only the third point is bad: every point is checked before the first runs.
+  expect_rejected(tiny_sweep({{{"path", "materials/contact/viscosity"}, {"values", {1.0, 2.0, -1.0}}}}),
+                  {"bad_sweep.json: point 2 (viscosity=-1.0) is rejected by the scene loader",
+                   "/materials/contact/viscosity: expected a number >= 0, got -1"});
+}
+
+TEST_F(SweepBadInput, UnknownMetric) {
+  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity}), {{"metrics", {"time_to_peak", "peak_force"}}}),
+                  {"bad_sweep.json: /metrics/1: unknown metric \"peak_force\"; known metrics: peak_interaction_force"});
+}
+
+TEST_F(SweepBadInput, CommandLineSetOfASweptPath) {
+  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--set bodies/ball/density=1", "is swept by"}, {"--set", "bodies/ball/density=1"});
+}
+
+TEST_F(SweepBadInput, BadArguments) {
+  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--shard 2/2: expected K/N with 0 <= K < N"}, {"--shard", "2/2"});
+  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--gpus and --jobs"}, {"--gpus", "0,1", "--jobs", "2"});
+  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--gpus 0,,1"}, {"--gpus", "0,,1"});
+  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"only shape the scripts of --emit-slurm"}, {"--partition", "gpu"});
+}
+
+TEST_F(SweepBadInput, RunRejectsATagWithoutANameBeforeWriting) {
+  for (const char* tag : {"a/b=1", "=1", "no_equals"}) {
+    const ProcessResult r = mssph({"run", data_file("tiny_drop.json"), "--out", work("tagged.h5"), "--tag", tag});
+    EXPECT_EQ(r.exit_code, 2) << tag << ": " << r.err;
+    EXPECT_THAT(r.err, HasSubstr(std::string("--tag ") + tag + ": expected NAME=VALUE"));
+    EXPECT_TRUE(work_entries().empty()) << tag;
+  }
+}
+
+TEST_F(SweepBadInput, MergeAndPlotOfAFolderThatIsNoSweep) {
+  for (const char* sub : {"merge", "plot"}) {
+    const ProcessResult r = mssph({"sweep", sub, work("nothing_here")});
+    EXPECT_EQ(r.exit_code, 2) << sub << ": " << r.err;
+    EXPECT_THAT(r.err, HasSubstr("not the --out folder of a sweep")) << sub;
+  }
+}
+
+}  // namespace
+}  // namespace mssph::test

@@ -1,0 +1,106 @@
+// Resume: completed points are skipped, failed ones only rerun with --retry-failed, anything else
+// runs again; shards together run every point once, and merge lists what is missing.
+#include "io/run_log.hpp"
+#include "sweep_cli_fixture.hpp"
+#include "sweep_test_files.hpp"
+
+#include <gmock/gmock.h>
+
+#include <cstdlib>
+
+namespace mssph::test {
+namespace {
+
+using ::testing::HasSubstr;
+
+class SweepResume : public SweepCli {
+ protected:
+  ProcessResult sweep(std::vector<std::string> extra = {}, const std::string& file = tiny_product_sweep()) {
+    std::vector<std::string> args{"sweep", file, "--out", out(), "--backend", "cpu"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return mssph(args);
+  }
+  std::vector<ino_t> inodes() const {
+    std::vector<ino_t> out;
+    for (std::size_t i = 0; i < 4; ++i) out.push_back(inode(log_of(i)));
+    return out;
+  }
+  TempDir files_;
+};
+
+TEST_F(SweepResume, ASecondRunSkipsEveryCompletedPoint) {
+  ASSERT_EQ(sweep().exit_code, 0);
+  const std::vector<ino_t> before = inodes();
+  const ProcessResult again = sweep();
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_THAT(again.err, HasSubstr("4 completed before, 0 failed before, 0 to run"));
+  EXPECT_EQ(inodes(), before) << "no log was rewritten";
+}
+
+TEST_F(SweepResume, LogsLeftRunningOrInterruptedRunAgain) {
+  ASSERT_EQ(sweep().exit_code, 0);
+  const std::vector<ino_t> before = inodes();
+  { RunLog killed(log_of(1), RunMetadata{}); }  // status "running": a run killed mid-way
+  RunLog(log_of(2), RunMetadata{}).finish_failed("interrupted by a signal at t = 0.05 s");
+  std::filesystem::remove(log_of(3));
+  const ProcessResult again = sweep();
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_THAT(again.err, HasSubstr("1 completed before, 0 failed before, 3 to run"));
+  EXPECT_EQ(inode(log_of(0)), before[0]);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(status_of(log_of(i)), "completed") << i;
+}
+
+TEST_F(SweepResume, FailedPointsAreReportedAndRerunOnlyWhenAsked) {
+  // The second point's speed bound is below what the falling ball reaches: a blow-up (exit 3).
+  const std::string file = write_json(files_, "failing.json", tiny_sweep(
+      {{{"path", "simulation/max_speed"}, {"values", {20.0, 1e-4}}}}, {{"set", {{"simulation/duration", 0.02}}}}));
+  const ProcessResult first = sweep({}, file);
+  EXPECT_EQ(first.exit_code, 3) << first.err;
+  EXPECT_THAT(first.err, HasSubstr("FAILED (failed: blow-up"));
+  ASSERT_EQ(status_of(log_of(0)), "completed");
+  const ino_t failed = inode(log_of(1));
+
+  const ProcessResult resumed = sweep({}, file);
+  EXPECT_EQ(resumed.exit_code, 3) << "the sweep is still not complete";
+  EXPECT_THAT(resumed.err, HasSubstr("1 completed before, 1 failed before, 0 to run"));
+  EXPECT_THAT(resumed.err, HasSubstr("not rerun (--retry-failed reruns it): point 2/2 (max_speed=0.0001)"));
+  EXPECT_EQ(inode(log_of(1)), failed);
+  EXPECT_EQ(csv_column("state"), (std::vector<std::string>{"completed", "failed"}));
+
+  const ProcessResult retried = sweep({"--retry-failed"}, file);
+  EXPECT_EQ(retried.exit_code, 3);
+  EXPECT_THAT(retried.err, HasSubstr("1 completed before, 0 failed before, 1 to run"));
+  EXPECT_NE(inode(log_of(1)), failed) << "the failed point ran again";
+}
+
+TEST_F(SweepResume, ShardsTogetherRunEveryPointAndMergeListsTheMissing) {
+  const ProcessResult first = sweep({"--shard", "0/2"});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_THAT(first.err, HasSubstr("(shard 0/2: 2 of them)"));
+  EXPECT_TRUE(log_exists(0) && log_exists(2));
+  EXPECT_FALSE(log_exists(1) || log_exists(3));
+  EXPECT_FALSE(std::filesystem::exists(out() + "/summary.csv")) << "a shard leaves the summary to the merge";
+
+  const ProcessResult partial = mssph({"sweep", "merge", out()});
+  ASSERT_EQ(partial.exit_code, 0) << partial.err;
+  EXPECT_THAT(partial.out, HasSubstr("4 points, 2 completed, 0 failed, 0 interrupted, 0 incomplete, 2 missing"));
+  EXPECT_THAT(partial.out, HasSubstr("missing: point 1 " + manifest()["points"][1]["log"].get<std::string>()));
+  EXPECT_THAT(partial.out, HasSubstr("missing: point 3 "));
+  EXPECT_EQ(csv_column("state"), (std::vector<std::string>{"completed", "missing", "completed", "missing"}));
+  EXPECT_EQ(csv_column("peak_interaction_force")[1], "") << "a missing point has no metrics";
+
+  // The second shard from a Slurm array task's environment.
+  setenv("SLURM_ARRAY_TASK_ID", "1", 1);
+  setenv("SLURM_ARRAY_TASK_COUNT", "2", 1);
+  const ProcessResult second = sweep();
+  unsetenv("SLURM_ARRAY_TASK_ID");
+  unsetenv("SLURM_ARRAY_TASK_COUNT");
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_THAT(second.err, HasSubstr("(shard 1/2: 2 of them)"));
+  const ProcessResult whole = mssph({"sweep", "merge", out()});
+  EXPECT_THAT(whole.out, HasSubstr("4 points, 4 completed"));
+  EXPECT_EQ(csv_column("state"), std::vector<std::string>(4, "completed"));
+}
+
+}  // namespace
+}  // namespace mssph::test
