@@ -81,11 +81,12 @@ std::string JsonReader::key_pointer(const std::string& key) const {
 }
 
 void JsonReader::fail(const std::string& key, const std::string& message) const {
-  throw InputError(file_ + ": " + key_pointer(key) + ": " + message);
+  throw InputError(file_ + ": " + key_pointer(key) + ": " + message, key_pointer(key));
 }
 
 void JsonReader::fail_here(const std::string& message) const {
-  throw InputError(file_ + ": " + (pointer_.empty() ? std::string("/") : pointer_) + ": " + message);
+  throw InputError(file_ + ": " + (pointer_.empty() ? std::string("/") : pointer_) + ": " + message,
+                   pointer_.empty() ? std::string("/") : pointer_);
 }
 
 void JsonReader::allow_only(std::initializer_list<const char*> allowed) const {
