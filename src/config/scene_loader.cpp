@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -87,7 +88,7 @@ SimulationConfig read_simulation(const JsonReader& root) {
     std::ostringstream message;
     message << "expected at most " << kMaxSteps << " steps (duration / dt), got " << sim.duration / sim.dt
             << " (duration " << sim.duration << " s, dt " << sim.dt << " s)";
-    s.fail("dt", message.str());
+    s.fail_here(message.str());
   }
   sim.gravity = s.vec3_or("gravity", sim.gravity);
   sim.particle_spacing = s.number("particle_spacing", Interval::positive());
@@ -263,6 +264,13 @@ class DuplicateKeyCheck {
  public:
   explicit DuplicateKeyCheck(std::string file) : file_(std::move(file)) {}
 
+  // The JSON pointer of the value being read.
+  std::string pointer_here() const {
+    std::string pointer;
+    for (const Frame& f : frames_) pointer += "/" + (f.object ? escape_pointer_token(f.key) : std::to_string(f.index));
+    return pointer.empty() ? "/" : pointer;
+  }
+
   bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
     using Event = nlohmann::json::parse_event_t;
     switch (event) {
@@ -299,11 +307,6 @@ class DuplicateKeyCheck {
   void element_done() {
     if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
   }
-  std::string pointer_here() const {
-    std::string pointer;
-    for (const Frame& f : frames_) pointer += "/" + (f.object ? escape_pointer_token(f.key) : std::to_string(f.index));
-    return pointer;
-  }
 
   std::string file_;
   std::vector<Frame> frames_;
@@ -330,13 +333,19 @@ nlohmann::json parse_json_file(const std::string& path) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   const std::string text = buffer.str();
+  // The parser copies its callback: the copy it calls reports through this one's state.
+  auto check = std::make_shared<DuplicateKeyCheck>(path);
   try {
-    return nlohmann::json::parse(text, DuplicateKeyCheck(path));
+    return nlohmann::json::parse(text, [check](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+      return (*check)(depth, event, parsed);
+    });
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(path + ":" + line_and_column(text, e.byte) + ": invalid JSON: " + e.what());
   } catch (const nlohmann::json::exception& e) {
-    // out_of_range 406: a number beyond a double's range, e.g. 1e400.
-    throw InputError(path + ": invalid JSON: " + e.what() + " (numbers must be finite doubles, |x| < 1.8e308)");
+    // out_of_range 406: a number beyond a double's range, e.g. 1e400, in the value being read.
+    const std::string pointer = check->pointer_here();
+    throw InputError(path + ": " + pointer + ": " + e.what() + " (numbers must be finite doubles, |x| < 1.8e308)",
+                     pointer);
   }
 }
 
@@ -451,7 +460,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     for (auto o = overrides.rbegin(); o != overrides.rend() && !rejected.empty(); ++o) {
       std::string set_path = o->substr(0, o->find('='));
       if (set_path.empty() || set_path.front() != '/') set_path = "/" + set_path;
-      const bool inside = rejected == set_path || rejected.rfind(set_path + "/", 0) == 0;
+      // The value itself, inside it, or the object holding it (a rule over several keys).
+      const bool inside = rejected == set_path || rejected.rfind(set_path + "/", 0) == 0 ||
+                          set_path.rfind(rejected + "/", 0) == 0;
       if (inside) throw InputError(std::string(e.what()) + " (this value comes from --set " + *o + ")", rejected);
     }
     throw;

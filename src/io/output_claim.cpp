@@ -148,6 +148,14 @@ void OutputClaim::release() noexcept {
   fd_ = -1;
 }
 
+bool OutputClaim::reserve(long long bytes) {
+  if (fd_ < 0) return true;
+  struct stat st {};
+  if (fstat(fd_, &st) != 0) return true;
+  if (fallocate(fd_, FALLOC_FL_KEEP_SIZE, st.st_size, bytes) == 0) return true;
+  return errno != ENOSPC && errno != EFBIG;
+}
+
 void OutputClaim::publish() {
   if (fd_ < 0) throw std::logic_error("publish() of an output that is not claimed: " + path_);
   if (fsync(fd_) != 0) {

@@ -31,6 +31,12 @@ class OutputClaim {
   // file); without it an unpublished claim removes the file it created.
   void keep_partial() { keep_partial_ = true; }
 
+  // Makes sure `bytes` more than the partial file's current size are allocated on disk (Linux
+  // fallocate, without changing the file's size), so that writes up to there cannot fail for
+  // lack of space. False when the file system has no room for them (ENOSPC); true when it does,
+  // or cannot say (a file system without fallocate).
+  bool reserve(long long bytes);
+
   // Makes the partial file durable (fsync) and renames it to `path`. Without `replace`, a file
   // that appeared at `path` during the run is not replaced: std::runtime_error says so and the
   // finished file stays at its partial name.

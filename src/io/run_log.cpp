@@ -95,6 +95,7 @@ RunLog::RunLog(OutputClaim claim, const RunMetadata& metadata)
   h5::write_attribute(root, "command_line", metadata.command_line);
   h5::write_attribute(root, "start_time", utc_now());
   set_status("running");
+  ensure_space(0);
   flush();
   // From here on the partial file is a readable log worth keeping, whatever happens to the run.
   claim_.keep_partial();
@@ -207,6 +208,7 @@ void RunLog::add_snapshot(long long step, double time, const SnapshotFields& fie
                                 std::to_string(fields.velocity.size()) + " velocity and " +
                                 std::to_string(fields.pressure.size()) + " pressure values");
   }
+  ensure_space(static_cast<long long>(n * 8 * sizeof(float)));
   const std::string group_path = snapshot_group(step);
   h5::Handle group = h5::open_or_create_group(file_.id(), group_path);
   h5::write_attribute(group.id(), "time", time);
@@ -259,6 +261,10 @@ void RunLog::write_xdmf(const std::string& h5_path) const {
     errno = 0;
     out.close();
     if (!out) {
+      const int error = errno;
+      std::error_code ignored;
+      std::filesystem::remove(partial, ignored);
+      errno = error;
       throw std::runtime_error((errno == ENOSPC ? "disk full writing " : "cannot write ") + partial +
                                (errno != 0 && errno != ENOSPC ? std::string(": ") + std::strerror(errno) : ""));
     }
@@ -266,7 +272,17 @@ void RunLog::write_xdmf(const std::string& h5_path) const {
   std::filesystem::rename(partial, xdmf);  // never leave a half-written sidecar
 }
 
+void RunLog::ensure_space(long long bytes) {
+  if (claim_.reserve(bytes + kReservedBytes)) return;
+  throw h5::Error("disk full writing " + path_ + " (" + std::to_string(bytes + kReservedBytes) +
+                      " bytes more would not fit; the log is closed while it still can be)",
+                  ENOSPC);
+}
+
 void RunLog::flush() {
+  long long pending_bytes = 0;
+  for (const Series& s : series_) pending_bytes += static_cast<long long>(s.pending.size() * sizeof(double));
+  ensure_space(pending_bytes);
   for (Series& s : series_) write_pending(s);
   h5::check(H5Fflush(file_.id(), H5F_SCOPE_GLOBAL), "flush " + path_);
   structure_changed_ = false;
@@ -299,7 +315,9 @@ void RunLog::finish_unpublished(const std::string& status) noexcept {
   try {
     h5::write_attribute(file_.id(), "end_time", utc_now());
     set_status(status);
-    flush();
+    // Into the reserved space when the disk is full: no ensure_space() here.
+    for (Series& s : series_) write_pending(s);
+    h5::check(H5Fflush(file_.id(), H5F_SCOPE_GLOBAL), "flush " + path_);
   } catch (const std::exception&) {
     // The disk may be full or failing: what could be written is, and the caller reports why.
   }

@@ -47,6 +47,9 @@ class RunLog {
  public:
   // Rows each series buffers before a full buffer flushes the file.
   static constexpr std::size_t kBufferedRows = 4096;
+  // Disk space kept allocated beyond what is written, so that a full disk is noticed before a
+  // write fails half-way and the log can still be closed with status "failed: disk full ...".
+  static constexpr long long kReservedBytes = 1 << 20;
 
   // Creates the claimed output's partial file with the metadata and status "running".
   RunLog(OutputClaim claim, const RunMetadata& metadata);
@@ -113,6 +116,8 @@ class RunLog {
   // The sidecar of the file at `h5_path`, written to <h5_path>.xdmf.
   void write_xdmf(const std::string& h5_path) const;
   void set_status(const std::string& status);
+  // Throws h5::Error "disk full writing <file>" when `bytes` (plus the reserve) would not fit.
+  void ensure_space(long long bytes);
   void finish_unpublished(const std::string& status) noexcept;
 
   OutputClaim claim_;  // declared before file_: the lock outlives the open file
