@@ -50,8 +50,9 @@ void throw_error(const std::string& what) {
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, find_system_failure, &failure);
   if (failure.error == 0) throw Error("HDF5: " + what, 0);
   const std::string file = failure.file.empty() ? std::string("the file") : failure.file;
-  const std::string cause = failure.error == ENOSPC ? "disk full writing " + file
-                                                    : std::string(std::strerror(failure.error)) + " on " + file;
+  const std::string cause = failure.error == ENOSPC  ? "disk full writing " + file
+                            : failure.error == EFBIG ? "file size limit (ulimit -f) reached writing " + file
+                                                     : std::string(std::strerror(failure.error)) + " on " + file;
   throw Error(cause + " (HDF5: " + what + ")", failure.error);
 }
 

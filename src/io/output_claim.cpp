@@ -4,6 +4,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -148,12 +149,18 @@ void OutputClaim::release() noexcept {
   fd_ = -1;
 }
 
-bool OutputClaim::reserve(long long bytes) {
-  if (fd_ < 0) return true;
+int OutputClaim::reserve(long long bytes) {
+  if (fd_ < 0) return 0;
   struct stat st {};
-  if (fstat(fd_, &st) != 0) return true;
-  if (fallocate(fd_, FALLOC_FL_KEEP_SIZE, st.st_size, bytes) == 0) return true;
-  return errno != ENOSPC && errno != EFBIG;
+  if (fstat(fd_, &st) != 0) return 0;
+  // fallocate(KEEP_SIZE) ignores the file size limit, which a later write would meet.
+  struct rlimit limit {};
+  if (getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY &&
+      static_cast<unsigned long long>(st.st_size) + static_cast<unsigned long long>(bytes) > limit.rlim_cur) {
+    return EFBIG;
+  }
+  if (fallocate(fd_, FALLOC_FL_KEEP_SIZE, st.st_size, bytes) == 0) return 0;
+  return errno == ENOSPC || errno == EFBIG ? errno : 0;
 }
 
 void OutputClaim::publish() {

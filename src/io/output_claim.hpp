@@ -33,9 +33,10 @@ class OutputClaim {
 
   // Makes sure `bytes` more than the partial file's current size are allocated on disk (Linux
   // fallocate, without changing the file's size), so that writes up to there cannot fail for
-  // lack of space. False when the file system has no room for them (ENOSPC); true when it does,
-  // or cannot say (a file system without fallocate).
-  bool reserve(long long bytes);
+  // lack of space. Returns 0, or the errno that says why not: ENOSPC (the file system is full)
+  // or EFBIG (the file would pass the process's file size limit). 0 too where the file system
+  // cannot say (no fallocate).
+  int reserve(long long bytes);
 
   // Makes the partial file durable (fsync) and renames it to `path`. Without `replace`, a file
   // that appeared at `path` during the run is not replaced: std::runtime_error says so and the

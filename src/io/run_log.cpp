@@ -273,10 +273,12 @@ void RunLog::write_xdmf(const std::string& h5_path) const {
 }
 
 void RunLog::ensure_space(long long bytes) {
-  if (claim_.reserve(bytes + kReservedBytes)) return;
-  throw h5::Error("disk full writing " + path_ + " (" + std::to_string(bytes + kReservedBytes) +
+  const int error = claim_.reserve(bytes + kReservedBytes);
+  if (error == 0) return;
+  throw h5::Error(std::string(error == ENOSPC ? "disk full" : "file size limit (ulimit -f) reached") + " writing " +
+                      path_ + " (" + std::to_string(bytes + kReservedBytes) +
                       " bytes more would not fit; the log is closed while it still can be)",
-                  ENOSPC);
+                  error);
 }
 
 void RunLog::flush() {
