@@ -267,7 +267,10 @@ class DuplicateKeyCheck {
   // The JSON pointer of the value being read.
   std::string pointer_here() const {
     std::string pointer;
-    for (const Frame& f : frames_) pointer += "/" + (f.object ? escape_pointer_token(f.key) : std::to_string(f.index));
+    for (const Frame& f : frames_) {
+      pointer += '/';
+      pointer += f.object ? escape_pointer_token(f.key) : std::to_string(f.index);
+    }
     return pointer.empty() ? "/" : pointer;
   }
 
@@ -327,12 +330,7 @@ std::string line_and_column(const std::string& text, std::size_t byte) {
   return std::to_string(line) + ":" + std::to_string(column);
 }
 
-nlohmann::json parse_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open scene file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+nlohmann::json parse_json_text(const std::string& text, const std::string& path) {
   // The parser copies its callback: the copy it calls reports through this one's state.
   auto check = std::make_shared<DuplicateKeyCheck>(path);
   try {
@@ -444,7 +442,15 @@ Scene parse_scene(const nlohmann::json& document, const std::string& file) {
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  nlohmann::json document = parse_json_file(path);
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open scene file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parse_scene_text(buffer.str(), path, overrides);
+}
+
+Scene parse_scene_text(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
+  nlohmann::json document = parse_json_text(text, path);
   for (const std::string& assignment : overrides) {
     try {
       apply_override(document, assignment);

@@ -97,7 +97,8 @@ TEST_F(RunCommand, EveryDatasetHasUnitsAndADescription) {
   const std::string out = work("described.h5");
   ASSERT_EQ(mssph({"run", kScene, "--out", out, "--set", "output/snapshot_interval=0.01", "-q"}).exit_code, 0);
   std::size_t datasets = 0;
-  for (const auto& [path, object] : h5py_summary(out)["objects"].items()) {
+  const nlohmann::json summary = h5py_summary(out);
+  for (const auto& [path, object] : summary["objects"].items()) {
     if (object["kind"] != "dataset") continue;
     ++datasets;
     EXPECT_TRUE(object["attributes"].contains("units")) << path;
