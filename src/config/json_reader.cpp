@@ -91,8 +91,8 @@ void JsonReader::fail_here(const std::string& message) const {
 
 void JsonReader::allow_only(std::initializer_list<const char*> allowed) const {
   if (!value_->is_object()) fail_here("expected an object, got " + describe_json(*value_));
-  for (const auto& [key, unused] : value_->items()) {
-    (void)unused;
+  for (const auto& item : value_->items()) {
+    const std::string& key = item.key();  // a plain name: lambdas capture it (not so a structured binding in Clang 14)
     if (std::any_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) continue;
     std::string message = "unknown key '" + key + "'";
     const char* closest = nullptr;
