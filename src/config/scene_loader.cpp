@@ -20,6 +20,8 @@ using Eigen::Vector3d;
 // Steps and haptic ticks a run may take: beyond this a run is not a benchmark or a validation
 // but a mistake (a dt of 5e-324, a duration of 1e308), and it could not finish in any case.
 constexpr double kMaxSteps = 1e9;
+// Haptic ticks within one step (a device at 1 kHz and a 10 ms step make 10).
+constexpr double kMaxTicksPerStep = 1e4;
 
 // Material keys that only deformable bodies may carry inline.
 constexpr const char* kElasticKeys[] = {"young_modulus", "poisson_ratio", "strain", "damping",
@@ -235,6 +237,14 @@ std::optional<ProxyConfig> read_proxy(const JsonReader& root, const std::vector<
     std::ostringstream message;
     message << "expected at most " << kMaxSteps << " haptic ticks in the run (haptic_rate_hz x duration), got "
             << ticks;
+    section->fail("haptic_rate_hz", message.str());
+  }
+  // A signal is looked at between steps: one step's ticks must not take long.
+  const double ticks_per_step = proxy.haptics.haptic_rate_hz * root.child("simulation").number("dt");
+  if (ticks_per_step > kMaxTicksPerStep) {
+    std::ostringstream message;
+    message << "expected at most " << kMaxTicksPerStep << " haptic ticks per step (haptic_rate_hz x dt), got "
+            << ticks_per_step;
     section->fail("haptic_rate_hz", message.str());
   }
   if (it->kind != BodyKind::rigid || it->fixed) {
