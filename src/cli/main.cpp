@@ -14,9 +14,11 @@ int main(int argc, char** argv) {
   app.footer(
       "Run 'mssph run --help' for scenes, --set overrides, the HDF5 run log and its default path.\n"
       "\n"
-      "Exit codes: 0 ok; 1 other error (an interrupted run, I/O failure); 2 bad input (config,\n"
-      "arguments, trajectory file): no output is written; 3 simulation failure (blow-up): the run\n"
-      "log is kept, marked \"failed: ...\".");
+      "Exit codes: 0 ok; 1 other error (disk full, I/O failure); 2 bad input (config, arguments,\n"
+      "trajectory file, a run too large for this machine): no output is written;\n"
+      "3 simulation failure (blow-up): the run log is kept as <file>.partial, marked \"failed: ...\";\n"
+      "130, 143, 129: interrupted by SIGINT, SIGTERM, SIGHUP (the log kept as <file>.partial,\n"
+      "marked \"interrupted: ...\").");
   app.set_version_flag("--version", mssph::build_info().version + " (" + mssph::build_info().git_commit + ")");
   int exit_code = mssph::kExitOk;
   mssph::cli::add_run_command(app, exit_code);

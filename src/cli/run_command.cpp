@@ -24,7 +24,17 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--out", args->output,
                    "Output HDF5 file (default " + default_output_path("<scene>", "<backend>") +
-                       "); missing directories are created, an existing file is replaced");
+                       "); missing directories are created; an existing file is refused without --force");
+  cmd->add_flag("--force", args->force,
+                "Replace existing output files (--out, its sidecar, --record-device): regular files only, never "
+                "an input of the run, a device, directory or symbolic link");
+  cmd->add_flag("--dry-run", args->dry_run,
+                "Check everything, print particles per body, the memory estimate, the time-step bounds and the "
+                "step count, and write nothing");
+  cmd->add_option("--threads", args->threads,
+                  "Host threads for the reference and cpu backends (default: $OMP_NUM_THREADS if set, else every "
+                  "CPU this process may use; give concurrent runs their share)")
+      ->check(CLI::Range(1, 4096));
   // One PATH=VALUE per --set, so that `--set a=1 scene.json` leaves the scene file positional.
   cmd->add_option("--set", args->overrides,
                   "Override a scene value: --set PATH=VALUE, e.g. --set bodies/block/young_modulus=5e4 "
@@ -40,25 +50,32 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or start-up lines (warnings and errors still print)");
   cmd->footer(
       "The run log: one HDF5 file per run. Root attributes record the version, git commit, backend,\n"
-      "device, precision, the scene (config: after --set; config_file: the file verbatim), seed, start\n"
-      "time and status: \"running\" while the run lasts, then \"completed\" or \"failed: <reason>\". Time\n"
-      "series (with units) reach the disk every output/flush_interval seconds of wall time, so a\n"
-      "killed run leaves a readable file. With output/snapshot_interval > 0, particle snapshots are\n"
-      "written too, with an XDMF sidecar <file>.xdmf that ParaView opens. The summary line on stdout\n"
-      "names the file. HDF5 locks the file while the run lasts: to read it meanwhile (h5py, h5dump),\n"
-      "set HDF5_USE_FILE_LOCKING=FALSE in the reader's environment.\n"
+      "device, precision, threads, the scene (config: after --set; config_file: the file verbatim),\n"
+      "seed, start time and status: \"running\" while the run lasts, then \"completed\", \"failed:\n"
+      "<reason>\" or \"interrupted: <signal> ...\". The log is written to <file>.partial and renamed\n"
+      "to <file> only when the run completed: <file> holds a whole completed log or nothing; a failed,\n"
+      "interrupted or killed run leaves <file>.partial. Time series (with units) reach the disk every\n"
+      "output/flush_interval seconds of wall time, so a killed run leaves a readable file. With\n"
+      "output/snapshot_interval > 0, particle snapshots are written too, with an XDMF sidecar\n"
+      "<file>.xdmf that ParaView opens. The summary line on stdout names the file. A run locks\n"
+      "<file>.partial while it lasts (a second run for the same --out is refused); to read it\n"
+      "meanwhile (h5py, h5dump), set HDF5_USE_FILE_LOCKING=FALSE in the reader's environment.\n"
       "\n"
       "--set PATH=VALUE: PATH is a JSON path into the scene, '/'-separated with or without a leading\n"
       "'/' (simulation/dt, bodies/block/young_modulus); its parent must exist. VALUE is read as JSON\n"
       "when it is valid JSON (5e4, true, [0,0,-9.81], '\"text\"'), otherwise as a plain string\n"
       "(strain=cauchy). Overrides apply in order, before the scene is validated.\n"
       "\n"
-      "Progress goes to stderr every few seconds once a run has lasted a few seconds. SIGINT or\n"
-      "SIGTERM stops the run after the current step; its log is marked \"failed: interrupted ...\".\n"
+      "Progress goes to stderr every few seconds once a run has lasted a few seconds. SIGINT, SIGTERM\n"
+      "or SIGHUP stops the run after the current step; its log is marked \"interrupted: <signal> ...\".\n"
+      "A closed stdout (a pipe into `head`) does not make a completed run fail.\n"
       "\n"
-      "Exit codes: 0 completed; 1 other error (interrupted, I/O failure); 2 bad input (scene file,\n"
-      "--set, --backend, --out): no output is written; 3 simulation failure (blow-up): the log is\n"
-      "kept, marked \"failed: ...\".");
+      "Exit codes: 0 completed (or --dry-run); 1 other error (disk full or another I/O failure: the\n"
+      "log is kept as <file>.partial, marked \"failed: ...\" where the disk allowed it); 2 bad input\n"
+      "(scene file, --set, --backend, --out, --record-device, a run too large for this machine): no\n"
+      "output is written; 3 simulation failure (blow-up): <file>.partial is kept, marked \"failed:\n"
+      "...\"; 130, 143, 129 interrupted by SIGINT, SIGTERM, SIGHUP: <file>.partial is kept, marked\n"
+      "\"interrupted: ...\".");
   cmd->callback([args, &exit_code] {
     try {
       exit_code = run_scene(*args).exit_code;

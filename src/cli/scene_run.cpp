@@ -3,12 +3,18 @@
 #include "backend_factory.hpp"
 #include "config/scene_loader.hpp"
 #include "haptics/haptics_run.hpp"
+#include "io/output_claim.hpp"
 #include "output_path.hpp"
+#include "run_estimate.hpp"
 #include "scene/scene_builder.hpp"
 #include "sim/interrupt.hpp"
 #include "sim/stability.hpp"
 #include "util/build_info.hpp"
 #include "util/errors.hpp"
+#include "util/threads.hpp"
+#ifdef MSSPH_HAVE_CUDA_BACKEND
+#include "cuda/cuda_backend.hpp"
+#endif
 
 #include <nlohmann/json.hpp>
 
@@ -29,6 +35,8 @@ std::string read_text(const std::string& path) {
   return text.str();
 }
 
+// A closed stdout (`mssph run ... | head -0`) makes these writes fail with EPIPE (SIGPIPE is
+// ignored): the run they describe has completed all the same, so their failure is not an error.
 void print_summary_line(const std::string& output, const RunSummary& summary, const BackendInfo& info) {
   std::printf("%s: %zu steps, %.3f s simulated in %.2f s wall on %s (%s)", output.c_str(), summary.steps,
               summary.simulated_time, summary.wall_seconds, info.name.c_str(), info.device.c_str());
@@ -75,6 +83,78 @@ void write_tags(RunLog& log, const std::vector<Tag>& tags) {
   }
 }
 
+std::optional<double> device_memory_for(const std::string& backend) {
+#ifdef MSSPH_HAVE_CUDA_BACKEND
+  if (backend == "cuda") {
+    const std::vector<kernels::CudaDeviceInfo> devices = kernels::cuda_devices();
+    if (!devices.empty()) return static_cast<double>(devices.front().total_memory);
+  }
+#else
+  (void)backend;
+#endif
+  return std::nullopt;
+}
+
+// No output may be one of the run's inputs or another of its outputs; none may replace anything
+// but a regular file, and that only with --force.
+void check_outputs(const SceneRunRequest& request, const Scene& scene, const std::string& output) {
+  std::vector<std::pair<std::string, std::string>> inputs{{request.scene_path, "the scene file"}};
+  if (scene.proxy && !scene.proxy->haptics.trajectory.file.empty()) {
+    inputs.emplace_back(scene.proxy->haptics.trajectory.file, "the scene's recorded trajectory");
+  }
+  std::vector<std::pair<std::string, std::string>> outputs{{output, "--out"}, {output + ".partial", "--out"}};
+  if (scene.output.snapshot_interval > 0.0) outputs.emplace_back(output + ".xdmf", "--out");
+  if (!request.record_device.empty()) outputs.emplace_back(request.record_device, "--record-device");
+  for (const auto& [path, option] : outputs) {
+    for (const auto& [input, what] : inputs) {
+      if (same_file(path, input)) {
+        throw InputError(option + " " + path + ": is " + what + " (" + input + "), which the run reads; never "
+                         "replaced, even with --force");
+      }
+    }
+  }
+  if (!request.record_device.empty()) {
+    for (std::size_t i = 0; i + 1 < outputs.size(); ++i) {
+      if (same_file(request.record_device, outputs[i].first)) {
+        throw InputError("--record-device " + request.record_device + ": the run writes its log (or the log's "
+                         "partial file or sidecar) there");
+      }
+    }
+  }
+  check_output_path(output);
+  check_claimable(output, request.force);
+  if (scene.output.snapshot_interval > 0.0) check_replaceable("--out", output + ".xdmf", request.force);
+  if (!request.record_device.empty()) {
+    check_device_recording_request(scene, request.record_device);
+    check_replaceable("--record-device", request.record_device, request.force);
+  }
+}
+
+void print_plan(const Scene& scene, const std::string& backend, const RunEstimate& estimate,
+                const ParticleSetup& setup, const std::string& output, int threads) {
+  std::ostringstream out;
+  out << "dry run of " << scene.source_file << " (scene " << scene.name << ") on " << backend << ": nothing is written\n"
+      << "  particles: " << setup.size() << "\n";
+  for (const BodySetup& b : setup.bodies) out << "    " << b.name << " (" << to_string(b.kind) << "): " << b.count << "\n";
+  out << "  memory estimate: host " << format_bytes(estimate.host_bytes);
+  if (backend == "cuda") out << ", GPU " << format_bytes(estimate.device_bytes);
+  if (const auto available = available_host_memory()) out << " (host available: " << format_bytes(*available) << ")";
+  out << "\n  time step: dt = " << scene.simulation.dt << " s; upper bounds (DESIGN.md section 1):\n";
+  for (const TimeStepBound& b : time_step_bounds(setup)) {
+    out << "    " << b.body << " " << b.name << ": " << b.limit << " s (" << b.formula << ")"
+        << (scene.simulation.dt > b.limit ? "  EXCEEDED" : "") << "\n";
+  }
+  out << "  steps: " << static_cast<long long>(std::llround(estimate.steps)) << " (duration "
+      << scene.simulation.duration << " s)\n"
+      << "  threads: " << threads << "\n"
+      << "  log: " << output << "\n";
+  std::cout << out.str() << std::flush;
+}
+
+// Why writing the log failed, as the user should read it (h5::Error already says "disk full
+// writing <file>" when the file system said ENOSPC).
+std::string write_failure(const std::exception& e) { return e.what(); }
+
 }  // namespace
 
 std::string command_line_of(const SceneRunRequest& request) {
@@ -83,20 +163,34 @@ std::string command_line_of(const SceneRunRequest& request) {
   for (const std::string& o : request.overrides) line += " --set " + o;
   if (!request.record_device.empty()) line += " --record-device " + request.record_device;
   for (const std::string& t : request.tags) line += " --tag " + t;
+  if (request.threads > 0) line += " --threads " + std::to_string(request.threads);
+  if (request.force) line += " --force";
   return line;
 }
 
 SceneRunResult run_scene(const SceneRunRequest& request) {
+  // Signals are caught from the start, so that one arriving during set-up ends the run cleanly
+  // too (nothing is written then).
+  install_interrupt_handlers();
   // Everything that can be wrong with the input is found before the log file exists.
   const Scene scene = load_scene(request.scene_path, request.overrides);
   const std::string scene_text = read_text(request.scene_path);
   const std::string backend_name = resolve_backend_name(request.backend);
   const std::vector<Tag> tags = parse_tags(request.tags);
+  const std::string output =
+      request.output.empty() ? default_output_path(scene.name, backend_name) : request.output;
+  check_outputs(request, scene, output);
+  const RunEstimate estimate = estimate_run(scene, backend_name);
+  check_run_fits(scene, backend_name, estimate, available_host_memory(), device_memory_for(backend_name));
+  const int threads = request.threads > 0 ? request.threads : default_thread_count();
+  set_thread_count(threads);
+
   SceneRunResult result;
-  result.output = request.output.empty() ? default_output_path(scene.name, backend_name) : request.output;
-  check_output_path(result.output);
-  if (!request.record_device.empty()) check_device_recording_request(scene, request.record_device);
   ParticleSetup setup = build_particles(scene);
+  if (request.dry_run) {
+    print_plan(scene, backend_name, estimate, setup, output, threads);
+    return result;
+  }
   std::vector<std::string> warnings = stability_warnings(setup);
   for (std::string& w : haptic_warnings(scene, setup)) warnings.push_back(std::move(w));
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
@@ -106,12 +200,20 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
     for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
       std::cerr << (b ? ", " : "") << setup.bodies[b].name << " " << setup.bodies[b].count;
     }
-    std::cerr << "), " << scene.simulation.duration / scene.simulation.dt << " steps of " << scene.simulation.dt
-              << " s on " << backend_name << "\n";
+    std::cerr << "), " << std::llround(estimate.steps) << " steps of " << scene.simulation.dt << " s on "
+              << backend_name << ", " << threads << " threads ("
+              << (request.threads > 0 ? std::string("--threads") : default_thread_source()) << ")\n";
   }
   const ParticleSetup setup_for_log = setup;
   std::unique_ptr<Backend> backend = make_backend(backend_name, std::move(setup));
   result.backend = backend->info();
+
+  if (const int signal = interrupt_signal()) {
+    std::cerr << "error: " << signal_name(signal) << " before the run started; nothing was written\n";
+    result.exit_code = 128 + signal;
+    result.error = "interrupted: " + signal_name(signal) + " before the run started";
+    return result;
+  }
 
   RunMetadata metadata;
   metadata.version = build_info().version;
@@ -125,34 +227,52 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   metadata.config_file = scene_text;
   metadata.seed = static_cast<long long>(scene.simulation.seed);
   metadata.command_line = command_line_of(request);
-  // From here on an interrupt ends the run through the log (status "failed: interrupted ...")
-  // rather than killing the process with the log still saying "running".
-  install_interrupt_handlers();
-  RunLog log(result.output, metadata);
-  std::string joined_warnings;
-  for (const std::string& w : warnings) joined_warnings += w + "\n";
-  log.set_attribute("/", "warnings", joined_warnings);
-  write_tags(log, tags);
 
+  std::unique_ptr<RunLog> log;
   try {
-    result.summary =
-        run_simulation(scene, setup_for_log, *backend, log, RunOptions{request.quiet, request.record_device});
-    print_summary_line(result.output, result.summary, result.backend);
+    // The claim (and its lock) is taken only now, so that a refused or interrupted set-up leaves
+    // nothing behind; a run that took the path meanwhile makes this one fail here.
+    log = std::make_unique<RunLog>(OutputClaim(output, request.force), metadata);
+    std::string joined_warnings;
+    for (const std::string& w : warnings) joined_warnings += w + "\n";
+    log->set_attribute("/", "warnings", joined_warnings);
+    log->set_attribute("/", "threads", static_cast<long long>(threads));
+    write_tags(*log, tags);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    // The log could not be started (disk full, I/O error): its partial file is removed.
+    std::cerr << "error: " << write_failure(e) << "\n  nothing was written to " << output << "\n";
+    result.exit_code = kExitOther;
+    result.error = write_failure(e);
+    return result;
+  }
+
+  result.output = log->path();
+  try {
+    result.summary = run_simulation(scene, setup_for_log, *backend, *log,
+                                    RunOptions{request.quiet, request.record_device});
+    result.output = log->path();
     result.exit_code = kExitOk;
+    print_summary_line(result.output, result.summary, result.backend);
   } catch (const SimulationFailure& e) {
-    std::cerr << "error: " << e.what() << "\n  the log is kept, marked failed: " << result.output << "\n";
+    std::cerr << "error: " << e.what() << "\n  the log is kept, marked failed: " << log->path() << "\n";
     result.exit_code = kExitSimulationFailure;
     result.error = e.what();
   } catch (const RunInterrupted& e) {
-    std::cerr << "error: " << e.what() << "\n  the log is kept, marked failed: " << result.output << "\n";
-    result.exit_code = kExitOther;
-    result.error = e.what();
+    std::cerr << "interrupted: " << e.what() << "\n  the log is kept, marked interrupted: " << log->path() << "\n";
+    result.exit_code = e.exit_code();
+    result.error = std::string("interrupted: ") + e.what();
   } catch (const std::exception& e) {
-    // A failure before the step loop (setting up series, the haptic session) still ends the log
-    // with its reason instead of leaving it "running" like a killed run.
-    if (!log.finished()) log.finish_failed(e.what());
-    throw;
+    // A write failure (disk full), or a failure setting up the series or the haptic session: the
+    // log ends with its reason, as far as the disk allows, at its partial name.
+    if (!log->finished()) log->finish_failed(write_failure(e));
+    std::cerr << "error: " << write_failure(e) << "\n  the log is kept at " << log->path()
+              << " (status \"failed: ...\" where the disk allowed writing it)\n";
+    result.exit_code = kExitOther;
+    result.error = write_failure(e);
   }
+  result.output = log->path();
   return result;
 }
 

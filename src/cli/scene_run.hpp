@@ -22,11 +22,18 @@ struct SceneRunRequest {
   // VALUE is stored as a number when it is one, else as text.
   std::vector<std::string> tags;
   bool quiet = false;
+  bool force = false;    // replace existing output files (regular files only, never an input)
+  bool dry_run = false;  // print the plan (particles, memory, dt bounds, steps) and write nothing
+  int threads = 0;       // host threads of the OpenMP loops; 0 for default_thread_count()
 };
 
 struct SceneRunResult {
-  int exit_code = 0;        // kExitOk, kExitSimulationFailure or kExitOther (interrupted)
-  std::string output;       // the run log's path
+  // kExitOk, kExitSimulationFailure, kExitOther (I/O failure), or 128 + the signal's number when
+  // a signal interrupted the run (130 SIGINT, 143 SIGTERM, 129 SIGHUP).
+  int exit_code = 0;
+  // The run log: the requested path when the run completed, <path>.partial otherwise, "" when
+  // nothing was written (a dry run, a run interrupted or failed before its log existed).
+  std::string output;
   std::string error;        // why the run failed; "" when it completed
   BackendInfo backend;
   RunSummary summary;       // meaningful when exit_code == kExitOk
@@ -35,7 +42,8 @@ struct SceneRunResult {
 // The command line that reproduces a request, recorded in the log.
 std::string command_line_of(const SceneRunRequest& request);
 
-// Bad input (scene, --set, --out, trajectory) throws InputError before any output exists.
+// Bad input (scene, --set, --out, --record-device, trajectory, a run the machine cannot hold)
+// throws InputError before any output exists.
 // A run that starts ends in its log's status and the returned exit code; the one-line summary and
 // errors are printed as `mssph run` prints them.
 SceneRunResult run_scene(const SceneRunRequest& request);

@@ -106,17 +106,18 @@ std::string JsonReader::key_pointer(const std::string& key) const {
 }
 
 void JsonReader::fail(const std::string& key, const std::string& message) const {
-  throw InputError(file_ + ": " + key_pointer(key) + ": " + message);
+  throw InputError(file_ + ": " + key_pointer(key) + ": " + message, key_pointer(key));
 }
 
 void JsonReader::fail_here(const std::string& message) const {
-  throw InputError(file_ + ": " + (pointer_.empty() ? std::string("/") : pointer_) + ": " + message);
+  throw InputError(file_ + ": " + (pointer_.empty() ? std::string("/") : pointer_) + ": " + message,
+                   pointer_.empty() ? std::string("/") : pointer_);
 }
 
 void JsonReader::allow_only(std::initializer_list<const char*> allowed) const {
   if (!value_->is_object()) fail_here("expected an object, got " + describe_json(*value_));
-  for (const auto& [key, unused] : value_->items()) {
-    (void)unused;
+  for (const auto& item : value_->items()) {
+    const std::string& key = item.key();  // a plain name: lambdas capture it (not so a structured binding in Clang 14)
     if (std::any_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) continue;
     std::string message = "unknown key '" + key + "'";
     const char* closest = nullptr;

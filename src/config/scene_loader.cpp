@@ -7,11 +7,20 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
+#include <set>
+#include <sstream>
 
 namespace mssph {
 namespace {
 
 using Eigen::Vector3d;
+
+// Steps and haptic ticks a run may take: beyond this a run is not a benchmark or a validation
+// but a mistake (a dt of 5e-324, a duration of 1e308), and it could not finish in any case.
+constexpr double kMaxSteps = 1e9;
+// Haptic ticks within one step (a device at 1 kHz and a 10 ms step make 10).
+constexpr double kMaxTicksPerStep = 1e4;
 
 // Material keys that only deformable bodies may carry inline.
 constexpr const char* kElasticKeys[] = {"young_modulus", "poisson_ratio", "strain", "damping",
@@ -76,6 +85,12 @@ SimulationConfig read_simulation(const JsonReader& root) {
   sim.dt = s.number("dt", Interval::positive());
   sim.duration = s.number("duration", Interval::positive());
   if (sim.dt > sim.duration) s.fail("dt", "expected dt <= duration (" + std::to_string(sim.duration) + " s)");
+  if (sim.duration / sim.dt > kMaxSteps) {
+    std::ostringstream message;
+    message << "expected at most " << kMaxSteps << " steps (duration / dt), got " << sim.duration / sim.dt
+            << " (duration " << sim.duration << " s, dt " << sim.dt << " s)";
+    s.fail_here(message.str());
+  }
   sim.gravity = s.vec3_or("gravity", sim.gravity);
   sim.particle_spacing = s.number("particle_spacing", Interval::positive());
   sim.smoothing_length = s.number_or("smoothing_length", 2.0 * sim.particle_spacing, Interval::positive());
@@ -216,6 +231,21 @@ std::optional<ProxyConfig> read_proxy(const JsonReader& root, const std::vector<
   proxy.body = section->string("body");
   const auto it = std::find_if(bodies.begin(), bodies.end(), [&](const BodyConfig& b) { return b.name == proxy.body; });
   if (it == bodies.end()) section->fail("body", "no body named \"" + proxy.body + "\" in /bodies");
+  const double ticks = proxy.haptics.haptic_rate_hz * root.child("simulation").number("duration");
+  if (ticks > kMaxSteps) {
+    std::ostringstream message;
+    message << "expected at most " << kMaxSteps << " haptic ticks in the run (haptic_rate_hz x duration), got "
+            << ticks;
+    section->fail("haptic_rate_hz", message.str());
+  }
+  // A signal is looked at between steps: one step's ticks must not take long.
+  const double ticks_per_step = proxy.haptics.haptic_rate_hz * root.child("simulation").number("dt");
+  if (ticks_per_step > kMaxTicksPerStep) {
+    std::ostringstream message;
+    message << "expected at most " << kMaxTicksPerStep << " haptic ticks per step (haptic_rate_hz x dt), got "
+            << ticks_per_step;
+    section->fail("haptic_rate_hz", message.str());
+  }
   if (it->kind != BodyKind::rigid || it->fixed) {
     section->fail("body", "the proxy must be a movable rigid body; \"" + proxy.body + "\" is " +
                               (it->fixed ? std::string("a fixed rigid body") : std::string(to_string(it->kind))));
@@ -235,6 +265,105 @@ OutputConfig read_output(const JsonReader& root, const SimulationConfig& sim) {
   out.snapshot_interval = section->number_or("snapshot_interval", 0.0, Interval::non_negative());
   out.flush_interval = section->number_or("flush_interval", 2.0, Interval::positive());
   return out;
+}
+
+// Where the parser is, for naming a duplicate key by its JSON pointer: one frame per open
+// object or array, holding the keys seen so far (objects) or the element count (arrays).
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(std::string file) : file_(std::move(file)) {}
+
+  // The JSON pointer of the value being read.
+  std::string pointer_here() const {
+    std::string pointer;
+    for (const Frame& f : frames_) {
+      pointer += '/';
+      pointer += f.object ? escape_pointer_token(f.key) : std::to_string(f.index);
+    }
+    return pointer.empty() ? "/" : pointer;
+  }
+
+  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    switch (event) {
+      case Event::object_start: frames_.push_back({true, {}, "", 0}); break;
+      case Event::array_start: frames_.push_back({false, {}, "", 0}); break;
+      case Event::key: {
+        Frame& top = frames_.back();
+        top.key = parsed.get<std::string>();
+        if (!top.keys.insert(top.key).second) {
+          const std::string pointer = pointer_here();
+          throw InputError(file_ + ": " + pointer + ": duplicate key '" + top.key +
+                               "' (JSON leaves its meaning undefined; keep one)",
+                           pointer);
+        }
+        break;
+      }
+      case Event::object_end:
+      case Event::array_end:
+        frames_.pop_back();
+        element_done();
+        break;
+      case Event::value: element_done(); break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool object;
+    std::set<std::string> keys;
+    std::string key;      // objects: the member being read
+    std::size_t index;    // arrays: the element being read
+  };
+  void element_done() {
+    if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+  }
+
+  std::string file_;
+  std::vector<Frame> frames_;
+};
+
+// The line and column of a byte offset, which is what an editor shows.
+std::string line_and_column(const std::string& text, std::size_t byte) {
+  std::size_t line = 1;
+  std::size_t column = 1;
+  for (std::size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
+nlohmann::json parse_json_text(const std::string& text, const std::string& path) {
+  // The parser copies its callback: the copy it calls reports through this one's state.
+  auto check = std::make_shared<DuplicateKeyCheck>(path);
+  try {
+    return nlohmann::json::parse(text, [check](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+      return (*check)(depth, event, parsed);
+    });
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(path + ":" + line_and_column(text, e.byte) + ": invalid JSON: " + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    // out_of_range 406: a number beyond a double's range, e.g. 1e400, in the value being read.
+    const std::string pointer = check->pointer_here();
+    throw InputError(path + ": " + pointer + ": " + e.what() + " (numbers must be finite doubles, |x| < 1.8e308)",
+                     pointer);
+  }
+}
+
+// A string is stored in the run log and printed; the JSON library requires UTF-8.
+bool is_valid_utf8(const std::string& text) {
+  try {
+    (void)nlohmann::json(text).dump();
+    return true;
+  } catch (const nlohmann::json::type_error&) {
+    return false;
+  }
 }
 
 }  // namespace
@@ -269,11 +398,18 @@ void apply_override(nlohmann::json& document, const std::string& assignment) {
   const std::string text = assignment.substr(equals + 1);
   if (path.front() != '/') path = "/" + path;
 
+  if (!is_valid_utf8(assignment)) {
+    throw InputError(is_valid_utf8(path) ? "--set " + path + "=...: the value is not valid UTF-8 text"
+                                         : std::string("--set: a PATH=VALUE argument is not valid UTF-8 text"));
+  }
   nlohmann::json value;
   try {
     value = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error&) {
     value = text;  // a bare word, e.g. strain=cauchy
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError("--set " + assignment + ": " + e.what() + " (numbers must be finite doubles, |x| < 1.8e308)",
+                     path);
   }
   nlohmann::json::json_pointer pointer;
   try {
@@ -315,15 +451,37 @@ Scene parse_scene(const nlohmann::json& document, const std::string& file) {
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  nlohmann::json document = read_json_file(path, "scene file");
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open scene file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parse_scene_text(buffer.str(), path, overrides);
+}
+
+Scene parse_scene_text(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
+  nlohmann::json document = parse_json_text(text, path);
   for (const std::string& assignment : overrides) {
     try {
       apply_override(document, assignment);
     } catch (const InputError& e) {
-      throw InputError(path + ": " + e.what());  // which scene the override was meant for
+      throw InputError(path + ": " + e.what(), e.json_pointer());  // which scene the override was meant for
     }
   }
-  return parse_scene(document, path);
+  try {
+    return parse_scene(document, path);
+  } catch (const InputError& e) {
+    // A rejected value the user typed on the command line is not in the file they will open.
+    const std::string& rejected = e.json_pointer();
+    for (auto o = overrides.rbegin(); o != overrides.rend() && !rejected.empty(); ++o) {
+      std::string set_path = o->substr(0, o->find('='));
+      if (set_path.empty() || set_path.front() != '/') set_path = "/" + set_path;
+      // The value itself, inside it, or the object holding it (a rule over several keys).
+      const bool inside = rejected == set_path || rejected.rfind(set_path + "/", 0) == 0 ||
+                          set_path.rfind(rejected + "/", 0) == 0;
+      if (inside) throw InputError(std::string(e.what()) + " (this value comes from --set " + *o + ")", rejected);
+    }
+    throw;
+  }
 }
 
 }  // namespace mssph

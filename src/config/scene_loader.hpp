@@ -20,4 +20,9 @@ Scene parse_scene(const nlohmann::json& document, const std::string& file);
 // Reads `path`, applies the overrides in order and validates the result.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// The same for a scene file's text (`path` names it in messages and locates a recorded
+// trajectory): strict JSON (no duplicate keys, no number beyond a double), then as above.
+Scene parse_scene_text(const std::string& text, const std::string& path,
+                       const std::vector<std::string>& overrides = {});
+
 }  // namespace mssph

@@ -81,10 +81,19 @@ void write_device_recording(const std::string& path, const DeviceRecording& reco
     const Eigen::Quaterniond& q = p.orientation;
     raw.pose.push_back({p.position.x(), p.position.y(), p.position.z(), q.x(), q.y(), q.z(), q.w()});
   }
-  if (format_of(path) == Format::csv) {
-    write_csv_recording(path, raw);
-  } else {
-    write_hdf5_recording(path, raw);
+  // Written whole under a temporary name, then renamed: `path` never holds half a recording.
+  const std::string partial = path + ".partial";
+  try {
+    if (format_of(path) == Format::csv) {
+      write_csv_recording(partial, raw);
+    } else {
+      write_hdf5_recording(partial, raw);
+    }
+    std::filesystem::rename(partial, path);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(partial, ignored);
+    throw;
   }
 }
 

@@ -1,5 +1,8 @@
 #include "io/hdf5_handle.hpp"
 
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <sstream>
 
 namespace mssph::h5 {
@@ -18,7 +21,40 @@ void remove_if_present(hid_t object, const std::string& name) {
   }
 }
 
+// What HDF5's error stack says about a failed system call: its file drivers record
+// "..., filename = '<name>', ..., errno = <n>, error message = '<text>'" (H5FDsec2.c).
+struct SystemFailure {
+  int error = 0;
+  std::string file;
+};
+
+herr_t find_system_failure(unsigned, const H5E_error2_t* entry, void* data) {
+  auto* failure = static_cast<SystemFailure*>(data);
+  if (failure->error != 0 || entry->desc == nullptr) return 0;
+  const std::string desc = entry->desc;
+  const auto at = desc.find("errno = ");
+  if (at == std::string::npos) return 0;
+  failure->error = std::atoi(desc.c_str() + at + 8);
+  const auto name = desc.find("filename = '");
+  if (name != std::string::npos) {
+    const auto start = name + 12;
+    failure->file = desc.substr(start, desc.find('\'', start) - start);
+  }
+  return 0;
+}
+
 }  // namespace
+
+void throw_error(const std::string& what) {
+  SystemFailure failure;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, find_system_failure, &failure);
+  if (failure.error == 0) throw Error("HDF5: " + what, 0);
+  const std::string file = failure.file.empty() ? std::string("the file") : failure.file;
+  const std::string cause = failure.error == ENOSPC  ? "disk full writing " + file
+                            : failure.error == EFBIG ? "file size limit (ulimit -f) reached writing " + file
+                                                     : std::string(std::strerror(failure.error)) + " on " + file;
+  throw Error(cause + " (HDF5: " + what + ")", failure.error);
+}
 
 Handle open_or_create_group(hid_t file, const std::string& path) {
   std::string partial;

@@ -12,12 +12,21 @@ namespace mssph::h5 {
 
 class Error : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  Error(const std::string& message, int system_error) : std::runtime_error(message), system_error_(system_error) {}
+  // The errno of the failed system call under HDF5 (ENOSPC: disk full), 0 when none failed.
+  int system_error() const { return system_error_; }
+
+ private:
+  int system_error_ = 0;
 };
 
-// Throws h5::Error("HDF5: <what>") when status < 0.
+// Throws h5::Error for a failed call: "HDF5: <what>", or, when HDF5's error stack records a
+// failed system call, e.g. "disk full writing <file> (HDF5: <what>)".
+[[noreturn]] void throw_error(const std::string& what);
+
+// Throws h5::Error (see throw_error) when status < 0.
 inline herr_t check(herr_t status, const std::string& what) {
-  if (status < 0) throw Error("HDF5: " + what);
+  if (status < 0) throw_error(what);
   return status;
 }
 
@@ -27,7 +36,7 @@ class Handle {
   using Closer = herr_t (*)(hid_t);
   Handle() = default;
   Handle(hid_t id, Closer closer, const std::string& what) : id_(id), closer_(closer) {
-    if (id_ < 0) throw Error("HDF5: " + what);
+    if (id_ < 0) throw_error(what);
   }
   ~Handle() { reset(); }
   Handle(Handle&& other) noexcept : id_(std::exchange(other.id_, H5I_INVALID_HID)), closer_(other.closer_) {}

@@ -1,6 +1,8 @@
 #include "io/run_log.hpp"
 
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -53,7 +55,7 @@ std::string snapshot_group(long long step) {
 }
 
 void write_float_dataset(hid_t file, const std::string& path, std::span<const float> values, hsize_t columns,
-                         const std::string& units) {
+                         const std::string& units, const std::string& description) {
   const hsize_t dims[2] = {values.size() / columns, columns};
   h5::Handle space = h5::dataspace(H5Screate_simple(columns == 1 ? 1 : 2, dims, nullptr), "snapshot space " + path);
   h5::Handle set = h5::dataset(
@@ -61,50 +63,48 @@ void write_float_dataset(hid_t file, const std::string& path, std::span<const fl
       "create " + path);
   h5::check(H5Dwrite(set.id(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + path);
   h5::write_attribute(set.id(), "units", units);
+  h5::write_attribute(set.id(), "description", description);
 }
 
 }  // namespace
 
-RunLog::RunLog(const std::string& path, const RunMetadata& metadata) : path_(path) {
+RunLog::RunLog(const std::string& path, const RunMetadata& metadata, bool replace)
+    : RunLog(OutputClaim(path, replace), metadata) {}
+
+RunLog::RunLog(OutputClaim claim, const RunMetadata& metadata)
+    : claim_(std::move(claim)), path_(claim_.partial_path()) {
   h5::silence_error_printing();
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  // Built under a temporary name and renamed once flushed, so `path` never names a file that
-  // HDF5 cannot open, even if the process dies while the file is being created. The default
-  // (oldest compatible) file format matters too: it has no "open for writing" flag, which newer
-  // formats leave set in a killed run's file, making readers refuse it until h5clear is run.
-  const std::string partial = path + ".partial";
-  file_ = h5::file(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create " + partial);
-  try {
-    const hid_t root = file_.id();
-    h5::write_attribute(root, "mssph_version", metadata.version);
-    h5::write_attribute(root, "git_commit", metadata.git_commit);
-    h5::write_attribute(root, "backend", metadata.backend);
-    h5::write_attribute(root, "device", metadata.device);
-    h5::write_attribute(root, "precision", metadata.precision);
-    h5::write_attribute(root, "scene", metadata.scene_name);
-    h5::write_attribute(root, "config_path", metadata.config_path);
-    h5::write_attribute(root, "config", metadata.config_json);
-    h5::write_attribute(root, "config_file", metadata.config_file);
-    h5::write_attribute(root, "seed", metadata.seed);
-    h5::write_attribute(root, "command_line", metadata.command_line);
-    h5::write_attribute(root, "start_time", utc_now());
-    set_status("running");
-    flush();
-    std::filesystem::rename(partial, path);
-  } catch (...) {
-    file_.reset();
-    std::error_code ignored;  // the original failure is the one worth reporting
-    std::filesystem::remove(partial, ignored);
-    throw;
-  }
-  // The sidecar of a file this one replaced would point at snapshots that no longer exist.
-  std::filesystem::remove(xdmf_path());
+  // The claim's flock(2) on the partial file is the lock; HDF5's own lock on it would conflict.
+  // The default (oldest compatible) file format matters too: it has no "open for writing" flag,
+  // which newer formats leave set in a killed run's file, making readers refuse it until h5clear
+  // is run.
+  h5::Handle access = h5::property_list(H5Pcreate(H5P_FILE_ACCESS), "file access properties");
+  h5::check(H5Pset_file_locking(access.id(), false, true), "turn off HDF5 file locking");
+  file_ = h5::file(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.id()), "create " + path_);
+  const hid_t root = file_.id();
+  h5::write_attribute(root, "mssph_version", metadata.version);
+  h5::write_attribute(root, "git_commit", metadata.git_commit);
+  h5::write_attribute(root, "backend", metadata.backend);
+  h5::write_attribute(root, "device", metadata.device);
+  h5::write_attribute(root, "precision", metadata.precision);
+  h5::write_attribute(root, "scene", metadata.scene_name);
+  h5::write_attribute(root, "config_path", metadata.config_path);
+  h5::write_attribute(root, "config", metadata.config_json);
+  h5::write_attribute(root, "config_file", metadata.config_file);
+  h5::write_attribute(root, "seed", metadata.seed);
+  h5::write_attribute(root, "command_line", metadata.command_line);
+  h5::write_attribute(root, "start_time", utc_now());
+  set_status("running");
+  ensure_space(0);
+  flush();
+  // From here on the partial file is a readable log worth keeping, whatever happens to the run.
+  claim_.keep_partial();
 }
 
 RunLog::~RunLog() {
   // A log destroyed without finish_*() keeps status "running": whoever reads it knows the run
   // did not end normally. Pending rows are still written so nothing logged is lost.
+  if (!file_) return;
   try {
     flush();
   } catch (const std::exception&) {
@@ -168,7 +168,8 @@ void RunLog::write_pending(Series& s) {
   s.pending.clear();
 }
 
-void RunLog::write_array(const std::string& dataset_path, std::span<const int> values, const std::string& description) {
+void RunLog::write_array(const std::string& dataset_path, std::span<const int> values, const std::string& units,
+                         const std::string& description) {
   h5::open_or_create_group(file_.id(), parent_path(dataset_path));
   const hsize_t dims[1] = {values.size()};
   h5::Handle space = h5::dataspace(H5Screate_simple(1, dims, nullptr), "array space " + dataset_path);
@@ -176,6 +177,7 @@ void RunLog::write_array(const std::string& dataset_path, std::span<const int> v
                                           H5P_DEFAULT, H5P_DEFAULT),
                                "create " + dataset_path);
   h5::check(H5Dwrite(set.id(), H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + dataset_path);
+  h5::write_attribute(set.id(), "units", units);
   h5::write_attribute(set.id(), "description", description);
   structure_changed_ = true;
 }
@@ -206,26 +208,30 @@ void RunLog::add_snapshot(long long step, double time, const SnapshotFields& fie
                                 std::to_string(fields.velocity.size()) + " velocity and " +
                                 std::to_string(fields.pressure.size()) + " pressure values");
   }
+  ensure_space(static_cast<long long>(n * 8 * sizeof(float)));
   const std::string group_path = snapshot_group(step);
   h5::Handle group = h5::open_or_create_group(file_.id(), group_path);
   h5::write_attribute(group.id(), "time", time);
   h5::write_attribute(group.id(), "step", step);
-  write_float_dataset(file_.id(), group_path + "/position", fields.position, 3, "m");
-  write_float_dataset(file_.id(), group_path + "/velocity", fields.velocity, 3, "m/s");
-  write_float_dataset(file_.id(), group_path + "/density", fields.density, 1, "kg/m^3");
-  write_float_dataset(file_.id(), group_path + "/pressure", fields.pressure, 1, "Pa");
+  write_float_dataset(file_.id(), group_path + "/position", fields.position, 3, "m", "particle positions (x, y, z)");
+  write_float_dataset(file_.id(), group_path + "/velocity", fields.velocity, 3, "m/s",
+                      "particle velocities (x, y, z)");
+  write_float_dataset(file_.id(), group_path + "/density", fields.density, 1, "kg/m^3", "SPH density of each particle");
+  write_float_dataset(file_.id(), group_path + "/pressure", fields.pressure, 1, "Pa",
+                      "pressure of each particle, P = k (rho - rho0)");
   const bool with_body = h5::object_exists(file_.id(), kBodyPath) &&
                          h5::dataset_shape(file_.id(), kBodyPath) == std::vector<hsize_t>{n};
   snapshots_.push_back({step, time, n, with_body});
   flush();
-  write_xdmf();
+  write_xdmf(path_);
 }
 
 // XDMF 3: a temporal collection of polyvertex grids whose heavy data are the HDF5 datasets,
 // named relative to the sidecar, which lies next to the HDF5 file.
-void RunLog::write_xdmf() const {
-  const std::string h5_name = xml_escape(std::filesystem::path(path_).filename().string());
-  const std::string partial = xdmf_path() + ".partial";
+void RunLog::write_xdmf(const std::string& h5_path) const {
+  const std::string h5_name = xml_escape(std::filesystem::path(h5_path).filename().string());
+  const std::string xdmf = h5_path + ".xdmf";
+  const std::string partial = xdmf + ".partial";
   {
     std::ofstream out(partial);
     out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
@@ -252,13 +258,33 @@ void RunLog::write_xdmf() const {
       out << "   </Grid>\n";
     }
     out << "  </Grid>\n </Domain>\n</Xdmf>\n";
+    errno = 0;
     out.close();
-    if (!out) throw std::runtime_error("cannot write " + partial);
+    if (!out) {
+      const int error = errno;
+      std::error_code ignored;
+      std::filesystem::remove(partial, ignored);
+      errno = error;
+      throw std::runtime_error((errno == ENOSPC ? "disk full writing " : "cannot write ") + partial +
+                               (errno != 0 && errno != ENOSPC ? std::string(": ") + std::strerror(errno) : ""));
+    }
   }
-  std::filesystem::rename(partial, xdmf_path());  // never leave a half-written sidecar
+  std::filesystem::rename(partial, xdmf);  // never leave a half-written sidecar
+}
+
+void RunLog::ensure_space(long long bytes) {
+  const int error = claim_.reserve(bytes + kReservedBytes);
+  if (error == 0) return;
+  throw h5::Error(std::string(error == ENOSPC ? "disk full" : "file size limit (ulimit -f) reached") + " writing " +
+                      path_ + " (" + std::to_string(bytes + kReservedBytes) +
+                      " bytes more would not fit; the log is closed while it still can be)",
+                  error);
 }
 
 void RunLog::flush() {
+  long long pending_bytes = 0;
+  for (const Series& s : series_) pending_bytes += static_cast<long long>(s.pending.size() * sizeof(double));
+  ensure_space(pending_bytes);
   for (Series& s : series_) write_pending(s);
   h5::check(H5Fflush(file_.id(), H5F_SCOPE_GLOBAL), "flush " + path_);
   structure_changed_ = false;
@@ -270,14 +296,39 @@ void RunLog::finish_completed() {
   h5::write_attribute(file_.id(), "end_time", utc_now());
   set_status("completed");
   flush();
+  file_.reset();
+  finished_ = true;
+  // The sidecar first, so that the moment the log appears at its final path, its sidecar does.
+  const std::string final_xdmf = final_path() + ".xdmf";
+  if (!snapshots_.empty()) {
+    write_xdmf(final_path());
+  } else {
+    std::error_code ignored;  // a replaced log's sidecar would point at snapshots that no longer exist
+    std::filesystem::remove(final_xdmf, ignored);
+  }
+  claim_.publish();
+  path_ = final_path();
+  std::error_code ignored;
+  std::filesystem::remove(claim_.partial_path() + ".xdmf", ignored);
+}
+
+void RunLog::finish_unpublished(const std::string& status) noexcept {
+  if (!file_) return;
+  try {
+    h5::write_attribute(file_.id(), "end_time", utc_now());
+    set_status(status);
+    // Into the reserved space when the disk is full: no ensure_space() here.
+    for (Series& s : series_) write_pending(s);
+    h5::check(H5Fflush(file_.id(), H5F_SCOPE_GLOBAL), "flush " + path_);
+  } catch (const std::exception&) {
+    // The disk may be full or failing: what could be written is, and the caller reports why.
+  }
+  file_.reset();
   finished_ = true;
 }
 
-void RunLog::finish_failed(const std::string& reason) {
-  h5::write_attribute(file_.id(), "end_time", utc_now());
-  set_status("failed: " + reason);
-  flush();
-  finished_ = true;
-}
+void RunLog::finish_failed(const std::string& reason) noexcept { finish_unpublished("failed: " + reason); }
+
+void RunLog::finish_interrupted(const std::string& reason) noexcept { finish_unpublished("interrupted: " + reason); }
 
 }  // namespace mssph

@@ -1,16 +1,19 @@
 #pragma once
 // One HDF5 file per run (DESIGN.md section 5). Root attributes say what ran and how it ended
-// (`status`: "running", then "completed" or "failed: <reason>"); time series are chunked,
-// extensible float64 datasets with a `units` attribute. Optional particle snapshots get an XDMF
+// (`status`: "running", then "completed", "failed: <reason>" or "interrupted: <reason>"); every
+// dataset has `units` and `description` attributes. Optional particle snapshots get an XDMF
 // sidecar (<file>.xdmf) that ParaView opens.
 //
-// A run killed at any moment leaves either no file or a readable one whose status still says
-// "running": the file is created under <path>.partial and renamed only once its metadata is on
-// disk, rows are buffered in memory and reach the file only through flush() (called by the
-// driver every few seconds and whenever a buffer fills), and a change of the file's structure
-// (a new series, array or attribute) is flushed before the next row is buffered. Rows appended
-// since the last flush are what such a kill loses.
+// <path> holds a completed log or nothing: the log is written under <path>.partial (locked, see
+// io/output_claim.hpp) and renamed to <path> by finish_completed() once whole and synced. A run
+// that fails or is interrupted leaves its log at <path>.partial with its status saying why; a
+// run killed at any moment leaves <path>.partial readable with status "running": rows are
+// buffered in memory and reach the file only through flush() (called by the driver every few
+// seconds and whenever a buffer fills), and a change of the file's structure (a new series,
+// array or attribute) is flushed before the next row is buffered. Rows appended since the last
+// flush are what such a kill loses.
 #include "io/hdf5_handle.hpp"
+#include "io/output_claim.hpp"
 
 #include <span>
 #include <string>
@@ -44,15 +47,23 @@ class RunLog {
  public:
   // Rows each series buffers before a full buffer flushes the file.
   static constexpr std::size_t kBufferedRows = 4096;
+  // Disk space kept allocated beyond what is written, so that a full disk is noticed before a
+  // write fails half-way and the log can still be closed with status "failed: disk full ...".
+  static constexpr long long kReservedBytes = 1 << 20;
 
-  // Creates `path` (and its missing parent directories) with the metadata and status "running",
-  // replacing an existing file and removing its now stale XDMF sidecar.
-  RunLog(const std::string& path, const RunMetadata& metadata);
+  // Creates the claimed output's partial file with the metadata and status "running".
+  RunLog(OutputClaim claim, const RunMetadata& metadata);
+  // Claims `path` first (replacing an existing regular file only when `replace`).
+  RunLog(const std::string& path, const RunMetadata& metadata, bool replace = false);
   ~RunLog();
   RunLog(const RunLog&) = delete;
   RunLog& operator=(const RunLog&) = delete;
 
+  // Where the file is now: <path>.partial while the run lasts or after it failed, <path> once
+  // completed.
   const std::string& path() const { return path_; }
+  // Where a completed log goes.
+  const std::string& final_path() const { return claim_.path(); }
 
   // A time series at `dataset_path` with `columns` values per row (a 1-D dataset when 1). Returns
   // its handle for append(). `column_names` (optional) become the `columns` attribute.
@@ -61,7 +72,8 @@ class RunLog {
   void append(std::size_t series, std::span<const double> row);
 
   // Whole arrays written once, e.g. /particles/body (which snapshots then show as `body`).
-  void write_array(const std::string& dataset_path, std::span<const int> values, const std::string& description);
+  void write_array(const std::string& dataset_path, std::span<const int> values, const std::string& units,
+                   const std::string& description);
 
   void set_attribute(const std::string& object_path, const std::string& name, const std::string& value);
   void set_attribute(const std::string& object_path, const std::string& name, double value);
@@ -76,9 +88,14 @@ class RunLog {
   // Writes buffered rows and asks HDF5 to flush the file to disk.
   void flush();
 
-  // Final status; "completed" only for a run that reached its end.
+  // Final status; "completed" only for a run that reached its end. finish_completed() closes the
+  // file and moves it (and its sidecar) to final_path(); it throws when that fails, leaving the
+  // file at its partial name.
   void finish_completed();
-  void finish_failed(const std::string& reason);
+  // "failed: <reason>" or "interrupted: <reason>", as far as the disk allows: these never throw
+  // (the run's own failure is what gets reported), and the file stays at its partial name.
+  void finish_failed(const std::string& reason) noexcept;
+  void finish_interrupted(const std::string& reason) noexcept;
   bool finished() const { return finished_; }
 
  private:
@@ -96,10 +113,14 @@ class RunLog {
     bool with_body;  // /particles/body holds one entry per particle of this snapshot
   };
   void write_pending(Series& series);
-  void write_xdmf() const;
-  std::string xdmf_path() const { return path_ + ".xdmf"; }
+  // The sidecar of the file at `h5_path`, written to <h5_path>.xdmf.
+  void write_xdmf(const std::string& h5_path) const;
   void set_status(const std::string& status);
+  // Throws h5::Error "disk full writing <file>" when `bytes` (plus the reserve) would not fit.
+  void ensure_space(long long bytes);
+  void finish_unpublished(const std::string& status) noexcept;
 
+  OutputClaim claim_;  // declared before file_: the lock outlives the open file
   std::string path_;
   h5::Handle file_;
   std::vector<Series> series_;

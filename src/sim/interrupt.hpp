@@ -1,16 +1,33 @@
 #pragma once
-// SIGINT/SIGTERM during a run: the step loop stops at the end of the current step and the log is
-// marked "failed: interrupted" instead of being left as if still running.
+// SIGINT, SIGTERM and SIGHUP during a run: the step loop stops at the end of the current step,
+// the log is marked "interrupted: <signal> ..." and the process exits with 128 + the signal's
+// number (130, 143, 129), as a shell reports a process the signal killed. The loop checks after
+// every step, and the scene's validated limits bound the work of one step (haptic ticks per step,
+// particle count), so a signal is always answered.
 #include <stdexcept>
+#include <string>
 
 namespace mssph {
 
 class RunInterrupted : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  RunInterrupted(const std::string& reason, int signal) : std::runtime_error(reason), signal_(signal) {}
+  int signal() const { return signal_; }
+  // 128 + the signal number.
+  int exit_code() const { return 128 + signal_; }
+
+ private:
+  int signal_;
 };
 
+// Installs the handlers for SIGINT, SIGTERM and SIGHUP, and ignores SIGPIPE (a closed stdout
+// then shows as a failed write, which a finished run ignores, instead of killing the process) and
+// SIGXFSZ (a file size limit then fails a write with EFBIG, reported like a full disk).
 void install_interrupt_handlers();
+// The first interrupting signal received, 0 when none.
+int interrupt_signal();
 bool interrupt_requested();
+// "SIGINT", "SIGTERM", "SIGHUP", or "signal N".
+std::string signal_name(int signal);
 
 }  // namespace mssph

@@ -92,7 +92,8 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
   const std::size_t check_every = std::min<std::size_t>(log_every, 100);
 
   std::vector<int> body_of_particle(setup.body.begin(), setup.body.end());
-  log.write_array("/particles/body", body_of_particle, "body index of each particle (order of /bodies attributes)");
+  log.write_array("/particles/body", body_of_particle, "1",
+                  "body index of each particle (order of /particles body_names)");
   std::vector<std::string> body_names;
   for (const BodySetup& b : setup.bodies) body_names.push_back(b.name);
   log.set_attribute("/particles", "body_names", body_names);
@@ -175,16 +176,29 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
       }
       summary.steps = step;
       progress.update(step);
-      if (interrupt_requested()) throw RunInterrupted("interrupted by a signal at t = " + std::to_string(backend.time()) + " s");
+      if (const int signal = interrupt_signal()) {
+        std::ostringstream reason;
+        reason << signal_name(signal) << " after step " << step << " of " << total_steps << ", t = " << backend.time()
+               << " s";
+        throw RunInterrupted(reason.str(), signal);
+      }
     }
   } catch (const std::exception& failure) {
-    // Any failure inside the loop (blow-up, interruption, I/O) is recorded before it propagates.
-    log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
+    // Any failure inside the loop (blow-up, interruption, I/O) is recorded before it propagates,
+    // as far as the disk allows: a write error must not hide the original failure.
+    try {
+      log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
+    } catch (const std::exception&) {
+    }
     if (haptics) {
       haptics->finish_failed(summary.steps,
                              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
-    log.finish_failed(failure.what());
+    if (dynamic_cast<const RunInterrupted*>(&failure)) {
+      log.finish_interrupted(failure.what());
+    } else {
+      log.finish_failed(failure.what());
+    }
     throw;
   }
   summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

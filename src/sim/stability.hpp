@@ -10,6 +10,17 @@
 
 namespace mssph {
 
+// One upper bound on the time step: which body (or "(all)"), which bound, its value [s] and
+// formula with the numbers that went into it.
+struct TimeStepBound {
+  std::string body;
+  std::string name;  // "acoustic", "viscous", "body-force", "elastic"
+  double limit = 0.0;
+  std::string formula;
+};
+std::vector<TimeStepBound> time_step_bounds(const ParticleSetup& setup);
+
+// One warning per bound dt exceeds, and for nearly incompressible elastic bodies.
 std::vector<std::string> stability_warnings(const ParticleSetup& setup);
 
 // Lame parameters of an isotropic material: mu_L = E / (2 (1 + nu)), lambda = E nu / ((1 + nu)(1 - 2 nu)).

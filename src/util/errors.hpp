@@ -2,6 +2,7 @@
 // The three kinds of failure a run can end in, each with its process exit code (see `mssph --help`).
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace mssph {
 
@@ -15,7 +16,13 @@ enum ExitCode : int {
 // Bad input from the user: the message names the file, the JSON path or row, and what was expected.
 class InputError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit InputError(const std::string& message, std::string json_pointer = "")
+      : std::runtime_error(message), json_pointer_(std::move(json_pointer)) {}
+  // The JSON pointer of the offending scene value, e.g. "/simulation/dt"; "" when not a value.
+  const std::string& json_pointer() const { return json_pointer_; }
+
+ private:
+  std::string json_pointer_;
 };
 
 // The simulation left its domain of validity (NaN, runaway speed). The run log is kept and

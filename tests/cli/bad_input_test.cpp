@@ -49,6 +49,13 @@ TEST_F(BadInput, SetPathWithoutParent) {
   expect_rejected({"run", kScene, "--set", "simulation_settings/dt=1e-4"}, {"simulation_settings"});
 }
 
+// A value the JSON library cannot hold (it requires UTF-8), which used to end in a raw library
+// error and exit 1; the corpus manifest cannot hold such bytes, so the case lives here.
+TEST_F(BadInput, SetValueThatIsNotUtf8) {
+  expect_rejected({"run", kScene, "--set", "bodies/ball/description=\xff\xfe"},
+                  {"tiny_drop.json", "--set /bodies/ball/description=...", "not valid UTF-8"});
+}
+
 TEST_F(BadInput, SetWithoutValue) {
   expect_rejected({"run", kScene, "--set", "simulation/dt"}, {"--set simulation/dt", "PATH=VALUE"});
 }

@@ -88,6 +88,23 @@ TEST_F(RunCommand, SnapshotsComeWithAValidXdmfSidecar) {
       1 + std::llround(scene["simulation"]["duration"].get<double>() / 0.01);
   EXPECT_NE(check.out.find("grids " + std::to_string(expected)), std::string::npos) << check.out;
   EXPECT_NE(read_file(out + ".xdmf").find("/particles/body"), std::string::npos) << "body index per particle";
+  EXPECT_FALSE(std::filesystem::exists(out + ".partial.xdmf")) << "the running log's sidecar is gone";
+}
+
+// The README promises units and a description on every dataset: checked on a log with body
+// series, haptics, timing, the body index and snapshots, as h5py reads it.
+TEST_F(RunCommand, EveryDatasetHasUnitsAndADescription) {
+  const std::string out = work("described.h5");
+  ASSERT_EQ(mssph({"run", kScene, "--out", out, "--set", "output/snapshot_interval=0.01", "-q"}).exit_code, 0);
+  std::size_t datasets = 0;
+  const nlohmann::json summary = h5py_summary(out);
+  for (const auto& [path, object] : summary["objects"].items()) {
+    if (object["kind"] != "dataset") continue;
+    ++datasets;
+    EXPECT_TRUE(object["attributes"].contains("units")) << path;
+    EXPECT_FALSE(object["attributes"].value("description", "").empty()) << path;
+  }
+  EXPECT_GT(datasets, 30u) << "body, haptics, timing and snapshot datasets";
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-// Runs that do not complete: a blow-up (exit 3), SIGTERM (status "failed: interrupted"), and
-// SIGKILL at any moment (a file h5py opens, status "running", the rows flushed so far).
+// Runs that do not complete: a blow-up (exit 3), SIGTERM (status "interrupted: SIGTERM ...",
+// exit 143), and SIGKILL (a file h5py opens, status "running", the rows flushed so far). None of
+// them leaves a file at --out: their logs keep the name <out>.partial.
 #include "cli_fixture.hpp"
 #include "python_tools.hpp"
 
@@ -55,8 +56,9 @@ TEST_F(RunFailure, SpeedBeyondMaxSpeedIsABlowUp) {
   const ProcessResult r = mssph({"run", kScene, "--out", out, "--set", "simulation/max_speed=1e-4", "-q"});
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("blow-up"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(out), std::string::npos) << "the kept log is named:\n" << r.err;
-  EXPECT_EQ(status_of(out).rfind("failed: blow-up", 0), 0u) << status_of(out);
+  EXPECT_NE(r.err.find(out + ".partial"), std::string::npos) << "the kept log is named:\n" << r.err;
+  EXPECT_EQ(status_of(out + ".partial").rfind("failed: blow-up", 0), 0u) << status_of(out + ".partial");
+  EXPECT_FALSE(std::filesystem::exists(out)) << "only a completed log takes the --out name";
 }
 
 TEST_F(RunFailure, AnAbsurdTimeStepIsABlowUp) {
@@ -68,8 +70,8 @@ TEST_F(RunFailure, AnAbsurdTimeStepIsABlowUp) {
                                  "output/log_interval=0", "-q"});
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("warning: "), std::string::npos) << r.err;
-  EXPECT_EQ(status_of(out).rfind("failed: blow-up", 0), 0u) << status_of(out);
-  expect_consistent_series(h5py_summary(out));
+  EXPECT_EQ(status_of(out + ".partial").rfind("failed: blow-up", 0), 0u) << status_of(out + ".partial");
+  expect_consistent_series(h5py_summary(out + ".partial"));
 }
 
 TEST_F(RunFailure, SigtermMarksTheLogInterrupted) {
@@ -80,10 +82,12 @@ TEST_F(RunFailure, SigtermMarksTheLogInterrupted) {
       << "no progress line on stderr:\n" << run->stderr_so_far();
   run->send(SIGTERM);
   const ProcessResult r = run->wait();
-  EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_NE(r.err.find(out), std::string::npos) << "the kept log is named:\n" << r.err;
-  EXPECT_EQ(status_of(out).rfind("failed: interrupted", 0), 0u) << status_of(out);
-  const nlohmann::json summary = h5py_summary(out);
+  EXPECT_EQ(r.exit_code, 143) << r.err;  // 128 + SIGTERM, as a shell reports a terminated job
+  const std::string kept = out + ".partial";
+  EXPECT_NE(r.err.find(kept), std::string::npos) << "the kept log is named:\n" << r.err;
+  EXPECT_EQ(status_of(kept).rfind("interrupted: SIGTERM after step ", 0), 0u) << status_of(kept);
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const nlohmann::json summary = h5py_summary(kept);
   EXPECT_GT(summary["objects"]["/time"]["shape"][0].get<std::size_t>(), 0u);
   EXPECT_GT(summary["attributes"]["steps"].get<long long>(), 0);
   expect_consistent_series(summary);
@@ -100,20 +104,30 @@ TEST_F(RunFailure, SigkillLeavesARunningLogWithTheFlushedRows) {
   const ProcessResult r = run->wait();
   EXPECT_EQ(r.signal, SIGKILL);
   EXPECT_EQ(r.err, "") << "-q prints no progress";
-  const nlohmann::json summary = h5py_summary(out);
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const nlohmann::json summary = h5py_summary(out + ".partial");
   EXPECT_EQ(summary["attributes"]["status"], "running");
   EXPECT_GT(summary["objects"]["/time"]["shape"][0].get<std::size_t>(), 0u) << "rows flushed before the kill";
   expect_consistent_series(summary);
 }
 
-TEST_F(RunFailure, SigkillAsSoonAsTheLogAppearsLeavesAReadableFile) {
+// Killed the moment its partial file appears (before HDF5 has written anything to it, at
+// times): nothing at --out; the next run refuses the leftover without --force and replaces it
+// with it.
+TEST_F(RunFailure, SigkillAsSoonAsThePartialFileAppearsLeavesNothingAtTheFinalPath) {
   const std::string out = work("killed_at_start.h5");
   const auto run = start(concat({"run", kScene, "--out", out, "-q"}, kLongRun));
-  ASSERT_TRUE(wait_for([&] { return std::filesystem::exists(out) || !run->running(); }, 60s));
+  ASSERT_TRUE(wait_for([&] { return std::filesystem::exists(out + ".partial") || !run->running(); }, 60s));
   run->send(SIGKILL);
   EXPECT_EQ(run->wait().signal, SIGKILL);
-  const nlohmann::json summary = h5py_summary(out);
-  EXPECT_EQ(summary["attributes"]["status"], "running");
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const ProcessResult refused = mssph({"run", kScene, "--out", out, "-q"});
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("did not finish"), std::string::npos) << refused.err;
+  const ProcessResult again = mssph({"run", kScene, "--out", out, "-q", "--force"});
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(status_of(out), "completed");
+  EXPECT_FALSE(std::filesystem::exists(out + ".partial"));
 }
 
 }  // namespace

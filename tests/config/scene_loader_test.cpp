@@ -203,9 +203,24 @@ TEST(SetOverride, MayAddAKeyWhichIsThenValidatedLikeTheFile) {
   EXPECT_EQ(scene.find_body("anvil")->velocity, Eigen::Vector3d(1.0, 0.0, 0.0));
   EXPECT_EQ(input_error_of([&] { load_scene(kBase, {"simulation/time_step=0.001"}); }),
             kBase + ": /simulation/time_step: unknown key 'time_step'; allowed keys: dt duration gravity "
-                    "particle_spacing smoothing_length seed jitter max_speed");
+                    "particle_spacing smoothing_length seed jitter max_speed (this value comes from --set "
+                    "simulation/time_step=0.001)");
   EXPECT_EQ(input_error_of([&] { load_scene(kBase, {"simulation/dt=fast"}); }),
-            kBase + ": /simulation/dt: expected a number > 0, got string \"fast\"");
+            kBase + ": /simulation/dt: expected a number > 0, got string \"fast\" (this value comes from --set "
+                    "simulation/dt=fast)");
+}
+
+// Strict JSON: a key twice in one object, or a number beyond a double, is an error with its path.
+TEST(StrictJson, DuplicateKeysAndOverflowingNumbersAreRejectedWithTheirPath) {
+  EXPECT_EQ(input_error_of([&] { parse_scene_text(R"({"name": "a", "bodies": {"b": {"kind": "fluid", "kind": "rigid"}}})", "s.json"); }),
+            "s.json: /bodies/b/kind: duplicate key 'kind' (JSON leaves its meaning undefined; keep one)");
+  EXPECT_EQ(input_error_of([&] { parse_scene_text(R"({"name": "a", "list": [1, {"x": 2, "x": 3}]})", "s.json"); }),
+            "s.json: /list/1/x: duplicate key 'x' (JSON leaves its meaning undefined; keep one)");
+  const std::string overflow = input_error_of([&] { parse_scene_text(R"({"simulation": {"g": [0, 1e400]}})", "s.json"); });
+  EXPECT_EQ(overflow.rfind("s.json: /simulation/g/1: ", 0), 0u) << overflow;
+  // The same key in two objects is no duplicate.
+  const std::string other = input_error_of([&] { parse_scene_text(R"({"a": {"k": 1}, "b": {"k": 2}})", "s.json"); });
+  EXPECT_EQ(other.find("duplicate"), std::string::npos) << other;
 }
 
 TEST(SetOverride, RejectsAnAssignmentWithoutPathOrEquals) {

@@ -8,7 +8,7 @@ std::vector<T> read_all(hid_t file, const std::string& path, hid_t memory_type) 
   h5::Handle set = h5::dataset(H5Dopen2(file, path.c_str(), H5P_DEFAULT), "open " + path);
   h5::Handle space = h5::dataspace(H5Dget_space(set.id()), "space of " + path);
   const hssize_t count = H5Sget_simple_extent_npoints(space.id());
-  if (count < 0) throw h5::Error("HDF5: size of " + path);
+  if (count < 0) h5::throw_error("size of " + path);
   std::vector<T> values(static_cast<std::size_t>(count));
   if (count > 0) h5::check(H5Dread(set.id(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + path);
   return values;
@@ -18,7 +18,11 @@ std::vector<T> read_all(hid_t file, const std::string& path, hid_t memory_type) 
 
 h5::Handle open_read_only(const std::string& path) {
   h5::silence_error_printing();
-  return h5::file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open " + path);
+  // A live log's partial file is locked by its writer (flock): read it as the README says,
+  // without HDF5's own file locking.
+  h5::Handle access = h5::property_list(H5Pcreate(H5P_FILE_ACCESS), "file access properties");
+  h5::check(H5Pset_file_locking(access.id(), false, true), "turn off file locking");
+  return h5::file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.id()), "open " + path);
 }
 
 h5::Handle open_object(hid_t file, const std::string& path) {
@@ -37,7 +41,7 @@ std::vector<std::string> read_string_list_attribute(hid_t object, const std::str
   h5::Handle space = h5::dataspace(H5Aget_space(attr.id()), "space of attribute " + name);
   if (H5Sget_simple_extent_type(space.id()) == H5S_NULL) return {};
   const hssize_t count = H5Sget_simple_extent_npoints(space.id());
-  if (count < 0) throw h5::Error("HDF5: size of attribute " + name);
+  if (count < 0) h5::throw_error("size of attribute " + name);
   h5::Handle type = h5::datatype(H5Aget_type(attr.id()), "type of attribute " + name);
   std::vector<char*> data(static_cast<std::size_t>(count));
   h5::check(H5Aread(attr.id(), type.id(), data.data()), "read attribute " + name);

@@ -42,7 +42,7 @@ void write_sample_log(const std::string& path) {
   log.set_attribute("/bodies/ball", "particle_count", 3LL);
   log.set_attribute("/timing", "phase_names", std::vector<std::string>{"neighbours", "density", "forces"});
   log.set_attribute("/timing", "no_names", std::vector<std::string>{});
-  log.write_array("/particles/body", kBodies, "body index of each particle");
+  log.write_array("/particles/body", kBodies, "1", "body index of each particle");
   const std::size_t scalar = log.add_series("/time", 1, "s", "simulated time");
   const std::size_t vector =
       log.add_series("/bodies/ball/centre_of_mass", 3, "m", "centre of mass", {"x", "y", "z"});
@@ -149,6 +149,7 @@ TEST_F(RunLogRoundTrip, IntegerArray) {
   EXPECT_EQ(read_ints(file(), "/particles/body"), kBodies);
   const h5::Handle set = open_object(file(), "/particles/body");
   EXPECT_EQ(h5::read_string_attribute(set.id(), "description"), "body index of each particle");
+  EXPECT_EQ(h5::read_string_attribute(set.id(), "units"), "1");
 }
 
 TEST_F(RunLogRoundTrip, SnapshotFieldsShapesAndUnits) {
@@ -171,6 +172,7 @@ TEST_F(RunLogRoundTrip, SnapshotFieldsShapesAndUnits) {
     EXPECT_EQ(read_floats(file(), path), *f.values) << path;
     const h5::Handle set = open_object(file(), path);
     EXPECT_EQ(h5::read_string_attribute(set.id(), "units"), f.units) << path;
+    EXPECT_FALSE(h5::read_string_attribute(set.id(), "description").empty()) << path;
   }
 }
 

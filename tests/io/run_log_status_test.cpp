@@ -60,10 +60,15 @@ TEST(RunLogStatus, RunningThenCompleted) {
   const TempDir dir;
   const std::string path = (dir / "completed.h5").string();
   RunLog log(path, sample_metadata());
-  EXPECT_EQ(status_of(path), "running");
-  EXPECT_FALSE(has_attribute(open_read_only(path).id(), "end_time"));
+  // Written under its partial name; the final path holds only a completed log.
+  EXPECT_EQ(log.path(), path + ".partial");
+  EXPECT_FALSE(std::filesystem::exists(path));
+  EXPECT_EQ(status_of(log.path()), "running");
+  EXPECT_FALSE(has_attribute(open_read_only(log.path()).id(), "end_time"));
   EXPECT_FALSE(log.finished());
   log.finish_completed();
+  EXPECT_EQ(log.path(), path);
+  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
   EXPECT_EQ(status_of(path), "completed");
   EXPECT_TRUE(has_attribute(open_read_only(path).id(), "end_time"));
   EXPECT_TRUE(log.finished());
@@ -71,22 +76,25 @@ TEST(RunLogStatus, RunningThenCompleted) {
 
 TEST(RunLogStatus, RunningThenFailedWithTheReason) {
   const TempDir dir;
-  const std::string path = (dir / "failed.h5").string();
-  RunLog log(path, sample_metadata());
+  const std::string final_path = (dir / "failed.h5").string();
+  const std::string path = final_path + ".partial";  // a failed run's log keeps its partial name
+  RunLog log(final_path, sample_metadata());
   EXPECT_EQ(status_of(path), "running");
   EXPECT_FALSE(log.finished());
   log.finish_failed("blow-up at t = 0.25 s: body \"ball\" has non-finite state");
   EXPECT_EQ(status_of(path), "failed: blow-up at t = 0.25 s: body \"ball\" has non-finite state");
+  EXPECT_FALSE(std::filesystem::exists(final_path));
   EXPECT_TRUE(has_attribute(open_read_only(path).id(), "end_time"));
   EXPECT_TRUE(log.finished());
 }
 
 TEST(RunLogStatus, DestroyedWithoutFinishStaysRunningWithEveryRow) {
   const TempDir dir;
-  const std::string path = (dir / "abandoned.h5").string();
+  const std::string final_path = (dir / "abandoned.h5").string();
+  const std::string path = final_path + ".partial";
   constexpr std::size_t kRows = RunLog::kBufferedRows + 100;  // a flushed buffer and a pending one
   {
-    RunLog log(path, sample_metadata());
+    RunLog log(final_path, sample_metadata());
     append_scalars(log, log.add_series("/time", 1, "s", "simulated time"), 0, kRows);
   }
   EXPECT_EQ(status_of(path), "running");
@@ -96,10 +104,11 @@ TEST(RunLogStatus, DestroyedWithoutFinishStaysRunningWithEveryRow) {
 
 TEST(RunLogKilled, BeforeAnyFlushTheFileListsEverySeriesEmpty) {
   const TempDir dir;
-  const std::string path = (dir / "killed_early.h5").string();
+  const std::string final_path = (dir / "killed_early.h5").string();
+  const std::string path = final_path + ".partial";
   run_and_kill([&] {
-    RunLog log(path, sample_metadata());
-    log.write_array("/particles/body", std::vector<int>{0, 1}, "body index");
+    RunLog log(final_path, sample_metadata());
+    log.write_array("/particles/body", std::vector<int>{0, 1}, "1", "body index");
     const std::size_t time = log.add_series("/time", 1, "s", "simulated time");
     const std::size_t com = log.add_series("/bodies/ball/centre_of_mass", 3, "m", "centre of mass");
     append_scalars(log, time, 0, 10);
@@ -110,16 +119,17 @@ TEST(RunLogKilled, BeforeAnyFlushTheFileListsEverySeriesEmpty) {
   EXPECT_EQ(rows_of(path, "/time"), 0u);
   EXPECT_EQ(rows_of(path, "/bodies/ball/centre_of_mass"), 0u);
   EXPECT_EQ(read_ints(open_read_only(path).id(), "/particles/body"), (std::vector<int>{0, 1}));
-  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+  EXPECT_FALSE(std::filesystem::exists(final_path));
   EXPECT_EQ(h5py_summary(path)["attributes"]["status"], "running");
 }
 
 TEST(RunLogKilled, KeepsTheRowsOfTheLastFlush) {
   const TempDir dir;
-  const std::string path = (dir / "killed_after_flush.h5").string();
+  const std::string final_path = (dir / "killed_after_flush.h5").string();
+  const std::string path = final_path + ".partial";
   constexpr std::size_t kFlushed = 10;
   run_and_kill([&] {
-    RunLog log(path, sample_metadata());
+    RunLog log(final_path, sample_metadata());
     const std::size_t time = log.add_series("/time", 1, "s", "simulated time");
     append_scalars(log, time, 0, kFlushed);
     log.flush();
@@ -134,9 +144,10 @@ TEST(RunLogKilled, KeepsTheRowsOfTheLastFlush) {
 
 TEST(RunLogKilled, AFullBufferReachesTheFileWithoutAnExplicitFlush) {
   const TempDir dir;
-  const std::string path = (dir / "killed_after_full_buffer.h5").string();
+  const std::string final_path = (dir / "killed_after_full_buffer.h5").string();
+  const std::string path = final_path + ".partial";
   run_and_kill([&] {
-    RunLog log(path, sample_metadata());
+    RunLog log(final_path, sample_metadata());
     const std::size_t time = log.add_series("/time", 1, "s", "simulated time");
     const std::size_t com = log.add_series("/bodies/ball/centre_of_mass", 3, "m", "centre of mass");
     for (std::size_t i = 0; i < RunLog::kBufferedRows + 10; ++i) {

@@ -23,7 +23,7 @@ TEST(XdmfSidecar, ListsEverySnapshotWithTheBodyIndex) {
   const std::string path = (dir / "snapshots.h5").string();
   {
     RunLog log(path, sample_metadata());
-    log.write_array("/particles/body", std::vector<int>{0, 0, 1, 1}, "body index");
+    log.write_array("/particles/body", std::vector<int>{0, 0, 1, 1}, "1", "body index");
     add_snapshot(log, 0, 4);
     add_snapshot(log, 25, 4);
     add_snapshot(log, 50, 4);
@@ -43,9 +43,9 @@ TEST(XdmfSidecar, OmitsTheBodyIndexWhenTheLogHasNone) {
     RunLog log(path, sample_metadata());
     add_snapshot(log, 0, 3);
   }
-  const ProcessResult check = check_xdmf(path + ".xdmf");
+  const ProcessResult check = check_xdmf(path + ".partial.xdmf");
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
-  EXPECT_EQ(read_file(path + ".xdmf").find("/particles/body"), std::string::npos);
+  EXPECT_EQ(read_file(path + ".partial.xdmf").find("/particles/body"), std::string::npos);
 }
 
 TEST(XdmfSidecar, OmitsTheBodyIndexOfAnotherLength) {
@@ -53,10 +53,10 @@ TEST(XdmfSidecar, OmitsTheBodyIndexOfAnotherLength) {
   const std::string path = (dir / "other_length.h5").string();
   {
     RunLog log(path, sample_metadata());
-    log.write_array("/particles/body", std::vector<int>{0, 1}, "body index");
+    log.write_array("/particles/body", std::vector<int>{0, 1}, "1", "body index");
     add_snapshot(log, 0, 3);
   }
-  const ProcessResult check = check_xdmf(path + ".xdmf");
+  const ProcessResult check = check_xdmf(path + ".partial.xdmf");
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
 }
 
@@ -67,8 +67,20 @@ TEST(XdmfSidecar, AFileNameWithXmlSpecialCharactersStaysValid) {
     RunLog log(path, sample_metadata());
     add_snapshot(log, 0, 2);
   }
-  const ProcessResult check = check_xdmf(path + ".xdmf");
+  const ProcessResult check = check_xdmf(path + ".partial.xdmf");
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
+}
+
+// An unfinished log's sidecar lies next to it, under the partial name, and names that file.
+TEST(XdmfSidecar, AnUnfinishedLogsSidecarNamesThePartialFile) {
+  const TempDir dir;
+  const std::string path = (dir / "unfinished.h5").string();
+  {
+    RunLog log(path, sample_metadata());
+    add_snapshot(log, 0, 2);
+  }
+  EXPECT_FALSE(std::filesystem::exists(path + ".xdmf"));
+  EXPECT_NE(read_file(path + ".partial.xdmf").find("unfinished.h5.partial:"), std::string::npos);
 }
 
 TEST(XdmfSidecar, ReplacingALogRemovesItsSidecar) {
@@ -77,9 +89,12 @@ TEST(XdmfSidecar, ReplacingALogRemovesItsSidecar) {
   {
     RunLog first(path, sample_metadata());
     add_snapshot(first, 0, 2);
+    first.finish_completed();
   }
   ASSERT_TRUE(std::filesystem::exists(path + ".xdmf"));
-  RunLog second(path, sample_metadata());
+  EXPECT_FALSE(std::filesystem::exists(path + ".partial.xdmf"));
+  RunLog second(path, sample_metadata(), /*replace=*/true);
+  second.finish_completed();
   EXPECT_FALSE(std::filesystem::exists(path + ".xdmf")) << "it would name snapshots the new file lacks";
 }
 
