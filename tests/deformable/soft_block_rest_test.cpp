@@ -47,7 +47,8 @@ TEST(SoftBlockRest, NeoHookeanBlockCarriesTheSphereAtHertzIndentation) {
 
   double height_sum = 0.0;
   std::size_t height_samples = 0;
-  double max_density = 0.0;
+  double max_density = 0.0;       // over the whole run [kg/m^3]
+  double max_rest_density = 0.0;  // from kAverageFrom on
   std::size_t past_valid_range = 0;
   for (std::size_t s = 1; s <= total; ++s) {
     backend->step();
@@ -61,6 +62,7 @@ TEST(SoftBlockRest, NeoHookeanBlockCarriesTheSphereAtHertzIndentation) {
     const ParticleSnapshot snap = backend->snapshot();
     for (std::size_t i = block_body.first; i < block_body.first + block_body.count; ++i) {
       max_density = std::max(max_density, static_cast<double>(snap.density[i]));
+      if (backend->time() >= kAverageFrom) max_rest_density = std::max(max_rest_density, static_cast<double>(snap.density[i]));
     }
   }
   ASSERT_GT(height_samples, 20u);
@@ -82,38 +84,45 @@ TEST(SoftBlockRest, NeoHookeanBlockCarriesTheSphereAtHertzIndentation) {
   }
 
   // Hertz, rigid sphere on an elastic half-space: d = (3 W / (4 E* sqrt(R)))^(2/3),
-  // E* = E / (1 - nu^2) (Johnson, Contact Mechanics, eq. 4.23). W = 16.8 kg g = 165 N gives
-  // d = 4.66 cm.
+  // E* = E / (1 - nu^2) (Johnson, Contact Mechanics, eq. 4.23). W, the weight of the sphere as
+  // sampled at 4 cm (14.4 kg), gives d = 4.42 cm.
   const double e_star = kYoung / (1.0 - kPoisson * kPoisson);
   const double hertz = std::pow(3.0 * weight / (4.0 * e_star * std::sqrt(kRadius)), 2.0 / 3.0);
   // The sphere centre's sink below where a continuum sphere would touch the continuum block.
   const double indentation = kRadius + kBlockTop - rest_height;
   std::cout << "rest height " << rest_height << " m, indentation " << indentation << " m (Hertz " << hertz
             << " m), sphere bottom " << sphere_bottom << " m over block top " << block_top << " m (gap "
-            << (sphere_bottom - block_top) / kDx << " dx), max block density " << max_density / rest_density
-            << " rho0\n";
+            << (sphere_bottom - block_top) / kDx << " dx), max block density " << max_rest_density / rest_density
+            << " rho0 at rest, " << max_density / rest_density << " rho0 over the run\n";
 
   // 30 %: at 4 cm the lattice sphere is no smooth sphere. Its lowest layer lies 4 cm above its
   // nominal bottom (its particles' cells reach 2 cm lower, so the sphere sits ~2 cm deeper than a
   // continuum one at the same contact), and that layer is a facet ~24 cm across: a flat punch,
   // stiffer than a sphere (hertz_contact_test.cpp). Both are offsets of order dx / 2 = 2 cm, in
   // opposite directions; the block is moreover a bonded 20 cm layer, not a half-space, which
-  // stiffens it. At 1 cm the Hertz test gets within 25 %; the collapsed St Venant-Kirchhoff block
-  // let the sphere sink 6.5 cm at this resolution.
+  // stiffens it. At 1 cm the Hertz test gets within 25 %.
+  //
+  // The same run with model stvk (measured): the sphere sinks 6.1 cm (1.37 times Hertz), hovering
+  // 1.8 dx over a surface crushed 8 cm down, det F down to -1.3, 1.76 rho0 at rest and 2.07 rho0
+  // at the impact: it fails every check below but the last.
   EXPECT_NEAR(indentation / hertz, 1.0, 0.3);
   // ON the block: SPH contact holds particle layers of two bodies about one spacing apart (their
-  // cells touching). Hovering over a crushed surface, as the collapsed block did, is 1.6 dx.
+  // cells touching). The collapsed stvk block left a gap of 1.8 dx.
   EXPECT_GT(sphere_bottom - block_top, 0.5 * kDx);
   EXPECT_LT(sphere_bottom - block_top, 1.3 * kDx);
   // The block's surface under the sphere is pushed down (its rest top layer is at 0.18 m).
   EXPECT_LT(block_top, kBlockTop - 0.5 * kDx - 0.002);
   // No particle past the Neo-Hookean model's valid range at any logged time.
   EXPECT_EQ(past_valid_range, 0u);
-  // Density bound 1.35 rho0: Hertz's peak pressure p0 = 3 W / (2 pi a^2), a = sqrt(R d) = 9.7 cm,
-  // is 8.4 kPa; compressed that hard with its sides held (the stiffest case, uniaxial strain), the
-  // material keeps J = 1 - p0 / (lambda + 2 mu) = 0.75 of its volume: rho0 / J = 1.33 rho0. The
-  // collapsed block reached 2.1 rho0.
-  EXPECT_LT(max_density, 1.35 * rest_density);
+  // Density bound at rest 1.35 rho0: Hertz's peak pressure p0 = 3 W / (2 pi a^2), a = sqrt(R d)
+  // = 9.4 cm, is 7.6 kPa; compressed that hard with its sides held (the stiffest case, uniaxial
+  // strain), the material keeps J = 1 - p0 / (lambda + 2 mu) = 0.77 of its volume: rho0 / J =
+  // 1.29 rho0. The collapsed block reached 2.1 rho0.
+  EXPECT_LT(max_rest_density, 1.35 * rest_density);
+  // Over the whole run, the first impact included (the sphere falls one spacing onto the block and
+  // overshoots its rest indentation; measured 1.52 rho0), 1.6 rho0: this bound only separates the
+  // impact from a collapse (2.1 rho0); it is set from the measurement, not from a formula.
+  EXPECT_LT(max_density, 1.6 * rest_density);
 }
 
 }  // namespace
