@@ -104,7 +104,7 @@ TEST(SoftBlockRest, NeoHookeanBlockCarriesTheSphereAtHertzIndentation) {
   //
   // The same run with model stvk (measured): the sphere sinks 6.1 cm (1.37 times Hertz), hovering
   // 1.8 dx over a surface crushed 8 cm down, det F down to -1.3, 1.76 rho0 at rest and 2.07 rho0
-  // at the impact: it fails every check below but the last.
+  // at the impact: it fails every check below.
   EXPECT_NEAR(indentation / hertz, 1.0, 0.3);
   // ON the block: SPH contact holds particle layers of two bodies about one spacing apart (their
   // cells touching). The collapsed stvk block left a gap of 1.8 dx.
