@@ -10,12 +10,13 @@ namespace mssph::reference {
 struct DeformableState {
   // Step 1: R_i, the rotation of i's neighbourhood from its rest configuration.
   std::vector<Eigen::Matrix3d> rotation;
-  // Step 2, in i's rotated rest frame: grad u_i (eq. 4), strain eps_i, stress sigma_i [Pa].
+  // Step 2, in i's rotated rest frame: grad u_i (eq. 4), the material model's strain and stress
+  // (ElasticResponse in elasticity.hpp) [-], [Pa].
   std::vector<Eigen::Matrix3d> displacement_gradient;
   std::vector<Eigen::Matrix3d> strain;
   std::vector<Eigen::Matrix3d> stress;
   std::vector<Eigen::Matrix3d> stress_action;  // K_i = V0_i R_i P_i, world frame [N m]
-  std::vector<double> strain_energy;           // V0_i psi(eps_i) [J]
+  std::vector<double> strain_energy;           // V0_i psi_i [J]
   // Step 3: forces from the particle's own body [N]; their sum goes to internal_force.
   std::vector<Eigen::Vector3d> elastic_force;    // eq. 5, 6
   std::vector<Eigen::Vector3d> hourglass_force;  // zero-energy-mode control (0 when off)

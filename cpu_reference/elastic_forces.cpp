@@ -33,14 +33,12 @@ void compute_elastic_stresses(const ParticleSetup& setup, const DeformableRestSt
       const Eigen::Vector3d x_ij = positions[rest.neighbours.indices[k]] - positions[i];
       grad_u += displacement_gradient_term(rotated_displacement(state.rotation[i], x_ij, bond.offset), bond.d_ij);
     }
-    const Eigen::Matrix3d eps = strain(grad_u, material.strain);
-    const Eigen::Matrix3d sigma = isotropic_stress(eps, rest.lame[i]);
+    const ElasticResponse response = elastic_response(grad_u, rest.lame[i], material.model);
     state.displacement_gradient[i] = grad_u;
-    state.strain[i] = eps;
-    state.stress[i] = sigma;
-    state.stress_action[i] =
-        stress_action(rest.volume[i], state.rotation[i], first_piola_kirchhoff(grad_u, sigma, material.strain));
-    state.strain_energy[i] = rest.volume[i] * strain_energy_density(eps, rest.lame[i]);
+    state.strain[i] = response.strain;
+    state.stress[i] = response.stress;
+    state.stress_action[i] = stress_action(rest.volume[i], state.rotation[i], response.first_piola);
+    state.strain_energy[i] = rest.volume[i] * response.energy_density;
   }
 }
 

@@ -12,6 +12,10 @@
 #include "config/scene.hpp"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include <cmath>
 
 namespace mssph::reference {
 
@@ -40,6 +44,15 @@ inline Eigen::Matrix3d displacement_gradient_term(const Eigen::Vector3d& u_ji, c
   return u_ji * d_ij.transpose();
 }
 
+// What a material model makes of grad u_i, in i's rotated rest frame.
+struct ElasticResponse {
+  Eigen::Matrix3d strain;       // stvk, neo_hookean: Green-Saint-Venant strain; corotated: Cauchy strain [-]
+  Eigen::Matrix3d stress;       // stvk, neo_hookean: second Piola-Kirchhoff S; corotated: sigma = C eps [Pa]
+                                // (neo_hookean: zero where F is singular or inverted)
+  Eigen::Matrix3d first_piola;  // P = d psi / d(grad u) [Pa]
+  double energy_density = 0.0;  // psi [J/m^3]
+};
+
 // Green-Saint-Venant strain (the paper's): eps = 1/2 (F^T F - I) = 1/2 (grad u + grad u^T + grad u^T grad u).
 inline Eigen::Matrix3d green_saint_venant_strain(const Eigen::Matrix3d& grad_u) {
   return 0.5 * (grad_u + grad_u.transpose() + grad_u.transpose() * grad_u);
@@ -48,30 +61,99 @@ inline Eigen::Matrix3d green_saint_venant_strain(const Eigen::Matrix3d& grad_u) 
 // Linear Cauchy strain (Becker et al. 2009): eps = 1/2 (grad u + grad u^T).
 inline Eigen::Matrix3d cauchy_strain(const Eigen::Matrix3d& grad_u) { return 0.5 * (grad_u + grad_u.transpose()); }
 
-inline Eigen::Matrix3d strain(const Eigen::Matrix3d& grad_u, StrainMeasure measure) {
-  return measure == StrainMeasure::cauchy ? cauchy_strain(grad_u) : green_saint_venant_strain(grad_u);
-}
-
 // Isotropic linear elasticity sigma = C eps = lambda tr(eps) I + 2 mu eps (tensor shear:
-// sigma_xy = 2 mu eps_xy = mu gamma_xy). With Green-Saint-Venant strain this is the second
-// Piola-Kirchhoff stress of a St Venant-Kirchhoff material.
+// sigma_xy = 2 mu eps_xy = mu gamma_xy).
 inline Eigen::Matrix3d isotropic_stress(const Eigen::Matrix3d& eps, const LameParameters& lame) {
   return lame.lambda * eps.trace() * Eigen::Matrix3d::Identity() + 2.0 * lame.mu * eps;
 }
 
-// Strain energy density psi = 1/2 eps : C : eps = lambda/2 tr(eps)^2 + mu eps : eps [J/m^3].
-inline double strain_energy_density(const Eigen::Matrix3d& eps, const LameParameters& lame) {
+// psi = 1/2 eps : C : eps = lambda/2 tr(eps)^2 + mu eps : eps [J/m^3].
+inline double quadratic_energy_density(const Eigen::Matrix3d& eps, const LameParameters& lame) {
   const double trace = eps.trace();
   return 0.5 * lame.lambda * trace * trace + lame.mu * eps.cwiseProduct(eps).sum();
 }
 
-// First Piola-Kirchhoff stress P = d psi / d(grad u): F sigma for Green-Saint-Venant strain,
-// sigma itself for Cauchy strain. This is the paper's (I + grad u^T) sigma of eq. 5 in our
-// gradient convention (the paper's grad u is the transpose of ours).
-inline Eigen::Matrix3d first_piola_kirchhoff(const Eigen::Matrix3d& grad_u, const Eigen::Matrix3d& sigma,
-                                             StrainMeasure measure) {
-  if (measure == StrainMeasure::cauchy) return sigma;
-  return (Eigen::Matrix3d::Identity() + grad_u) * sigma;
+// St Venant-Kirchhoff (the paper's eq. 5): S = C E with the Green-Saint-Venant strain E,
+// P = F S, which is the paper's (I + grad u^T) sigma in our gradient convention (the paper's
+// grad u is the transpose of ours).
+inline ElasticResponse saint_venant_kirchhoff(const Eigen::Matrix3d& grad_u, const LameParameters& lame) {
+  ElasticResponse r;
+  r.strain = green_saint_venant_strain(grad_u);
+  r.stress = isotropic_stress(r.strain, lame);
+  r.first_piola = (Eigen::Matrix3d::Identity() + grad_u) * r.stress;
+  r.energy_density = quadratic_energy_density(r.strain, lame);
+  return r;
+}
+
+// Corotated linear elasticity (Mueller and Gross 2004; Becker et al. 2009): sigma = C eps with
+// the Cauchy strain of the rotated-frame gradient, P = sigma.
+inline ElasticResponse corotated_linear(const Eigen::Matrix3d& grad_u, const LameParameters& lame) {
+  ElasticResponse r;
+  r.strain = cauchy_strain(grad_u);
+  r.stress = isotropic_stress(r.strain, lame);
+  r.first_piola = r.stress;
+  r.energy_density = quadratic_energy_density(r.strain, lame);
+  return r;
+}
+
+// The volumetric part of the compressible Neo-Hookean energy, G(J) = lambda/2 (ln J)^2 - mu ln J,
+// and its derivative g = G'(J) = (lambda ln J - mu) / J; below J_e = kNeoHookeanBarrierEnd both
+// follow G's second-order Taylor expansion about J_e (g' = (lambda (1 - ln J) + mu) / J^2 > 0
+// there, so the continued g keeps decreasing: the push-back still grows as J shrinks).
+struct VolumetricTerm {
+  double energy = 0.0;      // G [J/m^3]
+  double derivative = 0.0;  // g = dG/dJ [Pa]
+};
+
+inline VolumetricTerm neo_hookean_volumetric(double j, const LameParameters& lame) {
+  const auto exact = [&](double x) {
+    const double log_x = std::log(x);
+    return VolumetricTerm{0.5 * lame.lambda * log_x * log_x - lame.mu * log_x, (lame.lambda * log_x - lame.mu) / x};
+  };
+  if (j >= kNeoHookeanBarrierEnd) return exact(j);
+  const double je = kNeoHookeanBarrierEnd;
+  const VolumetricTerm at = exact(je);
+  const double curvature = (lame.lambda * (1.0 - std::log(je)) + lame.mu) / (je * je);
+  const double dj = j - je;
+  return {at.energy + at.derivative * dj + 0.5 * curvature * dj * dj, at.derivative + curvature * dj};
+}
+
+// Compressible Neo-Hookean (Bonet and Wood 2008, eq. 6.27-6.28):
+//   psi = mu/2 (tr(F^T F) - 3) - mu ln J + lambda/2 (ln J)^2,  P = mu (F - F^-T) + lambda ln J F^-T,
+// written as P = mu F + g(J) cof F with cof F = J F^-T, which needs no inverse; S = F^-1 P.
+// At small strain it is linear elasticity with the same lambda and mu.
+inline ElasticResponse neo_hookean(const Eigen::Matrix3d& grad_u, const LameParameters& lame) {
+  const Eigen::Matrix3d f = Eigen::Matrix3d::Identity() + grad_u;
+  Eigen::Matrix3d cofactor;
+  cofactor.col(0) = f.col(1).cross(f.col(2));
+  cofactor.col(1) = f.col(2).cross(f.col(0));
+  cofactor.col(2) = f.col(0).cross(f.col(1));
+  const double j = f.col(0).dot(cofactor.col(0));
+  const VolumetricTerm volumetric = neo_hookean_volumetric(j, lame);
+  ElasticResponse r;
+  r.strain = green_saint_venant_strain(grad_u);
+  r.first_piola = lame.mu * f + volumetric.derivative * cofactor;
+  // S = mu I + g J C^-1, C^-1 = cof^T cof / J^2.
+  r.stress = j > 0.0 ? Eigen::Matrix3d(lame.mu * Eigen::Matrix3d::Identity() +
+                                       (volumetric.derivative / j) * cofactor.transpose() * cofactor)
+                     : Eigen::Matrix3d::Zero();
+  r.energy_density = 0.5 * lame.mu * (f.squaredNorm() - 3.0) + volumetric.energy;
+  return r;
+}
+
+inline ElasticResponse elastic_response(const Eigen::Matrix3d& grad_u, const LameParameters& lame, ElasticModel model) {
+  switch (model) {
+    case ElasticModel::corotated_linear: return corotated_linear(grad_u, lame);
+    case ElasticModel::neo_hookean: return neo_hookean(grad_u, lame);
+    case ElasticModel::saint_venant_kirchhoff: break;
+  }
+  return saint_venant_kirchhoff(grad_u, lame);
+}
+
+// The volume ratio J = det F = det(I + grad u) of i's neighbourhood [-] (R_i has det 1): the
+// compression measure of the run log.
+inline double volume_ratio(const Eigen::Matrix3d& grad_u) {
+  return (Eigen::Matrix3d::Identity() + grad_u).determinant();
 }
 
 // K_i = V0_i R_i P_i, the world-frame matrix through which particle i's strain energy

@@ -3,11 +3,14 @@
 #include "deformable_damping.hpp"
 #include "density.hpp"
 #include "elastic_forces.hpp"
+#include "elasticity.hpp"
 #include "fluid_forces.hpp"
 #include "rigid_body_dynamics.hpp"
 #include "zero_energy_control.hpp"
 #include "util/host_info.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace mssph::reference {
@@ -195,6 +198,15 @@ std::vector<BodyState> ReferenceBackend::body_states() {
       s.angular_momentum += setup_.mass[i] * arm.cross(particles_.velocity[i]);
       s.kinetic_energy += 0.5 * setup_.mass[i] * particles_.velocity[i].squaredNorm();
       s.interaction_torque += arm.cross(particles_.interaction_force[i]);
+    }
+    if (body.kind == BodyKind::deformable) {
+      const double lowest_valid = lowest_valid_volume_ratio(body.material.model);
+      s.min_volume_ratio = std::numeric_limits<double>::infinity();
+      for (std::size_t i = body.first; i < body.first + body.count; ++i) {
+        const double j = volume_ratio(deformables_.displacement_gradient[i]);
+        s.min_volume_ratio = std::min(s.min_volume_ratio, j);
+        if (j <= lowest_valid) ++s.compressed_count;
+      }
     }
   }
   return states;

@@ -16,9 +16,22 @@ struct BodySums {
   double max_speed;
   double force[3];           // sum f_interaction
   double torque_origin[3];   // sum x x f_interaction
+  double min_volume_ratio;   // deformable bodies: min det F (kNoVolumeRatio until a particle adds one)
+  double compressed_count;   // deformable bodies: particles at or below the model's lowest valid det F
 };
 
-MSSPH_HD BodySums zero_body_sums() { return BodySums{0, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, {0, 0, 0}, {0, 0, 0}}; }
+constexpr double kNoVolumeRatio = 1e30;
+
+MSSPH_HD BodySums zero_body_sums() {
+  return BodySums{0, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, {0, 0, 0}, {0, 0, 0}, kNoVolumeRatio, 0};
+}
+
+// A deformable particle's volume ratio J = det F against its model's lowest valid one
+// (ElasticParameters::lowest_valid_volume_ratio).
+MSSPH_HD void add_volume_ratio(BodySums& s, float j, float lowest_valid) {
+  s.min_volume_ratio = j < s.min_volume_ratio ? j : s.min_volume_ratio;
+  if (j <= lowest_valid) s.compressed_count += 1.0;
+}
 
 MSSPH_HD void add_particle(BodySums& s, Vec3 x, Vec3 v, float m, Vec3 f) {
   const double xd[3] = {x.x, x.y, x.z};
@@ -50,6 +63,8 @@ MSSPH_HD BodySums combine(const BodySums& a, const BodySums& b) {
   }
   s.kinetic_energy = a.kinetic_energy + b.kinetic_energy;
   s.max_speed = a.max_speed > b.max_speed ? a.max_speed : b.max_speed;
+  s.min_volume_ratio = a.min_volume_ratio < b.min_volume_ratio ? a.min_volume_ratio : b.min_volume_ratio;
+  s.compressed_count = a.compressed_count + b.compressed_count;
   return s;
 }
 

@@ -5,23 +5,29 @@
 // reference's (cpu_reference/elasticity.hpp): (grad u)_ab = du_a/dX_b, d_ij = V0_j L_i grad W(X_i - X_j),
 // K_i = V0_i R_i P_i, f_i = sum_j (K_i d_ij - K_j d_ji). The rest bonds (neighbours, offsets,
 // weights, d_ij, d_ji) come precomputed from the reference's rest state, converted to float.
+// The material models (scene key `model`, src/config/elastic_model.hpp) are those of the
+// reference's elastic_response(), with the equations and sources given there.
+#include "config/elastic_model.hpp"
 #include "particle_views.hpp"
+
+#include <cmath>
 
 namespace mssph::kernels {
 
-enum StrainCode : std::uint32_t { kGreenSaintVenant = 0, kCauchy = 1 };
+enum ModelCode : std::uint32_t { kSaintVenantKirchhoff = 0, kCorotatedLinear = 1, kNeoHookean = 2 };
 
 // One per deformable body.
 struct ElasticParameters {
   std::uint32_t first_particle;   // canonical index of the body's first particle
   std::uint32_t first_deformable; // its index among deformable particles
-  std::uint32_t strain;           // StrainCode
+  std::uint32_t model;            // ModelCode
   float lambda;                   // Lame lambda [Pa]
   float mu;                       // shear modulus [Pa]
   float young_modulus;            // E [Pa], scales the zero-energy control
   float zero_energy_stiffness;    // alpha [-], 0 = off
   float damping;                  // mass-proportional rate [1/s], 0 = off (bodies held by fixed regions)
   float particle_mass;            // m = rho0 dx^3 [kg]
+  float lowest_valid_volume_ratio; // det F at or below which a particle is counted as past the model's range
 };
 
 // A rest neighbour j of deformable particle i, 48 bytes in three aligned loads.
@@ -43,7 +49,8 @@ struct DeformableView {
   const Vec4* velocity;              // canonical velocities (read, damping)
   Quat* rotation;                    // R_i as a quaternion; read as the warm start, then written
   Mat3* stress_action;               // K_i = V0_i R_i P_i (world frame) [N m]
-  Mat3* deformation;                 // world-frame F_i = R_i (I + grad u_i), for the zero-energy control
+  Mat3* deformation;                 // world-frame F_i = R_i (I + grad u_i), for the zero-energy control and
+                                     // the logged volume ratio det F_i
   Vec4* elastic_force;               // canonical order (non-deformable entries stay zero) [N]
   std::uint32_t count;               // deformable particles
 };
@@ -66,6 +73,46 @@ MSSPH_HD Quat extract_rotation(const Mat3& a, Quat q) {
     q = normalized(axis_angle((1.0f / angle) * omega, angle) * q);
   }
   return q;
+}
+
+// sigma = lambda tr(eps) I + 2 mu eps.
+MSSPH_HD Mat3 isotropic_stress(const ElasticParameters& body, const Mat3& eps) {
+  Mat3 stress = (2.0f * body.mu) * eps;
+  const float pressure_like = body.lambda * trace(eps);
+  stress(0, 0) += pressure_like;
+  stress(1, 1) += pressure_like;
+  stress(2, 2) += pressure_like;
+  return stress;
+}
+
+// g(J) = dG/dJ of the Neo-Hookean volumetric energy G = lambda/2 (ln J)^2 - mu ln J, continued
+// linearly below J_e = kNeoHookeanBarrierEnd (reference: neo_hookean_volumetric).
+MSSPH_HD float neo_hookean_volumetric_derivative(const ElasticParameters& body, float j) {
+  constexpr float je = static_cast<float>(kNeoHookeanBarrierEnd);
+  const float x = j > je ? j : je;
+  const float log_x = std::log(x);
+  const float g = (body.lambda * log_x - body.mu) / x;
+  if (j >= je) return g;
+  const float curvature = (body.lambda * (1.0f - log_x) + body.mu) / (je * je);
+  return g + curvature * (j - je);
+}
+
+// P = d psi / d(grad u) in the rotated rest frame, per material model:
+//   stvk: P = F C E, E = 1/2 (grad u + grad u^T + grad u^T grad u) (paper eq. 5);
+//   corotated: P = C eps, eps = 1/2 (grad u + grad u^T);
+//   neo_hookean: P = mu F + g(J) cof F (Bonet and Wood 2008, eq. 6.28).
+MSSPH_HD Mat3 first_piola_kirchhoff(const ElasticParameters& body, const Mat3& grad_u) {
+  const Mat3 f = identity_mat3() + grad_u;
+  if (body.model == kNeoHookean) {
+    const Mat3 cof = cofactor(f);
+    const float j = dot(column(f, 0), column(cof, 0));
+    return body.mu * f + neo_hookean_volumetric_derivative(body, j) * cof;
+  }
+  const Mat3 gt = transpose(grad_u);
+  Mat3 strain = 0.5f * (grad_u + gt);
+  if (body.model == kCorotatedLinear) return isotropic_stress(body, strain);
+  strain = strain + 0.5f * (gt * grad_u);
+  return f * isotropic_stress(body, strain);
 }
 
 // Step 1 and the elastic part of step 2 for deformable particle d: R_i, grad u_i (eq. 4), strain,
@@ -93,16 +140,8 @@ MSSPH_HD void rotation_and_stress(const DeformableView& v, std::uint32_t d) {
   const Quat q = extract_rotation(moment, v.rotation[d]);
   const Mat3 rotation = rotation_matrix(q);
   const Mat3 grad_u = transpose(rotation) * current_gradient - rest_gradient;
-  const Mat3 gt = transpose(grad_u);
-  Mat3 strain = 0.5f * (grad_u + gt);
-  if (body.strain == kGreenSaintVenant) strain = strain + 0.5f * (gt * grad_u);
-  Mat3 stress = (2.0f * body.mu) * strain;
-  const float pressure_like = body.lambda * trace(strain);
-  stress(0, 0) += pressure_like;
-  stress(1, 1) += pressure_like;
-  stress(2, 2) += pressure_like;
   const Mat3 f_local = identity_mat3() + grad_u;
-  const Mat3 first_piola = body.strain == kGreenSaintVenant ? f_local * stress : stress;
+  const Mat3 first_piola = first_piola_kirchhoff(body, grad_u);
   v.rotation[d] = q;
   v.stress_action[d] = v.rest_volume[d] * (rotation * first_piola);
   v.deformation[d] = rotation * f_local;

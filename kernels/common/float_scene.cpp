@@ -48,13 +48,16 @@ void add_deformable_bodies(const ParticleSetup& setup, FloatScene& scene) {
     ElasticParameters p{};
     p.first_particle = static_cast<std::uint32_t>(body.first);
     p.first_deformable = static_cast<std::uint32_t>(scene.deformable_body.size());
-    p.strain = m.strain == StrainMeasure::cauchy ? kCauchy : kGreenSaintVenant;
+    p.model = m.model == ElasticModel::neo_hookean        ? kNeoHookean
+              : m.model == ElasticModel::corotated_linear ? kCorotatedLinear
+                                                          : kSaintVenantKirchhoff;
     p.lambda = static_cast<float>(lame_lambda(m));
     p.mu = static_cast<float>(lame_mu(m));
     p.young_modulus = static_cast<float>(m.young_modulus);
     p.zero_energy_stiffness = static_cast<float>(m.zero_energy_stiffness);
     p.damping = static_cast<float>(m.damping);
     p.particle_mass = static_cast<float>(m.rest_density * setup.spacing * setup.spacing * setup.spacing);
+    p.lowest_valid_volume_ratio = static_cast<float>(lowest_valid_volume_ratio(m.model));
     const auto index = static_cast<std::uint32_t>(scene.elastic_bodies.size());
     scene.elastic_bodies.push_back(p);
     for (std::size_t i = body.first; i < body.first + body.count; ++i) {
@@ -190,6 +193,10 @@ BodyState to_body_state(const FloatScene& scene, const BodySums& sums, const Rig
   s.interaction_force = to_eigen(sums.force);
   s.interaction_torque = to_eigen(sums.torque_origin) - centre.cross(s.interaction_force);
   if (body.kind == BodyKind::rigid) s.orientation = body.orientation;  // a fixed rigid body
+  if (body.kind == BodyKind::deformable && sums.min_volume_ratio < kNoVolumeRatio) {
+    s.min_volume_ratio = sums.min_volume_ratio;
+    s.compressed_count = static_cast<std::size_t>(sums.compressed_count);
+  }
   return s;
 }
 

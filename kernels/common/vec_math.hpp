@@ -87,6 +87,13 @@ MSSPH_HD Mat3 outer(Vec3 a, Vec3 b) {
   return Mat3{{a.x * b.x, a.x * b.y, a.x * b.z, a.y * b.x, a.y * b.y, a.y * b.z, a.z * b.x, a.z * b.y, a.z * b.z}};
 }
 MSSPH_HD Vec3 column(const Mat3& a, int c) { return {a.m[c], a.m[3 + c], a.m[6 + c]}; }
+// The cofactor matrix cof A = det(A) A^-T, column by column: (a1 x a2, a2 x a0, a0 x a1).
+MSSPH_HD Mat3 cofactor(const Mat3& a) {
+  const Vec3 a0 = column(a, 0), a1 = column(a, 1), a2 = column(a, 2);
+  const Vec3 c0 = cross(a1, a2), c1 = cross(a2, a0), c2 = cross(a0, a1);
+  return Mat3{{c0.x, c1.x, c2.x, c0.y, c1.y, c2.y, c0.z, c1.z, c2.z}};
+}
+MSSPH_HD float determinant(const Mat3& a) { return dot(column(a, 0), cross(column(a, 1), column(a, 2))); }
 
 // Unit quaternion (x, y, z, w), scalar last like the Virtuose's pose.
 struct Quat {

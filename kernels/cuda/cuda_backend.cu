@@ -227,17 +227,21 @@ struct BodySumsCombine {
   __device__ BodySums operator()(const BodySums& a, const BodySums& b) const { return combine(a, b); }
 };
 
+constexpr std::uint32_t kNotDeformable = 0xffffffffu;
+
 // A run of at most kChunk particles of one body (any kind), for the logged per-body sums.
 struct BodyChunk {
   std::uint32_t body;
   std::uint32_t first;
   std::uint32_t count;
+  std::uint32_t first_deformable;   // deformable index of particle `first`, else kNotDeformable
+  float lowest_valid_volume_ratio;  // deformable bodies: the model's lowest valid det F
 };
 
 // One block per chunk: partial sums behind the logged body states; the host adds a body's chunks
 // in order.
 __global__ void body_sums_kernel(const BodyChunk* chunks, const BodyParameters* bodies, CanonicalState state,
-                                 BodySums* partial) {
+                                 const Mat3* deformation, BodySums* partial) {
   using BlockReduce = cub::BlockReduce<BodySums, kBlock>;
   __shared__ typename BlockReduce::TempStorage reduce_storage;
   const BodyChunk chunk = chunks[blockIdx.x];
@@ -245,6 +249,10 @@ __global__ void body_sums_kernel(const BodyChunk* chunks, const BodyParameters* 
   BodySums acc = zero_body_sums();
   for (std::uint32_t i = chunk.first + threadIdx.x; i < chunk.first + chunk.count; i += blockDim.x) {
     add_particle(acc, xyz(state.position[i]), xyz(state.velocity[i]), mass, xyz(state.interaction_force[i]));
+    if (chunk.first_deformable != kNotDeformable) {
+      add_volume_ratio(acc, determinant(deformation[chunk.first_deformable + (i - chunk.first)]),
+                       chunk.lowest_valid_volume_ratio);
+    }
   }
   const BodySums total = BlockReduce(reduce_storage).Reduce(acc, BodySumsCombine());
   if (threadIdx.x == 0) partial[blockIdx.x] = total;
@@ -425,7 +433,8 @@ CudaBackend::CudaBackend(ParticleSetup setup)
     rest_volume_ = DeviceBuffer<float>(scene_.rest_volume);
     rotation_ = DeviceBuffer<Quat>(std::vector<Quat>(deformables_, Quat{0, 0, 0, 1}));
     stress_action_ = DeviceBuffer<Mat3>(deformables_);
-    deformation_ = DeviceBuffer<Mat3>(deformables_);
+    // Identity until the first step: the logged volume ratio of the rest state is 1.
+    deformation_ = DeviceBuffer<Mat3>(std::vector<Mat3>(deformables_, identity_mat3()));
   }
   body_ = DeviceBuffer<std::uint32_t>(scene_.body);
   fixed_ = DeviceBuffer<std::uint8_t>(scene_.fixed);
@@ -456,7 +465,15 @@ CudaBackend::CudaBackend(ParticleSetup setup)
   for (std::uint32_t b = 0; b < setup_.bodies.size(); ++b) {
     const auto first = static_cast<std::uint32_t>(setup_.bodies[b].first);
     const auto end = first + static_cast<std::uint32_t>(setup_.bodies[b].count);
-    for (std::uint32_t f = first; f < end; f += kChunk) body_chunks_host_.push_back({b, f, std::min(kChunk, end - f)});
+    const ElasticParameters* elastic = nullptr;
+    for (const ElasticParameters& e : scene_.elastic_bodies) {
+      if (e.first_particle == first && setup_.bodies[b].kind == BodyKind::deformable) elastic = &e;
+    }
+    for (std::uint32_t f = first; f < end; f += kChunk) {
+      body_chunks_host_.push_back({b, f, std::min(kChunk, end - f),
+                                   elastic ? elastic->first_deformable + (f - first) : kNotDeformable,
+                                   elastic ? elastic->lowest_valid_volume_ratio : 0.0f});
+    }
   }
   body_chunks_ = DeviceBuffer<BodyChunk>(body_chunks_host_);
   readback_rigid_offset_ = readback_rigid_offset(body_chunks_host_.size());
@@ -689,7 +706,7 @@ BodyState CudaBackend::rigid_body_state(std::size_t body) {
 // buffer, which comes back in one copy.
 std::vector<BodyState> CudaBackend::body_states() {
   body_sums_kernel<<<static_cast<unsigned>(body_chunks_host_.size()), kBlock, 0, stream_>>>(
-      body_chunks_.data(), bodies_.data(), canonical_state(), readback_sums());
+      body_chunks_.data(), bodies_.data(), canonical_state(), deformation_.data(), readback_sums());
   cuda_check(cudaGetLastError(), "launch body sums");
   if (!scene_.rigid_bodies.empty()) {
     cuda_check(cudaMemcpyAsync(readback_rigid(), rigid_bodies_.data(), rigid_bodies_.bytes(), cudaMemcpyDeviceToDevice, stream_),

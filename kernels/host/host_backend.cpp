@@ -213,6 +213,12 @@ std::vector<BodyState> HostBackend::body_states() {
     for (std::size_t i = body.first; i < body.first + body.count; ++i) {
       add_particle(sums, xyz(scene_.position[i]), xyz(scene_.velocity[i]), mass, xyz(interaction_force_[i]));
     }
+    for (const ElasticParameters& elastic : scene_.elastic_bodies) {
+      if (elastic.first_particle != body.first || body.kind != BodyKind::deformable) continue;
+      for (std::size_t k = 0; k < body.count; ++k) {
+        add_volume_ratio(sums, determinant(deformation_[elastic.first_deformable + k]), elastic.lowest_valid_volume_ratio);
+      }
+    }
     const std::uint32_t rigid = scene_.bodies[b].rigid_index;
     states.push_back(to_body_state(scene_, sums, rigid == kNotRigid ? nullptr : &scene_.rigid_bodies[rigid], body));
   }

@@ -44,6 +44,10 @@ void print_summary_line(const std::string& output, const RunSummary& summary, co
     std::printf(", peak interaction force on %s %.3f N", summary.force_body.c_str(), summary.peak_force);
   }
   if (summary.peak_rendered_force) std::printf(", peak rendered force %.3f N", *summary.peak_rendered_force);
+  if (!summary.outside_valid_range.empty()) {
+    std::printf(", compressed beyond the material model's valid range in %s of logged samples",
+                summary.outside_valid_range.c_str());
+  }
   std::printf("\n");
   std::fflush(stdout);
 }

@@ -1,6 +1,7 @@
 #pragma once
 // A scene as read from its JSON file: typed, validated, SI units throughout. The keys and their
 // units are documented in configs/README.md and checked by configs/scene.schema.json.
+#include "config/elastic_model.hpp"
 #include "haptics/haptics_config.hpp"
 
 #include <Eigen/Geometry>
@@ -15,10 +16,8 @@ namespace mssph {
 
 enum class BodyKind { fluid, deformable, rigid, boundary };
 enum class ShapeType { box, sphere, container };
-enum class StrainMeasure { green_saint_venant, cauchy };
 
 const char* to_string(BodyKind kind);
-const char* to_string(StrainMeasure strain);
 
 struct Shape {
   ShapeType type = ShapeType::box;
@@ -36,7 +35,7 @@ struct Material {
   // Deformable bodies only (paper eq. 4-6):
   double young_modulus = 0.0;       // E [Pa]
   double poisson_ratio = 0.0;       // nu [-], in (-1, 0.5)
-  StrainMeasure strain = StrainMeasure::green_saint_venant;
+  ElasticModel model = ElasticModel::saint_venant_kirchhoff;  // stress response to F (config/elastic_model.hpp)
   double damping = 0.0;                   // mass-proportional damping rate [1/s], 0 = off
   double zero_energy_stiffness = 0.0;     // hourglass control coefficient [-], 0 = off
   bool kernel_gradient_correction = false;

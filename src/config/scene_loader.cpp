@@ -23,7 +23,7 @@ constexpr double kMaxSteps = 1e9;
 constexpr double kMaxTicksPerStep = 1e4;
 
 // Material keys that only deformable bodies may carry inline.
-constexpr const char* kElasticKeys[] = {"young_modulus", "poisson_ratio", "strain", "damping",
+constexpr const char* kElasticKeys[] = {"young_modulus", "poisson_ratio", "model", "strain", "damping",
                                         "zero_energy_stiffness", "kernel_gradient_correction"};
 
 bool is_elastic_key(const std::string& key) {
@@ -31,6 +31,24 @@ bool is_elastic_key(const std::string& key) {
     if (key == k) return true;
   }
   return false;
+}
+
+// `model`, or its older spelling `strain` (the strain measure of the linear stress law:
+// green_saint_venant is stvk, cauchy in the rotated frame is corotated linear elasticity).
+ElasticModel read_elastic_model(const JsonReader& reader, ElasticModel fallback) {
+  if (reader.has("model") && reader.has("strain")) {
+    reader.fail("strain", "give either model or strain (its older spelling: green_saint_venant = stvk, cauchy = "
+                          "corotated), not both");
+  }
+  if (reader.has("strain")) {
+    return reader.choice("strain", {"green_saint_venant", "cauchy"}) == "cauchy" ? ElasticModel::corotated_linear
+                                                                               : ElasticModel::saint_venant_kirchhoff;
+  }
+  if (!reader.has("model")) return fallback;
+  const std::string model = reader.choice("model", {"stvk", "corotated", "neo_hookean"});
+  if (model == "corotated") return ElasticModel::corotated_linear;
+  if (model == "neo_hookean") return ElasticModel::neo_hookean;
+  return ElasticModel::saint_venant_kirchhoff;
 }
 
 // Reads the material keys present in `reader` on top of `material`.
@@ -41,11 +59,7 @@ void read_material_keys(const JsonReader& reader, Material& material) {
   material.viscosity = reader.number_or("viscosity", material.viscosity, Interval::non_negative());
   material.young_modulus = reader.number_or("young_modulus", material.young_modulus, Interval::positive());
   material.poisson_ratio = reader.number_or("poisson_ratio", material.poisson_ratio, Interval::open(-1.0, 0.5));
-  if (reader.has("strain")) {
-    material.strain = reader.choice("strain", {"green_saint_venant", "cauchy"}) == "cauchy"
-                          ? StrainMeasure::cauchy
-                          : StrainMeasure::green_saint_venant;
-  }
+  material.model = read_elastic_model(reader, material.model);
   material.damping = reader.number_or("damping", material.damping, Interval::non_negative());
   material.zero_energy_stiffness =
       reader.number_or("zero_energy_stiffness", material.zero_energy_stiffness, Interval::non_negative());
@@ -65,7 +79,7 @@ std::map<std::string, MaterialEntry> read_materials(const JsonReader& root) {
   if (!section) return materials;
   for (const auto& [name, reader] : section->members()) {
     reader.allow_only({"rest_density", "pressure_stiffness", "viscosity", "young_modulus", "poisson_ratio",
-                       "strain", "damping", "zero_energy_stiffness", "kernel_gradient_correction",
+                       "model", "strain", "damping", "zero_energy_stiffness", "kernel_gradient_correction",
                        "description"});
     reader.string_or("description", "");  // documentation only, but a string like everywhere else
     MaterialEntry entry;
@@ -142,7 +156,7 @@ BodyConfig read_body(const std::string& name, const JsonReader& reader,
                      const std::map<std::string, MaterialEntry>& materials, const SimulationConfig& sim) {
   reader.allow_only({"kind", "shape", "position", "orientation", "velocity", "angular_velocity", "material",
                      "rest_density", "pressure_stiffness", "viscosity", "young_modulus", "poisson_ratio",
-                     "strain", "damping", "zero_energy_stiffness", "kernel_gradient_correction", "density",
+                     "model", "strain", "damping", "zero_energy_stiffness", "kernel_gradient_correction", "density",
                      "fixed", "fixed_regions", "description"});
   // The name becomes the run log's HDF5 group /bodies/<name>, where '/' would nest groups.
   if (name.empty() || name.find('/') != std::string::npos) {
@@ -378,8 +392,13 @@ const char* to_string(BodyKind kind) {
   return "?";
 }
 
-const char* to_string(StrainMeasure strain) {
-  return strain == StrainMeasure::cauchy ? "cauchy" : "green_saint_venant";
+const char* to_string(ElasticModel model) {
+  switch (model) {
+    case ElasticModel::saint_venant_kirchhoff: return "stvk";
+    case ElasticModel::corotated_linear: return "corotated";
+    case ElasticModel::neo_hookean: return "neo_hookean";
+  }
+  return "?";
 }
 
 const BodyConfig* Scene::find_body(const std::string& body_name) const {

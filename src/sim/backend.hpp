@@ -33,6 +33,11 @@ struct BodyState {
   // torque about the centre of mass (paper eq. 8, 9 without the device term) [N], [N m].
   Eigen::Vector3d interaction_force = Eigen::Vector3d::Zero();
   Eigen::Vector3d interaction_torque = Eigen::Vector3d::Zero();
+  // Deformable bodies: the compression of their particles' neighbourhoods as the volume ratio
+  // J = det F = det(I + grad u) of paper eq. 4's displacement gradient (1 at rest, 0 collapsed,
+  // negative inverted), from the last step's elastic forces. Other bodies keep 1 and 0.
+  double min_volume_ratio = 1.0;      // smallest J over the body's particles [-]
+  std::size_t compressed_count = 0;   // particles with J <= lowest_valid_volume_ratio(model) (config/elastic_model.hpp)
 };
 
 // Particle fields for snapshots, in particle order.

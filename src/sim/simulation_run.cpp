@@ -1,6 +1,7 @@
 #include "sim/simulation_run.hpp"
 
 #include "haptics/haptics_run.hpp"
+#include "sim/compression_watch.hpp"
 #include "sim/interrupt.hpp"
 #include "sim/progress.hpp"
 #include "util/errors.hpp"
@@ -115,6 +116,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
     }
   }
 
+  CompressionWatch compression(log, setup);
   std::optional<HapticsRun> haptics;
   if (scene.proxy) haptics.emplace(scene, setup, log, options.record_device);
 
@@ -149,6 +151,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
         }
         if (log_now) {
           append_scalar(log, time_series, backend.time());
+          compression.record(states, backend.time());
           for (std::size_t b = 0; b < states.size(); ++b) {
             const BodyState& s = states[b];
             const BodySeries& series = body_series[b];
@@ -188,6 +191,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
     // as far as the disk allows: a write error must not hide the original failure.
     try {
       log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
+      compression.finish();
     } catch (const std::exception&) {
     }
     if (haptics) {
@@ -208,6 +212,8 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
     summary.peak_rendered_force = haptics->peak_rendered_force();
   }
 
+  summary.fraction_outside_valid_range = compression.finish();
+  summary.outside_valid_range = compression.summary();
   log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
   log.set_attribute("/", "simulated_time", summary.simulated_time);
   log.set_attribute("/", "wall_time", summary.wall_seconds);

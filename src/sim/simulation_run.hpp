@@ -24,6 +24,10 @@ struct RunSummary {
   std::string force_body;        // the body whose peak force is reported (the proxy, if any)
   double peak_force = 0.0;       // max |interaction force| on force_body [N]
   std::optional<double> peak_rendered_force;  // max |force| the haptic device rendered [N]; runs with a proxy
+  // Deformable bodies compressed beyond their material model's valid range (src/sim/compression_watch.hpp):
+  // the largest fraction of logged samples over the bodies [-], and "block 12.3 %, ..." ("" if none).
+  double fraction_outside_valid_range = 0.0;
+  std::string outside_valid_range;
 };
 
 // Runs to the end of the scene. On a blow-up the log is marked "failed: ..." and the

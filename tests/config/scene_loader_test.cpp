@@ -94,7 +94,7 @@ TEST(SceneLoader, ReadsEveryKeyOfTheBaseScene) {
   EXPECT_EQ(jelly->kind, BodyKind::deformable);
   EXPECT_EQ(jelly->material.young_modulus, 2.0e4);
   EXPECT_EQ(jelly->material.poisson_ratio, 0.3);
-  EXPECT_EQ(jelly->material.strain, StrainMeasure::cauchy);
+  EXPECT_EQ(jelly->material.model, ElasticModel::corotated_linear);
   EXPECT_EQ(jelly->material.damping, 1.0);
   EXPECT_EQ(jelly->material.zero_energy_stiffness, 0.1);
   EXPECT_TRUE(jelly->material.kernel_gradient_correction);
@@ -149,7 +149,7 @@ TEST(SceneLoader, DefaultsOfOptionalKeys) {
   EXPECT_EQ(drop.velocity, Eigen::Vector3d::Zero());
   EXPECT_TRUE(drop.orientation.isApprox(Eigen::Quaterniond::Identity()));
   EXPECT_EQ(drop.material.viscosity, 0.0);
-  EXPECT_EQ(drop.material.strain, StrainMeasure::green_saint_venant);
+  EXPECT_EQ(drop.material.model, ElasticModel::saint_venant_kirchhoff);
   EXPECT_FALSE(scene.proxy.has_value());
   EXPECT_EQ(scene.output.log_interval, 0.0);
   EXPECT_EQ(scene.output.snapshot_interval, 0.0);
@@ -186,7 +186,7 @@ TEST(SetOverride, ParsesJsonValuesAndTakesOtherTextAsAString) {
                                          "description=\"quoted text\"", "simulation/seed=11"});
   EXPECT_EQ(scene.simulation.dt, 0.00025);
   EXPECT_EQ(scene.simulation.gravity, Eigen::Vector3d(0.0, 0.0, -1.62));
-  EXPECT_EQ(scene.find_body("jelly")->material.strain, StrainMeasure::green_saint_venant);
+  EXPECT_EQ(scene.find_body("jelly")->material.model, ElasticModel::saint_venant_kirchhoff);
   EXPECT_FALSE(scene.find_body("anvil")->fixed);
   EXPECT_EQ(scene.description, "quoted text");
   EXPECT_EQ(scene.simulation.seed, 11u);

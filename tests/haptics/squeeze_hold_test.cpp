@@ -1,0 +1,84 @@
+// What the hand feels while it holds the proxy pressed into the soft block of configs/squeeze.json
+// (the hold phase, 0.6 s to 1.0 s of the script): a steady push, not a buzz. The contact force
+// on the proxy and the force the device renders may change from one haptic tick (1 ms) to the
+// next only by what a steady press explains.
+//
+// At 4 cm spacing (the CI's), on the float32 cpu backend, 0.8 s: the window 0.65 s to 0.8 s
+// starts once the hand has stopped and the approach transient has passed.
+#include "cli/scene_run.hpp"
+#include "h5_read.hpp"
+#include "temp_dir.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+namespace mssph {
+namespace {
+
+constexpr double kWindowStart = 0.65;  // [s]
+constexpr double kWindowEnd = 0.8;     // [s]
+
+struct HoldPhase {
+  double max_rendered_jump = 0.0;     // max |rendered force - previous tick's| [N]
+  double max_contact_jump = 0.0;      // max |interaction force - previous tick's| [N]
+  double mean_contact = 0.0;          // mean |interaction force| [N]
+};
+
+HoldPhase measure_hold(const std::vector<std::string>& extra) {
+  test::TempDir dir;
+  cli::SceneRunRequest request;
+  request.scene_path = std::string(MSSPH_SOURCE_DIR) + "/configs/squeeze.json";
+  request.overrides = {"simulation/particle_spacing=0.04", "simulation/duration=" + std::to_string(kWindowEnd)};
+  request.overrides.insert(request.overrides.end(), extra.begin(), extra.end());
+  request.backend = "cpu";
+  request.output = (dir / "squeeze.h5").string();
+  request.quiet = true;
+  const cli::SceneRunResult result = cli::run_scene(request);
+  EXPECT_EQ(result.exit_code, 0) << result.error;
+
+  const h5::Handle file = test::open_read_only(result.output);
+  const std::vector<double> time = test::read_doubles(file.id(), "/haptics/time");
+  const std::vector<double> jump = test::read_doubles(file.id(), "/haptics/force_jump");
+  const std::vector<double> contact = test::read_doubles(file.id(), "/haptics/interaction/force");
+  HoldPhase hold;
+  std::size_t samples = 0;
+  for (std::size_t k = 1; k < time.size(); ++k) {
+    if (time[k] < kWindowStart || time[k] > kWindowEnd) continue;
+    hold.max_rendered_jump = std::max(hold.max_rendered_jump, jump[k]);
+    double step = 0.0, magnitude = 0.0;
+    for (std::size_t a = 0; a < 3; ++a) {
+      step += std::pow(contact[3 * k + a] - contact[3 * (k - 1) + a], 2);
+      magnitude += std::pow(contact[3 * k + a], 2);
+    }
+    hold.max_contact_jump = std::max(hold.max_contact_jump, std::sqrt(step));
+    hold.mean_contact += std::sqrt(magnitude);
+    ++samples;
+  }
+  EXPECT_GT(samples, 100u);
+  hold.mean_contact /= static_cast<double>(samples);
+  return hold;
+}
+
+TEST(SqueezeHold, TheHeldPressIsSteadyFromTickToTick) {
+  const HoldPhase hold = measure_hold({});
+  RecordProperty("max_rendered_force_jump_N", std::to_string(hold.max_rendered_jump));
+  RecordProperty("max_contact_force_jump_N", std::to_string(hold.max_contact_jump));
+  RecordProperty("mean_contact_force_N", std::to_string(hold.mean_contact));
+  std::cout << "hold phase: rendered force jump per tick up to " << hold.max_rendered_jump
+            << " N, contact force jump up to " << hold.max_contact_jump << " N, mean contact force "
+            << hold.mean_contact << " N\n";
+  // What the hand feels: the rendered force may change by at most 3 N from one 1 ms tick to the
+  // next while the hand holds still (measured at 4 cm: 2.4 N with neo_hookean, 2.5 N with the
+  // paper's stvk block; the 3 N bound is that plus a margin, not a formula). The coupling spring (1000 N/m) and the device filter the contact's
+  // chatter: the SPH contact force on the light proxy (0.31 kg) itself swings between ~0 and
+  // 60-90 N every 15-30 ms (RecordProperty max_contact_force_jump_N), which this bound does not
+  // cover (see README, "What the hand feels while squeezing").
+  EXPECT_LT(hold.max_rendered_jump, 3.0);
+  EXPECT_GT(hold.mean_contact, 10.0);  // the proxy is pressed onto the block, not hovering
+}
+
+}  // namespace
+}  // namespace mssph
