@@ -171,7 +171,7 @@ int make_figure2(const Figure2Options& options, const std::string& command_line)
   StepTimingOptions timing;
   timing.min_total_seconds = options.min_seconds;
   {
-    RunLog log(path, figure_metadata(info, parameters, command_line));
+    RunLog log(path, figure_metadata(info, parameters, command_line), options.force);
     record_machine(log, options);
     time_all_sizes(log, options, media, sizes, geometry, backend_name, timing);
   }  // closed: the plotting script reads it

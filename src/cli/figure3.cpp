@@ -53,6 +53,7 @@ int make_figure3(const Figure3Options& options) {
     r.scene_path = scene_path(options, medium);
     r.backend = options.backend;
     r.quiet = options.quiet;
+    r.force = options.force;
     r.output = (fs::path(options.out) / ("sphere_drop_" + medium + ".h5")).string();
     r.overrides = {"simulation/particle_spacing=" + std::to_string(spacing),
                    "simulation/duration=" + std::to_string(duration_of(medium))};
@@ -62,8 +63,14 @@ int make_figure3(const Figure3Options& options) {
     r.overrides.insert(r.overrides.end(), options.overrides.begin(), options.overrides.end());
     requests.push_back(std::move(r));
   }
-  // Every scene is loaded with its overrides before the first run starts: a bad --set fails at once.
-  for (const SceneRunRequest& r : requests) load_scene(r.scene_path, r.overrides);
+  // Every scene is loaded with its overrides, and every output checked, before the first run
+  // starts: a bad --set or an earlier figure in the way fails at once.
+  for (const SceneRunRequest& r : requests) {
+    load_scene(r.scene_path, r.overrides);
+    if (!options.force && fs::exists(r.output)) {
+      throw InputError("--out " + options.out + ": " + r.output + " exists; pass --force to replace it");
+    }
+  }
   for (std::size_t m = 0; m < requests.size(); ++m) {
     std::fprintf(stderr, "figure 3: run %zu of 3, %s block at %s resolution (%.0f cm)\n", m + 1, media[m].c_str(),
                  options.resolution.c_str(), 100.0 * spacing);

@@ -47,6 +47,7 @@ void add_figure2(CLI::App& figure, int& exit_code, const std::string& command_li
       ->check(CLI::IsMember({"paper", "fixed-height"}))
       ->capture_default_str();
   cmd->add_option("--min-time", o->min_seconds, "Seconds of timed steps per size, at least")->capture_default_str();
+  cmd->add_flag("--force", o->force, "Replace the figure's earlier output files in --out (regular files only)");
   cmd->add_option("--out", o->out, "Output folder")->capture_default_str();
   cmd->footer(
       "Writes DIR/figure2.h5 (every timing with the machine: CPU, GPU, driver, commit, build type,\n"
@@ -83,6 +84,7 @@ void add_figure3(CLI::App& figure, int& exit_code) {
   cmd->add_option("--set", o->overrides, "Override a scene value in all three runs: --set PATH=VALUE (as mssph run)")
       ->allow_extra_args(false);
   cmd->add_flag("-q,--quiet", o->quiet, "No progress lines from the runs");
+  cmd->add_flag("--force", o->force, "Replace the figure's earlier output files in --out (regular files only)");
   cmd->footer(
       "Runs configs/sphere_drop_{rigid,deformable,fluid}.json, each an ordinary run with its log in\n"
       "DIR/sphere_drop_<medium>.h5, then draws DIR/figure3.png and .svg (interaction force on the\n"
@@ -109,6 +111,7 @@ void add_figure_tss(CLI::App& figure, int& exit_code) {
   cmd->add_option("--set", o->overrides, "Override a scene value: --set PATH=VALUE (as mssph run)")
       ->allow_extra_args(false);
   cmd->add_flag("-q,--quiet", o->quiet, "No progress lines from the run");
+  cmd->add_flag("--force", o->force, "Replace the figure's earlier output files in --out (regular files only)");
   cmd->footer(
       "Runs the scene into DIR/tap_squeeze_stir.h5 and draws DIR/tss.png and .svg: the rendered force\n"
       "and torque against time, the tap, squeeze and stir phases shaded. Checks that in each phase the\n"

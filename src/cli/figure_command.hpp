@@ -15,6 +15,7 @@ struct Figure2Options {
   std::string geometry = "paper";
   double min_seconds = 0.5;     // timed steps per size, at least [s]
   std::string out = "results/runs/figure2";
+  bool force = false;           // replace an earlier figure2.h5
 };
 
 struct Figure3Options {
@@ -24,6 +25,7 @@ struct Figure3Options {
   std::string configs;  // where sphere_drop_{rigid,deformable,fluid}.json are
   std::vector<std::string> overrides;
   bool quiet = false;
+  bool force = false;  // replace earlier run logs in `out`
 };
 
 struct FigureTssOptions {
@@ -32,6 +34,7 @@ struct FigureTssOptions {
   std::string scene;
   std::vector<std::string> overrides;
   bool quiet = false;
+  bool force = false;  // replace an earlier run log in `out`
 };
 
 // Each returns the process exit code: 0 when the figure was made (and its checks passed), 1 when

@@ -16,6 +16,7 @@ int make_figure_tss(const FigureTssOptions& options) {
   request.backend = options.backend;
   request.overrides = options.overrides;
   request.quiet = options.quiet;
+  request.force = options.force;
   request.output = (std::filesystem::path(options.out) / "tap_squeeze_stir.h5").string();
   const SceneRunResult result = run_scene(request);
   if (result.exit_code != kExitOk) return result.exit_code;

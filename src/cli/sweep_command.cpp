@@ -148,8 +148,10 @@ PointTask make_task(const SweepPoint& point, std::size_t total, const SweepFile&
   task.label = point_label(point, total);
   task.log_path = folder + "/" + point.log_name();
   task.output_path = folder + "/point-" + point.hash + ".out";
+  // --force: a point runs only when it is not completed, and then replaces what an earlier try
+  // left (a failed or interrupted run's <log>.partial).
   task.argv = {program, "run", fs::absolute(sweep.scene_path).lexically_normal().string(), "--backend", args.backend,
-               "--out", task.log_path};
+               "--out", task.log_path, "--force"};
   for (const std::string& o : point.overrides) {
     task.argv.push_back("--set");
     task.argv.push_back(o);

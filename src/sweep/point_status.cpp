@@ -17,10 +17,15 @@ PointState classify_status(const std::string& status) {
 }
 
 PointStatus read_point_status(const std::string& log_path) {
-  if (!std::filesystem::exists(log_path)) return {PointState::missing, ""};
+  // `mssph run` publishes only a completed log under its name; a run that failed, was interrupted
+  // or is still going keeps it at <log>.partial.
+  const std::string partial = log_path + ".partial";
+  const bool published = std::filesystem::exists(log_path);
+  if (!published && !std::filesystem::exists(partial)) return {PointState::missing, ""};
+  const std::string path = published ? log_path : partial;
   h5::silence_error_printing();
   try {
-    const h5::Handle file = h5::file(H5Fopen(log_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open " + log_path);
+    const h5::Handle file = h5::file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open " + path);
     const std::string status = h5::read_string_attribute(file.id(), "status");
     return {classify_status(status), status};
   } catch (const h5::Error& e) {

@@ -47,9 +47,17 @@ TEST_F(FigureCommand, Figure2TimesEachMediumAndSizeAndDrawsThem) {
 }
 
 TEST_F(FigureCommand, Figure2FixedHeightKeepsTheBlockAndRefinesTheSpacing) {
-  const ProcessResult r = mssph({"figure", "2", "--backend", "cpu", "--media", "deformable", "--sizes", "300,2400",
-                                 "--geometry", "fixed-height", "--min-time", "0.02", "--out", work("fig2")});
+  const std::vector<std::string> args{"figure", "2", "--backend", "cpu", "--media", "deformable", "--sizes", "300,2400",
+                                      "--geometry", "fixed-height", "--min-time", "0.02", "--out", work("fig2")};
+  const ProcessResult r = mssph(args);
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  // An earlier figure is replaced only with --force.
+  const ProcessResult again = mssph(args);
+  EXPECT_EQ(again.exit_code, 2) << again.err;
+  EXPECT_NE(again.err.find("--force"), std::string::npos) << again.err;
+  std::vector<std::string> forced = args;
+  forced.push_back("--force");
+  EXPECT_EQ(mssph(forced).exit_code, 0);
   const h5::Handle file = open_read_only(work("fig2/figure2.h5"));
   EXPECT_EQ(h5::read_string_attribute(file.id(), "geometry"), "fixed-height");
   EXPECT_EQ(read_doubles(file.id(), "/figure2/deformable/height"), (std::vector<double>{0.2, 0.2}));
