@@ -49,7 +49,11 @@ def point_state(status):
 
 
 def read_point(directory, point, metrics):
+    # `mssph run` publishes a log under its name only once completed; a failed, interrupted or
+    # running one is at <log>.partial.
     path = directory / point["log"]
+    if not path.exists():
+        path = path.with_name(path.name + ".partial")
     if not path.exists():
         return "missing", {name: (math.nan if name != "final_status" else "") for name in metrics}
     try:

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <fstream>
 #include <memory>
 #include <set>
 #include <sstream>

@@ -37,7 +37,13 @@ class SweepCli : public Cli {
   nlohmann::json manifest() const { return read_json(out() + "/sweep.json"); }
   std::string log_of(const nlohmann::json& point) const { return out() + "/" + point["log"].get<std::string>(); }
   std::string log_of(std::size_t index) const { return log_of(manifest()["points"][index]); }
-  bool log_exists(std::size_t index) const { return std::filesystem::exists(log_of(index)); }
+  // mssph run publishes a log under its name only once completed; until then, and after a failure
+  // or an interruption, it is <log>.partial. The point's log as it is on disk now:
+  std::string log_on_disk(std::size_t index) const {
+    const std::string published = log_of(index);
+    return std::filesystem::exists(published) ? published : published + ".partial";
+  }
+  bool log_exists(std::size_t index) const { return std::filesystem::exists(log_on_disk(index)); }
 
   // A file's inode: a rerun point's log is a new file (created, then renamed over the old one).
   static ino_t inode(const std::string& path) {

@@ -40,9 +40,12 @@ TEST_F(SweepResume, ASecondRunSkipsEveryCompletedPoint) {
 TEST_F(SweepResume, LogsLeftRunningOrInterruptedRunAgain) {
   ASSERT_EQ(sweep().exit_code, 0);
   const std::vector<ino_t> before = inodes();
-  { RunLog killed(log_of(1), RunMetadata{}); }  // status "running": a run killed mid-way
+  // What runs of points 1 and 2 that did not finish leave: their log at <log>.partial, "running"
+  // (killed mid-way) or "interrupted"; point 3's log is gone.
+  for (std::size_t i : {1u, 2u, 3u}) std::filesystem::remove(log_of(i));
+  { RunLog killed(log_of(1), RunMetadata{}); }
   RunLog(log_of(2), RunMetadata{}).finish_failed("interrupted by a signal at t = 0.05 s");
-  std::filesystem::remove(log_of(3));
+  ASSERT_EQ(status_of(log_on_disk(1)), "running");
   const ProcessResult again = sweep();
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_THAT(again.err, HasSubstr("1 completed before, 0 failed before, 3 to run"));
@@ -58,19 +61,21 @@ TEST_F(SweepResume, FailedPointsAreReportedAndRerunOnlyWhenAsked) {
   EXPECT_EQ(first.exit_code, 3) << first.err;
   EXPECT_THAT(first.err, HasSubstr("FAILED (failed: blow-up"));
   ASSERT_EQ(status_of(log_of(0)), "completed");
-  const ino_t failed = inode(log_of(1));
+  // A rerun rewrites the partial file in place (same inode): its modification time tells.
+  const auto failed = std::filesystem::last_write_time(log_on_disk(1));
+  EXPECT_EQ(log_on_disk(1), log_of(1) + ".partial") << "a failed run's log keeps its partial name";
 
   const ProcessResult resumed = sweep({}, file);
   EXPECT_EQ(resumed.exit_code, 3) << "the sweep is still not complete";
   EXPECT_THAT(resumed.err, HasSubstr("1 completed before, 1 failed before, 0 to run"));
   EXPECT_THAT(resumed.err, HasSubstr("not rerun (--retry-failed reruns it): point 2/2 (max_speed=0.0001)"));
-  EXPECT_EQ(inode(log_of(1)), failed);
+  EXPECT_EQ(std::filesystem::last_write_time(log_on_disk(1)), failed);
   EXPECT_EQ(csv_column("state"), (std::vector<std::string>{"completed", "failed"}));
 
   const ProcessResult retried = sweep({"--retry-failed"}, file);
   EXPECT_EQ(retried.exit_code, 3);
   EXPECT_THAT(retried.err, HasSubstr("1 completed before, 0 failed before, 1 to run"));
-  EXPECT_NE(inode(log_of(1)), failed) << "the failed point ran again";
+  EXPECT_NE(std::filesystem::last_write_time(log_on_disk(1)), failed) << "the failed point ran again";
 }
 
 TEST_F(SweepResume, ShardsTogetherRunEveryPointAndMergeListsTheMissing) {
