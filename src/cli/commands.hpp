@@ -7,5 +7,6 @@ namespace mssph::cli {
 
 void add_run_command(CLI::App& app, int& exit_code);
 void add_info_command(CLI::App& app, int& exit_code);
+void add_validate_command(CLI::App& app, int& exit_code);  // validation/framework/validate_command.cpp
 
 }  // namespace mssph::cli

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   int exit_code = mssph::kExitOk;
   mssph::cli::add_run_command(app, exit_code);
   mssph::cli::add_info_command(app, exit_code);
+  mssph::cli::add_validate_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,20 @@
+// The registry of validation cases, in the order they run. A new case: a folder with its
+// scene, README and measuring code, its function declared in framework/case_functions.hpp, and
+// one line here (see README.md).
+#include "framework/case_functions.hpp"
+
+namespace mssph::validation {
+
+const std::vector<ValidationCase>& all_cases() {
+  static const std::vector<ValidationCase> cases{
+      {"kernels", "one_step", "kernels/one_step", "one force evaluation, float32 backends vs float64 reference",
+       run_one_step_case},
+      {"kernels", "sphere_drops", "kernels/sphere_drops", "Figure 3 sphere drops over 0.5 s, float32 vs reference",
+       run_sphere_drops_case},
+      {"selftest", "wrong_expectation", "selftest/wrong_expectation",
+       "a flat-punch force curve judged against Hertz: must FAIL", run_wrong_expectation_case},
+  };
+  return cases;
+}
+
+}  // namespace mssph::validation
