@@ -11,6 +11,10 @@ const std::vector<ValidationCase>& all_cases() {
        run_one_step_case},
       {"kernels", "sphere_drops", "kernels/sphere_drops", "Figure 3 sphere drops over 0.5 s, float32 vs reference",
        run_sphere_drops_case},
+      {"physics", "hydrostatic", "physics/hydrostatic", "slope of pressure against depth in a settled column vs rho0 g",
+       run_hydrostatic_case},
+      {"physics", "archimedes", "physics/archimedes", "floating depth of spheres of density 500 and 700 in water",
+       run_archimedes_case},
       {"selftest", "wrong_expectation", "selftest/wrong_expectation",
        "a flat-punch force curve judged against Hertz: must FAIL", run_wrong_expectation_case},
   };

@@ -31,3 +31,26 @@ std::string validation_dir() {
 std::string validation_file(const std::string& relative) { return validation_dir() + "/" + relative; }
 
 }  // namespace mssph::validation
+
+#include "config/scene_loader.hpp"
+
+#include <cstdio>
+
+namespace mssph::validation {
+
+Scene case_scene(const std::string& folder, const std::vector<std::string>& overrides) {
+  return load_scene(validation_file(folder + "/scene.json"), overrides);
+}
+
+std::string exact(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
+std::vector<std::string> resolution_overrides(const Scene& scene, double dx) {
+  const double dt = scene.simulation.dt * dx / scene.simulation.particle_spacing;
+  return {"simulation/particle_spacing=" + exact(dx), "simulation/dt=" + exact(dt)};
+}
+
+}  // namespace mssph::validation

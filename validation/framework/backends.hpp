@@ -14,3 +14,21 @@ std::string validation_dir();
 std::string validation_file(const std::string& relative);
 
 }  // namespace mssph::validation
+
+#include "config/scene.hpp"
+
+#include <vector>
+
+namespace mssph::validation {
+
+// A case's scene, validation/<folder>/scene.json, with --set overrides.
+Scene case_scene(const std::string& folder, const std::vector<std::string>& overrides = {});
+
+// --set overrides that run a scene at spacing dx with a time step scaled like dx (the acoustic
+// and elastic bounds of stability.cpp are proportional to h = 2 dx).
+std::vector<std::string> resolution_overrides(const Scene& scene, double dx);
+
+// A number as --set writes it, to full double precision.
+std::string exact(double x);
+
+}  // namespace mssph::validation
