@@ -30,6 +30,12 @@ const std::vector<ValidationCase>& all_cases() {
        run_coupling_step_case},
       {"physics", "passivity", "physics/passivity", "the coupling injects no energy over a 5 s script",
        run_passivity_case},
+      {"convergence", "hydrostatic_slope", "convergence/hydrostatic_slope", "dP/dz at three spacings",
+       run_hydrostatic_convergence_case},
+      {"convergence", "floating_depth", "convergence/floating_depth", "floating depth at three spacings",
+       run_floating_convergence_case},
+      {"convergence", "cantilever_deflection", "convergence/cantilever_deflection",
+       "cantilever tip deflection at three spacings vs Timoshenko", run_cantilever_convergence_case},
       {"selftest", "wrong_expectation", "selftest/wrong_expectation",
        "a flat-punch force curve judged against Hertz: must FAIL", run_wrong_expectation_case},
   };

@@ -59,6 +59,9 @@ CantileverMeasurement measure_cantilever(const std::string& backend_name, double
   }
   m.tip = sum / count;
   m.euler_bernoulli = euler_bernoulli(length - 0.5 * dx);
+  const double tip_x = length - 0.5 * dx;
+  const double shear_modulus = young / (2.0 * (1.0 + nu));
+  m.shear_deflection = q * (length * tip_x - 0.5 * tip_x * tip_x) / (5.0 / 6.0 * shear_modulus * side * side);
   for (const auto& [index, layer] : layers) {
     const double x = (static_cast<double>(index) + 0.5) * dx;
     if (x < 0.0) continue;

@@ -12,6 +12,9 @@ namespace mssph::validation {
 struct CantileverMeasurement {
   double tip = 0.0;             // mean deflection of the last particle layer [m]
   double euler_bernoulli = 0.0;  // w at that layer's x = L - dx / 2 [m]
+  // Timoshenko's shear deflection there, q (L x - x^2 / 2) / (kappa G A) with kappa = 5/6
+  // (Timoshenko and Gere; rectangular section) [m]
+  double shear_deflection = 0.0;
   std::size_t fixed_particles = 0;
   std::size_t particles = 0;
   std::size_t steps = 0;
