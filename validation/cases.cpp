@@ -11,6 +11,8 @@ const std::vector<ValidationCase>& all_cases() {
        run_one_step_case},
       {"kernels", "sphere_drops", "kernels/sphere_drops", "Figure 3 sphere drops over 0.5 s, float32 vs reference",
        run_sphere_drops_case},
+      {"kernels", "haptic_scenes", "kernels/haptic_scenes", "tap, squeeze and stir from their run logs, float32 vs reference",
+       run_haptic_scenes_case},
       {"physics", "hydrostatic", "physics/hydrostatic", "slope of pressure against depth in a settled column vs rho0 g",
        run_hydrostatic_case},
       {"physics", "archimedes", "physics/archimedes", "floating depth of spheres of density 500 and 700 in water",
