@@ -27,7 +27,8 @@ CaseResult run_hertz_case(const CaseContext&) {
   std::vector<double> expected;
   for (double d : curve.depth) expected.push_back(d > 0.0 ? hertz * std::pow(d, 1.5) : 0.0);
   result.series.push_back({"force_depth", "indentation d [m]", curve.depth,
-                           {{"measured F [N]", curve.force}, {"Hertz 4/3 E* sqrt(R) d^1.5 [N]", expected}}});
+                           {{"measured F [N]", curve.force}, {"Hertz 4/3 E* sqrt(R) d^1.5 [N]", expected}},
+                           true});
   return result;
 }
 
