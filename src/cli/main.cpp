@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   mssph::cli::add_figure_command(app, exit_code, command_line);
   mssph::cli::add_bench_command(app, exit_code);
   mssph::cli::add_sweep_command(app, exit_code);
+  mssph::cli::add_validate_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -25,18 +25,11 @@ void expect_drop_agrees(const std::string& backend, const DropCase& drop) {
   const ParticleSetup setup = coarse_scene(drop.config, 0.5);
   const std::size_t sphere = find_body(setup, "sphere");
   const std::size_t steps = 2000;
-  const ProxyTrack reference = track_proxy("reference", setup, sphere, steps);
-  const ProxyTrack candidate = track_proxy(backend, setup, sphere, steps);
-  double travel = 0.0;
-  for (const Eigen::Vector3d& x : reference.position) travel = std::max(travel, (x - reference.position.front()).norm());
-  std::vector<Eigen::Vector3d> displacement_ref, displacement_candidate;
-  for (std::size_t k = 0; k < steps; ++k) {
-    displacement_ref.push_back(reference.position[k] - reference.position.front());
-    displacement_candidate.push_back(candidate.position[k] - reference.position.front());
-  }
+  const validation::DropAgreement agreement = validation::drop_agreement(backend, setup, sphere, steps);
+  const double travel = agreement.travel;
   ASSERT_GT(travel, 0.01) << "the sphere must move for the comparison to mean anything";
-  const double force_error = normalised_rms(candidate.force, reference.force);
-  const double path_error = normalised_rms(displacement_candidate, displacement_ref);
+  const double force_error = agreement.force_error;
+  const double path_error = agreement.path_error;
   std::cout << backend << " " << drop.config << ": force NRMS " << force_error << ", path NRMS " << path_error << "\n";
   EXPECT_LT(force_error, drop.tolerance) << drop.config;
   EXPECT_LT(path_error, drop.tolerance) << drop.config;

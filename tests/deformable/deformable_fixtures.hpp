@@ -2,6 +2,7 @@
 // Deformable-body scenes for the elasticity tests, built through the same JSON path as user
 // scenes, and helpers that read the reference backend's deformable state.
 #include "config/scene_loader.hpp"
+#include "physics/elastic_bodies.hpp"
 #include "reference_backend.hpp"
 #include "scene/scene_builder.hpp"
 
@@ -42,33 +43,16 @@ inline reference::ReferenceBackend make_backend(const nlohmann::json& document) 
   return reference::ReferenceBackend(build_particles(parse_scene(document, "elastic test scene")));
 }
 
-// Particles of `body` whose rest neighbourhood is complete: at least `margin` from every face of
-// the body's bounding box (margin >= h: the support lies inside the body).
+// Interior particles and uniform deformations: the validation cases' helpers
+// (validation/physics/elastic_bodies.hpp).
 inline std::vector<std::size_t> interior_particles(const reference::ReferenceBackend& backend, std::size_t body,
                                                    double margin) {
-  const BodySetup& b = backend.setup().bodies[body];
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300);
-  Eigen::Vector3d hi = Eigen::Vector3d::Constant(-1e300);
-  for (std::size_t i = b.first; i < b.first + b.count; ++i) {
-    lo = lo.cwiseMin(backend.setup().position[i]);
-    hi = hi.cwiseMax(backend.setup().position[i]);
-  }
-  std::vector<std::size_t> inside;
-  for (std::size_t i = b.first; i < b.first + b.count; ++i) {
-    const Eigen::Vector3d& x = backend.setup().position[i];
-    if (((x - lo).array() >= margin - 1e-12).all() && ((hi - x).array() >= margin - 1e-12).all()) inside.push_back(i);
-  }
-  return inside;
+  return validation::interior_particles(backend, body, margin);
 }
 
-// Places every particle of `body` at x = centre + G (X - centre) + t from its rest position X:
-// a uniform deformation G (a rotation, a stretch, a shear) and a translation t.
 inline void deform_body(reference::ReferenceBackend& backend, std::size_t body, const Eigen::Matrix3d& g,
                         const Eigen::Vector3d& centre, const Eigen::Vector3d& translation = Eigen::Vector3d::Zero()) {
-  const BodySetup& b = backend.setup().bodies[body];
-  for (std::size_t i = b.first; i < b.first + b.count; ++i) {
-    backend.particles().position[i] = centre + g * (backend.setup().position[i] - centre) + translation;
-  }
+  validation::deform_body(backend, body, g, centre, translation);
 }
 
 }  // namespace mssph::testing

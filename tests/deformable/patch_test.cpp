@@ -7,6 +7,7 @@
 // one, so without kernel-gradient correction interior stresses come out 5.3 % low. The 2 %
 // patch tests therefore run with correction on; the uncorrected tests check the factor b.
 #include "deformable_fixtures.hpp"
+#include "physics/elastic_statics.hpp"
 
 #include "elasticity.hpp"
 #include "sim/stability.hpp"
@@ -25,14 +26,9 @@ constexpr double kYoung = 1.0e5;
 constexpr double kPoisson = 0.3;
 const Vector3d kCentre(0.0, 0.0, 0.0);
 
+// The block of the physics case validation/physics/patch_tests.
 reference::ReferenceBackend block(bool correction, const std::string& strain, double jitter = 0.0) {
-  nlohmann::json doc = testing::elastic_scene(kDx, 1e-4);
-  doc["simulation"]["jitter"] = jitter;
-  nlohmann::json material = testing::elastic_material(kYoung, kPoisson);
-  material["kernel_gradient_correction"] = correction;
-  material["strain"] = strain;
-  doc["bodies"]["block"] = testing::deformable_box({0.1, 0.1, 0.1}, kCentre, material);
-  return testing::make_backend(doc);
+  return validation::patch_block(correction, strain, jitter);
 }
 
 Material material() {
@@ -71,12 +67,7 @@ double lattice_consistency() {
 
 // The stress at the interior particles (complete neighbourhoods) after deforming by G.
 std::vector<Matrix3d> interior_stresses(reference::ReferenceBackend& backend, const Matrix3d& g) {
-  testing::deform_body(backend, 0, g, kCentre);
-  backend.compute_forces();
-  std::vector<Matrix3d> stresses;
-  for (std::size_t i : testing::interior_particles(backend, 0, backend.setup().smoothing_length)) {
-    stresses.push_back(backend.deformables().stress[i]);
-  }
+  std::vector<Matrix3d> stresses = validation::interior_stresses(backend, g);
   EXPECT_GT(stresses.size(), 100u) << "the block must have interior particles for the test to mean anything";
   return stresses;
 }

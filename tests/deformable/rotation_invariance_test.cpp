@@ -3,12 +3,11 @@
 // neighbourhoods.
 #include "corotation.hpp"
 #include "deformable_fixtures.hpp"
+#include "physics/elastic_statics.hpp"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include <numbers>
-#include <random>
 
 namespace mssph {
 namespace {
@@ -16,47 +15,15 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-// Rotations about random axes by angles spread over (0, pi], pi itself included.
-std::vector<Matrix3d> random_rotations(std::size_t count) {
-  std::mt19937_64 random(2011);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::vector<Matrix3d> rotations;
-  for (std::size_t k = 0; k < count; ++k) {
-    const Vector3d axis = Vector3d(normal(random), normal(random), normal(random)).normalized();
-    const double angle = std::numbers::pi * static_cast<double>(k + 1) / static_cast<double>(count);
-    rotations.push_back(Eigen::AngleAxisd(angle, axis).toRotationMatrix());
-  }
-  return rotations;
-}
-
+// The block and the 12 rigid motions are the physics case's (validation/physics/rotation_invariance).
 // Tolerances: positions are exact rotations of the rest positions up to rounding (~1e-16
 // relative), so R_i matches Q to ~1e-15 and the residual strain is ~1e-15; 1e-12 on R and 1e-9 of
 // E h^2 on forces (the brief's bound) leave orders of magnitude of margin while catching any
 // real strain (a strain of 1e-9 already gives forces ~1e-9 E h^2).
 void expect_rigid_motion_is_free(bool jitter, bool correction) {
-  const double dx = 0.01;
-  const double young = 2.0e5;
-  nlohmann::json doc = testing::elastic_scene(dx, 1e-4);
-  if (jitter) doc["simulation"]["jitter"] = 0.2;
-  nlohmann::json material = testing::elastic_material(young, 0.3);
-  material["kernel_gradient_correction"] = correction;
-  doc["bodies"]["block"] = testing::deformable_box({0.08, 0.06, 0.05}, {0.3, -0.2, 0.1}, material);
-  reference::ReferenceBackend backend = testing::make_backend(doc);
-  const double h = backend.setup().smoothing_length;
-  const double force_scale = young * h * h;
-  const Vector3d centre(0.3, -0.2, 0.1);
-  for (const Matrix3d& q : random_rotations(12)) {
-    testing::deform_body(backend, 0, q, centre, Vector3d(1.5, -2.0, 0.7));
-    backend.compute_forces();
-    double worst_rotation = 0.0;
-    double worst_force = 0.0;
-    for (std::size_t i = 0; i < backend.particle_count(); ++i) {
-      worst_rotation = std::max(worst_rotation, (backend.deformables().rotation[i] - q).cwiseAbs().maxCoeff());
-      worst_force = std::max(worst_force, backend.deformables().elastic_force[i].norm());
-    }
-    EXPECT_LT(worst_rotation, 1e-12) << "R_i differs from Q";
-    EXPECT_LT(worst_force / force_scale, 1e-9) << "elastic force under a rigid rotation";
-  }
+  const validation::RigidMotionResiduals r = validation::rigid_motion_residuals(jitter, correction);
+  EXPECT_LT(r.worst_rotation, 1e-12) << "R_i differs from Q";
+  EXPECT_LT(r.worst_force, 1e-9) << "elastic force under a rigid rotation";
 }
 
 TEST(RotationInvariance, RigidRotationGivesQAndNoForceOnALattice) { expect_rigid_motion_is_free(false, false); }

@@ -1,6 +1,6 @@
 // The haptic loop against simulation steps shorter and longer than its period: tick times,
 // state queries, the wrench the proxy receives, the local model between steps, determinism.
-#include "session_harness.hpp"
+#include "physics/coupling/session_harness.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,8 @@
 // energy but never inject it, unless its gains break the explicit stability bound, which the
 // start-up check then reports.
 #include "haptics/coupling_stability.hpp"
-#include "session_harness.hpp"
+#include "physics/coupling/coupling_measurements.hpp"
+#include "physics/coupling/session_harness.hpp"
 
 #include <gtest/gtest.h>
 #include <gmock/gmock.h>
@@ -19,58 +20,24 @@ constexpr double kDt = 2.5e-4;     // the scenes' step
 constexpr double kMass = 1.0;      // proxy [kg]
 constexpr double kInertia = 1e-2;  // proxy [kg m^2]
 
-// Five seconds of a hand moving the handle: reaching, tapping a floor 3 cm deep (the coupling
-// then pushes the proxy into the floor's penalty contact), and twisting back and forth.
-HapticsConfig five_second_script(const SpringDamperGains& coupling) {
-  HapticsConfig config;
-  config.coupling = coupling;
-  config.trajectory.source = TrajectorySource::scripted;
-  const auto turn = [](double degrees) {
-    return Eigen::Quaterniond(
-        Eigen::AngleAxisd(degrees * std::numbers::pi / 180.0, Eigen::Vector3d(0.3, 0.2, 1.0).normalized()));
-  };
-  config.trajectory.keyframes = {{0.0, Pose{Eigen::Vector3d::Zero(), turn(0)}},
-                                 {0.6, Pose{Eigen::Vector3d(0.1, 0.0, 0.0), turn(30)}},
-                                 {1.0, Pose{Eigen::Vector3d(0.1, 0.0, -0.08), turn(30)}},
-                                 {1.5, Pose{Eigen::Vector3d(0.1, 0.0, -0.08), turn(-20)}},
-                                 {1.8, Pose{Eigen::Vector3d(0.1, 0.05, 0.0), turn(-20)}},
-                                 {2.2, Pose{Eigen::Vector3d(0.0, 0.05, -0.08), turn(60)}},
-                                 {2.4, Pose{Eigen::Vector3d(0.0, 0.05, 0.02), turn(0)}},
-                                 {3.5, Pose{Eigen::Vector3d(-0.1, -0.1, 0.0), turn(-45)}},
-                                 {4.0, Pose{Eigen::Vector3d(-0.1, -0.1, -0.08), turn(-45)}},
-                                 {4.5, Pose{Eigen::Vector3d::Zero(), turn(0)}}};
-  return config;
-}
-
-RigidBodyDouble proxy_over_floor() {
-  RigidBodyDouble body(kMass, kInertia, kDt);
-  body.floor = Floor{-0.05, 2e4, 50.0};  // 5 cm below the start: reached by the 8 cm taps
-  return body;
-}
+// The five-second script and the passivity observer are the physics case's
+// (validation/physics/passivity).
+using validation::five_second_script;
 
 TEST(CouplingPassivity, StableGainsInjectNoEnergyOverAFiveSecondScript) {
   const SpringDamperGains gains{1000.0, 10.0, 10.0, 0.1};  // the defaults
   const HapticsConfig config = five_second_script(gains);
   EXPECT_THAT(coupling_stability_warnings(config, "proxy", proxy_model(kMass, kInertia), kDt), ::testing::IsEmpty());
 
-  RigidBodyDouble body = proxy_over_floor();
-  const auto samples = run_session(config, body, kMass, kInertia, kDt, 5.0);
-  ASSERT_EQ(samples.size(), 5001u);
-  double most = 0.0;
-  double deepest = 0.0;
-  double peak_force = 0.0;
-  for (const HapticSample& s : samples) {
-    most = std::max(most, s.injected_energy);
-    deepest = std::min(deepest, s.proxy_pose.position.z());
-    peak_force = std::max(peak_force, s.interaction.force.z());
-  }
-  RecordProperty("max_injected_energy_J", std::to_string(most));
-  RecordProperty("final_injected_energy_J", std::to_string(samples.back().injected_energy));
-  EXPECT_LE(most, 0.0);  // at every tick, not only at the end
-  EXPECT_LE(samples.back().injected_energy, 0.0);
-  EXPECT_LT(samples.back().injected_energy, -0.1);  // it did dissipate: tens of newtons over centimetres
-  EXPECT_LT(deepest, -0.05);                        // the taps reached the floor
-  EXPECT_GT(peak_force, 10.0);
+  const validation::PassivityMeasurement m = validation::passivity_over_script(gains);
+  ASSERT_EQ(m.ticks, 5001u);
+  RecordProperty("max_injected_energy_J", std::to_string(m.max_injected));
+  RecordProperty("final_injected_energy_J", std::to_string(m.final_injected));
+  EXPECT_LE(m.max_injected, 0.0);  // at every tick, not only at the end
+  EXPECT_LE(m.final_injected, 0.0);
+  EXPECT_LT(m.final_injected, -0.1);  // it did dissipate: tens of newtons over centimetres
+  EXPECT_LT(m.deepest, -0.05);        // the taps reached the floor
+  EXPECT_GT(m.peak_force, 10.0);
 }
 
 TEST(CouplingPassivity, GainsBeyondTheBoundAreReportedAndInjectEnergy) {
@@ -83,13 +50,11 @@ TEST(CouplingPassivity, GainsBeyondTheBoundAreReportedAndInjectEnergy) {
                                                              ::testing::HasSubstr("translational coupling"),
                                                              ::testing::HasSubstr("K h^2 + 2 B h < 4 m"))));
 
-  RigidBodyDouble body = proxy_over_floor();
   // Stop at 1 J: a passive coupling never gets above 0, and the growth is exponential.
-  const auto samples = run_session(config, body, kMass, kInertia, kDt, 5.0,
-                                   [](const HapticSample& s) { return s.injected_energy > 1.0; });
-  RecordProperty("time_to_1J_s", std::to_string(samples.back().time));
-  EXPECT_GT(samples.back().injected_energy, 1.0);
-  EXPECT_LT(samples.back().time, 1.0);  // within the first second
+  const validation::PassivityMeasurement m = validation::passivity_over_script(gains, 1.0);
+  RecordProperty("time_to_1J_s", std::to_string(m.end_time));
+  EXPECT_GT(m.final_injected, 1.0);
+  EXPECT_LT(m.end_time, 1.0);  // within the first second
 }
 
 TEST(CouplingStabilityCheck, NamesEachViolatedBound) {

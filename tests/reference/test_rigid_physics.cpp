@@ -1,5 +1,7 @@
 // Rigid-body physics of the reference backend against mechanics: a body at rest on the ground
 // stays at rest, and a torque-free body keeps its angular momentum and energy while it tumbles.
+#include "framework/backends.hpp"
+#include "physics/torque_free_spin/torque_free_spin.hpp"
 #include "scene_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -56,29 +58,14 @@ TEST(RigidPhysics, BoxRestingOnTheGroundStaysPut) {
 // asserts that the body flipped: its angular velocity in body axes, along +y at the start, must
 // swing by more than 90 degrees, so a body that never tumbled cannot pass.
 TEST(RigidPhysics, TorqueFreeTumblingKeepsAngularMomentumAndEnergy) {
-  nlohmann::json doc = scene_document(0.01, 2.5e-4, 1.0, vec(0, 0, 0));
-  doc["materials"]["contact"] = {{"rest_density", 1000.0}, {"pressure_stiffness", 100.0}, {"viscosity", 0.0}};
-  doc["bodies"]["box"] = {{"kind", "rigid"}, {"material", "contact"}, {"density", 700.0},
-                          {"shape", {{"type", "box"}, {"size", vec(0.12, 0.06, 0.03)}}},
-                          {"angular_velocity", vec(0.8, 5.0, 0.6)}};
-  auto sim = make_reference(doc);
-  const BodyState start = sim.rigid_body_state(0);
-  const auto body_axes = [](const BodyState& s) { return (s.orientation.conjugate() * s.angular_velocity).normalized(); };
-  const double energy_start = 0.5 * start.angular_velocity.dot(start.angular_momentum);
-  double largest_turn = 0.0;
-  double worst_energy = 0.0;
-  for (int k = 0; k < 80; ++k) {
-    run_steps(sim, 100);
-    const BodyState s = sim.rigid_body_state(0);
-    EXPECT_LT((s.angular_momentum - start.angular_momentum).norm(), 1e-12 * start.angular_momentum.norm());
-    const double energy = 0.5 * s.angular_velocity.dot(s.angular_momentum);
-    worst_energy = std::max(worst_energy, std::abs(energy - energy_start) / energy_start);
-    largest_turn = std::max(largest_turn, std::acos(std::clamp(body_axes(s).dot(body_axes(start)), -1.0, 1.0)));
-  }
-  std::cout << "energy drift " << worst_energy << ", body-axis omega turned " << largest_turn * 180.0 / std::numbers::pi << " deg\n";
-  EXPECT_LT(worst_energy, 5e-3);
-  EXPECT_GT(largest_turn * 180.0 / std::numbers::pi, 90.0);
-  EXPECT_LT(sim.rigid_body_state(0).linear_momentum.norm(), 1e-12);  // nothing pushed it
+  // The scene and the measurement are the physics case's (validation/physics/torque_free_spin).
+  const validation::SpinMeasurement m =
+      validation::measure_torque_free_spin("reference", validation::case_scene("physics/torque_free_spin"));
+  EXPECT_LT(m.worst_momentum_error, 1e-12);
+  std::cout << "energy drift " << m.worst_energy_drift << ", body-axis omega turned " << m.largest_turn_degrees << " deg\n";
+  EXPECT_LT(m.worst_energy_drift, 5e-3);
+  EXPECT_GT(m.largest_turn_degrees, 90.0);
+  EXPECT_LT(m.final_linear_momentum, 1e-12);  // nothing pushed it
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 // Runs a HapticsSession against the rigid-body double the way the simulation driver does
 // (before_step, step, ..., finish) and keeps every sample.
 #include "haptics/haptics_session.hpp"
-#include "rigid_body_double.hpp"
+#include "physics/coupling/rigid_body_double.hpp"
 
 #include <cmath>
 #include <functional>

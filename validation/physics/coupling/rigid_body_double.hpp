@@ -1,7 +1,7 @@
 #pragma once
-// A test double of mssph::Backend: one free rigid body (index 0) with isotropic inertia and no
-// particles, so the haptic loop can be tested in milliseconds. Under a constant wrench over a
-// step it moves exactly (x += v dt + F/(2m) dt^2; a fixed rotation axis turns by the mean angular
+// A stand-in for mssph::Backend, for the coupling cases and tests: one free rigid body (index 0)
+// with isotropic inertia and no particles, so the haptic loop can be tested in milliseconds.
+// Under a constant wrench over a step it moves exactly (x += v dt + F/(2m) dt^2; a fixed rotation axis turns by the mean angular
 // velocity). An optional penalty floor stands in for the SPH interaction forces of a contact.
 #include "haptics/pose.hpp"
 #include "sim/backend.hpp"

@@ -1,0 +1,88 @@
+// `mssph validate`: the table, report.json, validation.h5 and report.md on a tiny case; a wrong
+// expectation FAILs with exit code 1; a backend that cannot run here is SKIPPED with its reason;
+// bad arguments exit 2 and write nothing.
+#include "cli_fixture.hpp"
+#include "framework/backends.hpp"
+
+#include <gmock/gmock.h>
+
+namespace mssph::test {
+namespace {
+
+using ::testing::HasSubstr;
+
+class Validate : public Cli {};
+
+TEST_F(Validate, TinyCaseWritesTheTableAndEveryReportFile) {
+  const ProcessResult r = mssph({"validate", "--quick", "--case", "coupling_step", "--out", "report"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("suite"));
+  EXPECT_THAT(r.out, HasSubstr("tolerance"));
+  EXPECT_THAT(r.out, HasSubstr("coupling_step"));
+  EXPECT_THAT(r.out, HasSubstr("overshoot"));
+  EXPECT_THAT(r.out, HasSubstr("PASS"));
+  EXPECT_THAT(r.out, HasSubstr("cases: 1 passed, 0 failed, 0 skipped"));
+
+  const nlohmann::json report = read_json(work("report/report.json"));
+  EXPECT_EQ(report["run"]["mode"], "quick");
+  for (const char* key : {"git_commit", "date", "physics_backend", "physics_device", "physics_precision", "host_cpu"}) {
+    EXPECT_FALSE(report["run"][key].get<std::string>().empty()) << key;
+  }
+  ASSERT_EQ(report["cases"].size(), 1u);
+  EXPECT_EQ(report["cases"][0]["case"], "coupling_step");
+  EXPECT_EQ(report["cases"][0]["status"], "PASS");
+  EXPECT_EQ(report["cases"][0]["checks"].size(), 4u);
+  for (const auto& check : report["cases"][0]["checks"]) {
+    EXPECT_TRUE(check["measured"].is_number());
+    EXPECT_EQ(check["status"], "PASS");
+  }
+
+  const h5::Handle h5 = open_read_only(work("report/validation.h5"));
+  EXPECT_EQ(h5::read_string_attribute(h5.id(), "git_commit"), report["run"]["git_commit"]);
+  EXPECT_EQ(read_doubles(h5.id(), "/physics/coupling_step/translation_step/x").size(),
+            read_doubles(h5.id(), "/physics/coupling_step/translation_step/y0").size());
+  EXPECT_GT(read_doubles(h5.id(), "/physics/coupling_step/translation_step/x").size(), 1000u);
+
+  const std::string markdown = read_file(work("report/report.md"));
+  EXPECT_THAT(markdown, HasSubstr("coupling_step"));
+  EXPECT_THAT(markdown, HasSubstr(report["run"]["git_commit"].get<std::string>()));
+  EXPECT_THAT(markdown, HasSubstr("physics_coupling_step_translation_step.png"));
+  EXPECT_TRUE(std::filesystem::exists(work("report/physics_coupling_step_translation_step.png")));
+}
+
+TEST_F(Validate, WrongExpectationFailsWithExitCode1) {
+  const ProcessResult r = mssph({"validate", "--case", "wrong_expectation", "--out", "report"});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("FAIL"));
+  EXPECT_THAT(r.out, HasSubstr("cases: 0 passed, 1 failed, 0 skipped"));
+  EXPECT_EQ(read_json(work("report/report.json"))["cases"][0]["status"], "FAIL");
+}
+
+TEST_F(Validate, CudaWithoutAGpuIsSkippedWithTheReason) {
+  const std::string why = validation::why_backend_cannot_run("cuda");
+  if (why.empty()) GTEST_SKIP() << "this machine runs cuda: nothing is skipped";
+  const ProcessResult r =
+      mssph({"validate", "--backend", "cuda", "--case", "one_step", "--case", "hydrostatic", "--out", "report"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;  // skipped is not failed
+  EXPECT_THAT(r.out, HasSubstr("SKIPPED (" + why + ")"));
+  EXPECT_THAT(r.out, ::testing::Not(HasSubstr("PASS")));
+  EXPECT_THAT(r.out, HasSubstr("cases: 0 passed, 0 failed, 2 skipped"));
+  for (const auto& c : read_json(work("report/report.json"))["cases"]) EXPECT_EQ(c["status"], "SKIPPED");
+}
+
+TEST_F(Validate, BadArgumentsExit2AndWriteNothing) {
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"validate", "--suite", "everything"},
+                                               std::vector<std::string>{"validate", "--backend", "gpu"},
+                                               std::vector<std::string>{"validate", "--case", "no_such_case"},
+                                               std::vector<std::string>{"validate", "--quick", "extra"}}) {
+    const ProcessResult r = mssph(args);
+    EXPECT_EQ(r.exit_code, 2) << args.back() << "\n" << r.err;
+    EXPECT_EQ(work_entries(), std::vector<std::string>{}) << args.back();
+  }
+  const ProcessResult r = mssph({"validate", "--case", "no_such_case"});
+  EXPECT_THAT(r.err, HasSubstr("--case no_such_case: no such case"));
+  EXPECT_THAT(r.err, HasSubstr("hydrostatic"));  // the known cases are listed
+}
+
+}  // namespace
+}  // namespace mssph::test

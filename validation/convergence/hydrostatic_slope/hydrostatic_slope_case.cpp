@@ -1,0 +1,31 @@
+// Convergence case: the hydrostatic slope dP/dz at three spacings (README.md beside this file).
+#include "framework/case_functions.hpp"
+#include "framework/convergence.hpp"
+#include "physics/fluids.hpp"
+
+namespace mssph::validation {
+
+CaseResult run_hydrostatic_convergence_case(const CaseContext& context) {
+  if (!context.physics_backend_skip.empty()) {
+    CaseResult skipped;
+    skipped.checks.push_back(skipped_check("dP/dz convergence", context.physics_backend_skip));
+    return skipped;
+  }
+  const std::vector<double> spacing = context.quick ? std::vector<double>{0.05, 0.04, 0.2 / 6.0}
+                                                    : std::vector<double>{0.02, 0.2 / 14.0, 0.01};
+  const Scene base = case_scene("physics/hydrostatic");
+  std::vector<double> expected, measured;
+  for (double dx : spacing) {
+    const HydrostaticMeasurement m = measure_hydrostatic(context.physics_backend, case_scene("physics/hydrostatic",
+                                                                                            resolution_overrides(base, dx)));
+    if (m.height.size() < 2) throw std::runtime_error("dx = " + exact(dx) + ": fewer than 2 slabs to fit");
+    expected.push_back(m.expected_slope);
+    measured.push_back(m.slope);
+  }
+  // 5 %: the physics case's tolerance.
+  CaseResult result = convergence_result("dP/dz", spacing, expected, measured, 0.05, context.physics_backend);
+  result.resolution = "the physics/hydrostatic scene at three spacings, dt proportional to dx";
+  return result;
+}
+
+}  // namespace mssph::validation

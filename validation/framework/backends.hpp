@@ -1,0 +1,34 @@
+#pragma once
+// Which backends can run on this machine, and where the cases' scene files are.
+#include <string>
+
+namespace mssph::validation {
+
+// "" when the named backend can run here, else why not (no CUDA build, no GPU).
+std::string why_backend_cannot_run(const std::string& name);
+
+// The validation/ folder: $MSSPH_VALIDATION_DIR if set, else the source tree's.
+std::string validation_dir();
+
+// The absolute path of a file given relative to validation/, e.g. "physics/hydrostatic/scene.json".
+std::string validation_file(const std::string& relative);
+
+}  // namespace mssph::validation
+
+#include "config/scene.hpp"
+
+#include <vector>
+
+namespace mssph::validation {
+
+// A case's scene, validation/<folder>/scene.json, with --set overrides.
+Scene case_scene(const std::string& folder, const std::vector<std::string>& overrides = {});
+
+// --set overrides that run a scene at spacing dx with a time step scaled like dx (the acoustic
+// and elastic bounds of stability.cpp are proportional to h = 2 dx).
+std::vector<std::string> resolution_overrides(const Scene& scene, double dx);
+
+// A number as --set writes it, to full double precision.
+std::string exact(double x);
+
+}  // namespace mssph::validation

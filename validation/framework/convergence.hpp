@@ -1,0 +1,21 @@
+#pragma once
+// The result of a convergence case: a quantity measured at several spacings against its
+// expectation. Checks (tolerances stated where each case calls this):
+// - the error at the finest spacing within the physics case's tolerance;
+// - the observed order p (slope of log |error| against log dx) is positive: the error shrinks as
+//   the particles get finer. SPH at a fixed ratio h / dx is not guaranteed to converge (its
+//   kernel-sum errors do not vanish with dx, Quinlan et al. 2006), so p > 0 is the claim
+//   checked, and p itself is reported.
+// The errors at every spacing are in the series and the case's details.
+#include "framework/validation_case.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mssph::validation {
+
+CaseResult convergence_result(const std::string& quantity, const std::vector<double>& spacing,
+                              const std::vector<double>& expected, const std::vector<double>& measured,
+                              double finest_tolerance, const std::string& backend);
+
+}  // namespace mssph::validation

@@ -1,0 +1,27 @@
+// Physics case: cantilever tip deflection against Euler-Bernoulli (README.md beside this file).
+#include "cantilever.hpp"
+#include "framework/case_functions.hpp"
+
+namespace mssph::validation {
+
+CaseResult run_cantilever_case(const CaseContext& context) {
+  CaseResult result;
+  if (!context.physics_backend_skip.empty()) {
+    result.checks.push_back(skipped_check("tip deflection", context.physics_backend_skip));
+    return result;
+  }
+  const double dx = context.quick ? 0.01 : 0.005;  // 4 (the unit test's) or 8 particles across
+  for (const bool correction : {false, true}) {
+    const CantileverMeasurement m = measure_cantilever(context.physics_backend, dx, correction);
+    const std::string label = correction ? "with gradient correction" : "uncorrected";
+    result.checks.push_back(relative_check("tip deflection, " + label, "m", m.euler_bernoulli, m.tip, 0.15));
+    result.resolution = "dx = " + exact(dx) + " m, h = 2 dx, " + std::to_string(m.particles) + " particles, " +
+                        std::to_string(m.steps) + " steps";
+    result.series.push_back({std::string("deflection_") + (correction ? "corrected" : "uncorrected"), "x along the beam [m]", m.x,
+                             {{"measured sag w(x) [m]", m.deflection}, {"Euler-Bernoulli w(x) [m]", m.expected}}});
+  }
+  for (Check& c : result.checks) c.backend = context.physics_backend;
+  return result;
+}
+
+}  // namespace mssph::validation

@@ -1,0 +1,44 @@
+#pragma once
+// Fluid statics measured on any backend: the hydrostatic pressure of a settled column and the
+// floating depth of a light sphere. Shared by the physics and convergence cases and
+// tests/reference/test_fluid_physics.cpp.
+#include "config/scene.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mssph::validation {
+
+// The scene's fluid body "column" in a tank whose floor is at z = 0 settles for 1 s; then over
+// 0.5 s, every 0.01 s, particle pressures are averaged per horizontal slab one spacing thick
+// (slab k holds the layer centred at z = (k + 1/2) dx), over slabs at least two smoothing lengths
+// below the free surface (where the kernel support is full). A line fitted through them gives
+// dP/dz and the floor pressure P(0).
+struct HydrostaticMeasurement {
+  double slope = 0.0;            // dP/dz of the fit [Pa/m]
+  double floor_pressure = 0.0;   // the fit at z = 0 [Pa]
+  double expected_slope = 0.0;   // -rho0 |g| [Pa/m]
+  double weight_per_area = 0.0;  // the column's weight over the floor area, M |g| / A [Pa]
+  double max_speed = 0.0;        // the column's fastest particle at the end [m/s]
+  double sound_speed = 0.0;      // sqrt(k) [m/s]
+  std::vector<double> height, pressure;  // the slabs used [m], [Pa]
+  std::size_t particles = 0;
+};
+HydrostaticMeasurement measure_hydrostatic(const std::string& backend, const Scene& scene);
+
+// The scene's rigid "ball" floating in its fluid "water" for the scene's duration. The depth of
+// its lowest point below the free surface against Archimedes: the spherical cap of volume
+// M / rho_water, pi d^2 (3 R - d) / 3 = M / rho_water, with R the radius of the sphere as
+// sampled (N particles of volume dx^3). The free surface is the top particle layer's mean
+// height plus half a spacing, away from the sphere's meniscus.
+struct FloatingMeasurement {
+  double depth = 0.0;           // at the end [m]
+  double expected_depth = 0.0;  // [m]
+  double vertical_speed = 0.0;  // |v_z| of the ball at the end [m/s]
+  double radius = 0.0;          // of the sampled sphere [m]
+  std::vector<double> time, depth_history;  // every 0.01 s [s], [m]
+  std::size_t particles = 0;
+};
+FloatingMeasurement measure_floating(const std::string& backend, const Scene& scene);
+
+}  // namespace mssph::validation
