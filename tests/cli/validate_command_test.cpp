@@ -38,7 +38,7 @@ TEST_F(Validate, TinyCaseWritesTheTableAndEveryReportFile) {
   }
 
   const h5::Handle h5 = open_read_only(work("report/validation.h5"));
-  EXPECT_EQ(h5::read_string_attribute(h5.id(), "git_commit"), report["run"]["git_commit"]);
+  EXPECT_EQ(h5::read_string_attribute(h5.id(), "git_commit"), report["run"]["git_commit"].get<std::string>());
   EXPECT_EQ(read_doubles(h5.id(), "/physics/coupling_step/translation_step/x").size(),
             read_doubles(h5.id(), "/physics/coupling_step/translation_step/y0").size());
   EXPECT_GT(read_doubles(h5.id(), "/physics/coupling_step/translation_step/x").size(), 1000u);
