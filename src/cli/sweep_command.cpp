@@ -67,6 +67,12 @@ std::vector<std::string> known_metrics() {
   for (std::string line; std::getline(lines, line);) {
     if (!line.empty()) names.push_back(line);
   }
+  // An interpreter that runs nothing (MSSPH_PYTHON=/bin/true) must not pass for a script that
+  // defines no metric: the summary would silently have none.
+  if (names.empty()) {
+    throw std::runtime_error("cannot list the metrics: " + python_interpreter() + " " +
+                             python_script_path(kMetricsScript) + " --list printed none");
+  }
   return names;
 }
 
