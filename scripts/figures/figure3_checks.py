@@ -73,16 +73,18 @@ def archimedes_depth(radius, density_ratio):
 
 
 def free_surface(log, centre_xy, radius):
-    """Height of the fluid's free surface away from the sphere [m]: the mean height of the top
-    particle layer beyond the sphere's meniscus (more than R + 2 dx from its axis), plus half a
-    spacing, since each particle stands for a cell of side dx. From the last snapshot."""
+    """Height of the fluid's free surface away from the sphere [m], from the last snapshot: the
+    particles beyond the sphere's meniscus (more than R + 2 dx from its axis) in columns of side
+    dx, the median of the columns' top particles plus half a spacing (each particle stands for a
+    cell of side dx). The median ignores a splashed droplet above the surface."""
     x = log.last_particles["block"]
-    top = x[:, 2].max()
     away = np.hypot(x[:, 0] - centre_xy[0], x[:, 1] - centre_xy[1]) > radius + 2.0 * log.spacing
-    layer = away & (x[:, 2] > top - 0.5 * log.spacing)
-    if not layer.any():
+    if not away.any():
         return None
-    return x[layer, 2].mean() + 0.5 * log.spacing
+    tops = {}
+    for column, height in zip(map(tuple, np.floor(x[away, :2] / log.spacing).astype(int)), x[away, 2]):
+        tops[column] = max(tops.get(column, -np.inf), height)
+    return float(np.median(list(tops.values()))) + 0.5 * log.spacing
 
 
 def hertz_indentation(load, radius, young_modulus, poisson_ratio):

@@ -11,8 +11,8 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "scripts", "figures"))
 
 from drop_log import DropLog  # noqa: E402
-from figure3_checks import (archimedes_depth, deformable_checks, fluid_checks, hertz_indentation,  # noqa: E402
-                            rigid_checks, sampled_radius)
+from figure3_checks import (archimedes_depth, deformable_checks, fluid_checks, free_surface,  # noqa: E402
+                            hertz_indentation, rigid_checks, sampled_radius)
 
 DT = 1e-3
 RADIUS = 0.2
@@ -121,6 +121,14 @@ class FluidChecks(unittest.TestCase):
         for name in ("penetration below the initial surface", "rise after the deepest point", "floating depth",
                      "settled support / weight"):
             self.assertTrue(checks[name]["passed"], checks[name])
+
+    def test_a_splashed_droplet_does_not_move_the_surface(self):
+        radius = 0.1949594845
+        surface = 0.24
+        log = self.with_surface(self.floating(surface - archimedes_depth(radius, 0.5) + radius, 0.0), surface)
+        droplet = np.array([[0.23, 0.23, surface + 0.3]])
+        log.last_particles["block"] = np.vstack([log.last_particles["block"], droplet])
+        self.assertAlmostEqual(free_surface(log, (0.0, 0.0), radius), surface, places=12)
 
     def test_a_sinking_sphere_fails(self):
         t = np.arange(0.0, 3.0, DT)
