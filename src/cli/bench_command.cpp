@@ -6,6 +6,7 @@
 #include "bench/comparison_format.hpp"
 #include "benchmark_suite.hpp"
 #include "commands.hpp"
+#include "guarded.hpp"
 #include "output_path.hpp"
 #include "step_delay.hpp"
 #include "util/errors.hpp"
@@ -123,19 +124,6 @@ int run_compare(const CompareArgs& a) {
   return report.failed() ? kExitOther : kExitOk;
 }
 
-// Runs `body`, mapping its failures to exit codes as `mssph run` does.
-template <typename Body>
-void guarded(int& exit_code, Body body) {
-  try {
-    exit_code = body();
-  } catch (const InputError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    exit_code = kExitBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    exit_code = kExitOther;
-  }
-}
 
 void add_compare_command(CLI::App& bench, int& exit_code) {
   auto args = std::make_shared<CompareArgs>();

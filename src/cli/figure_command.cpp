@@ -2,6 +2,7 @@
 #include "backend_factory.hpp"
 #include "commands.hpp"
 #include "figure_command.hpp"
+#include "guarded.hpp"
 #include "util/errors.hpp"
 
 #include <iostream>
@@ -10,20 +11,6 @@ namespace mssph::cli {
 namespace {
 
 const char* kBackendHelp = "reference, cpu, cuda or auto (cuda when a GPU is present, else cpu)";
-
-// Runs a figure's callback, mapping bad input to exit code 2 as `mssph run` does.
-template <class Make>
-void run_reporting_errors(int& exit_code, Make make) {
-  try {
-    exit_code = make();
-  } catch (const InputError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    exit_code = kExitBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    exit_code = kExitOther;
-  }
-}
 
 
 void add_figure2(CLI::App& figure, int& exit_code, const std::string& command_line) {
@@ -60,7 +47,7 @@ void add_figure2(CLI::App& figure, int& exit_code, const std::string& command_li
       "the median per-step time with its min and max. Redraw with: python3 scripts/figures/figure2.py\n"
       "DIR/figure2.h5 --out DIR.");
   cmd->callback([o, &exit_code, command_line] {
-    run_reporting_errors(exit_code, [&] { return make_figure2(*o, command_line); });
+    guarded(exit_code, [&] { return make_figure2(*o, command_line); });
   });
 }
 
@@ -95,7 +82,7 @@ void add_figure3(CLI::App& figure, int& exit_code) {
       "\n"
       "Exit codes: 0 all checks pass; 1 a check failed or a run did not complete; 2 bad input;\n"
       "3 a run blew up.");
-  cmd->callback([o, &exit_code] { run_reporting_errors(exit_code, [&] { return make_figure3(*o); }); });
+  cmd->callback([o, &exit_code] { guarded(exit_code, [&] { return make_figure3(*o); }); });
 }
 
 void add_figure_tss(CLI::App& figure, int& exit_code) {
@@ -120,7 +107,7 @@ void add_figure_tss(CLI::App& figure, int& exit_code) {
       "\n"
       "Exit codes: 0 all checks pass; 1 a check failed or the run did not complete; 2 bad input;\n"
       "3 the run blew up.");
-  cmd->callback([o, &exit_code] { run_reporting_errors(exit_code, [&] { return make_figure_tss(*o); }); });
+  cmd->callback([o, &exit_code] { guarded(exit_code, [&] { return make_figure_tss(*o); }); });
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // `mssph run SCENE.json`: simulate a scene and log it to HDF5.
 #include "backend_factory.hpp"
 #include "commands.hpp"
+#include "guarded.hpp"
 #include "output_path.hpp"
 #include "scene_run.hpp"
 #include "util/errors.hpp"
@@ -77,15 +78,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "...\"; 130, 143, 129 interrupted by SIGINT, SIGTERM, SIGHUP: <file>.partial is kept, marked\n"
       "\"interrupted: ...\".");
   cmd->callback([args, &exit_code] {
-    try {
-      exit_code = run_scene(*args).exit_code;
-    } catch (const InputError& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      exit_code = kExitBadInput;
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      exit_code = kExitOther;
-    }
+    guarded(exit_code, [&] { return run_scene(*args).exit_code; });
   });
 }
 

@@ -2,6 +2,7 @@
 // locally (--jobs, --gpus), as one shard of several (--shard, Slurm arrays) or through Slurm
 // (--emit-slurm); `mssph sweep merge DIR` and `mssph sweep plot DIR` summarise and plot.
 #include "commands.hpp"
+#include "guarded.hpp"
 #include "python_script.hpp"
 #include "sweep/point_runner.hpp"
 #include "sweep/point_status.hpp"
@@ -278,19 +279,6 @@ int run_sweep(const SweepArgs& args) {
   return final_counts.failed > 0 ? kExitSimulationFailure : kExitOk;
 }
 
-// Runs `body`, turning its exceptions into the exit codes `mssph --help` documents.
-template <typename Body>
-void guarded(int& exit_code, Body body) {
-  try {
-    exit_code = body();
-  } catch (const InputError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    exit_code = kExitBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    exit_code = kExitOther;
-  }
-}
 
 int run_script_on_directory(const char* script, const std::string& directory, std::vector<std::string> extra) {
   if (!fs::is_regular_file(fs::path(directory) / kManifestName)) {

@@ -2,6 +2,7 @@
 // validation.h5 and report.md with plots.
 #include "backend_factory.hpp"
 #include "commands.hpp"
+#include "guarded.hpp"
 #include "framework/backends.hpp"
 #include "framework/report.hpp"
 #include "python_script.hpp"
@@ -180,15 +181,7 @@ void add_validate_command(CLI::App& app, int& exit_code) {
       "Exit codes: 0 every case passed or was skipped; 1 a case failed (or the report could not be\n"
       "written); 2 bad arguments.");
   cmd->callback([args, &exit_code] {
-    try {
-      exit_code = run_validate(*args);
-    } catch (const InputError& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      exit_code = kExitBadInput;
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      exit_code = kExitOther;
-    }
+    guarded(exit_code, [&] { return run_validate(*args); });
   });
 }
 
