@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <stdexcept>
 
@@ -99,23 +100,28 @@ FloatingMeasurement measure_floating(const std::string& backend_name, const Scen
 
   std::unique_ptr<Backend> backend = make_backend(backend_name, setup);
   const auto depth_now = [&] {
-    // Free surface away from the sphere: the top particle layer's mean height plus half a
-    // spacing (each particle stands for a cell of side dx), beyond the sphere's meniscus.
+    // Free surface away from the sphere: beyond its meniscus (R + 2 dx from its axis), the top
+    // particle of each column of side dx; the median over the columns plus half a spacing (each
+    // particle stands for a cell of side dx). The median ignores a droplet the sphere splashed up,
+    // which as the highest particle would otherwise define the top layer.
     const ParticleSnapshot snapshot = backend->snapshot();
-    const auto z = [&](std::size_t i) { return double(snapshot.position[3 * i + 2]); };
-    const auto horizontal = [&](std::size_t i) { return std::hypot(double(snapshot.position[3 * i]), double(snapshot.position[3 * i + 1])); };
-    double top = -1e9;
-    for (std::size_t i = water.first; i < water.first + water.count; ++i) top = std::max(top, z(i));
-    double sum = 0.0;
-    int count = 0;
+    std::map<std::pair<long, long>, double> column_tops;
     for (std::size_t i = water.first; i < water.first + water.count; ++i) {
-      if (z(i) > top - 0.5 * dx && horizontal(i) > m.radius + 2.0 * dx) {
-        sum += z(i);
-        ++count;
-      }
+      const double x = snapshot.position[3 * i];
+      const double y = snapshot.position[3 * i + 1];
+      if (std::hypot(x, y) <= m.radius + 2.0 * dx) continue;
+      const std::pair<long, long> column{std::lround(std::floor(x / dx)), std::lround(std::floor(y / dx))};
+      const double z = snapshot.position[3 * i + 2];
+      const auto [it, inserted] = column_tops.emplace(column, z);
+      if (!inserted) it->second = std::max(it->second, z);
     }
-    if (count == 0) throw std::runtime_error(scene.source_file + ": no free surface beyond the sphere's meniscus");
-    const double surface = sum / count + 0.5 * dx;
+    if (column_tops.empty()) throw std::runtime_error(scene.source_file + ": no free surface beyond the sphere's meniscus");
+    std::vector<double> tops;
+    for (const auto& [column, z] : column_tops) tops.push_back(z);
+    std::sort(tops.begin(), tops.end());
+    const std::size_t n = tops.size();
+    const double median = n % 2 ? tops[n / 2] : 0.5 * (tops[n / 2 - 1] + tops[n / 2]);
+    const double surface = median + 0.5 * dx;
     return surface - (backend->rigid_body_state(ball).centre_of_mass.z() - m.radius);
   };
   const std::size_t sample_steps = steps_for(0.01, setup.dt);

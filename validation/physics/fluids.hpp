@@ -29,8 +29,8 @@ HydrostaticMeasurement measure_hydrostatic(const std::string& backend, const Sce
 // The scene's rigid "ball" floating in its fluid "water" for the scene's duration. The depth of
 // its lowest point below the free surface against Archimedes: the spherical cap of volume
 // M / rho_water, pi d^2 (3 R - d) / 3 = M / rho_water, with R the radius of the sphere as
-// sampled (N particles of volume dx^3). The free surface is the top particle layer's mean
-// height plus half a spacing, away from the sphere's meniscus.
+// sampled (N particles of volume dx^3). The free surface, away from the sphere's meniscus, is the
+// median of the particle columns' tops plus half a spacing.
 struct FloatingMeasurement {
   double depth = 0.0;           // at the end [m]
   double expected_depth = 0.0;  // [m]
