@@ -7,7 +7,6 @@ is missing, incomplete or not a sphere drop.
 usage: figure3.py --out DIR [--resolution NAME] LOG.h5 [LOG.h5 ...]
 """
 import argparse
-import json
 import os
 import sys
 
@@ -15,7 +14,7 @@ import numpy as np
 
 from drop_log import DropLog
 from figure3_checks import deformable_checks, fluid_checks, rigid_checks
-from figure_common import plt, save, stamp
+from figure_common import finish_checks, plt, save, stamp
 
 LINE_STYLES = {"rigid": "--", "deformable": "-", "fluid": ":"}
 MEDIA = ("rigid", "deformable", "fluid")
@@ -99,14 +98,8 @@ def main():
         "logs": {medium: os.path.abspath(d.path) for medium, d in drops.items()},
         "context": next(iter(drops.values())).context,
         "checks": checks,
-        "passed": all(c["passed"] for c in checks),
     }
-    checks_path = os.path.join(args.out, "figure3_checks.json")
-    with open(checks_path, "w") as out:
-        json.dump(report, out, indent=2)
-    failed = sum(not c["passed"] for c in checks)
-    print(f"figure 3: {len(checks) - failed} passed, {failed} failed; wrote {', '.join(written + [checks_path])}")
-    sys.exit(1 if failed else 0)
+    finish_checks(report, args.out, "figure3_checks", "figure 3", written)
 
 
 if __name__ == "__main__":

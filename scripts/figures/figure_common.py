@@ -1,6 +1,8 @@
 """What every mssph figure shares: reading a file's provenance, stamping it on the figure, saving
 PNG and SVG. Figures read only mssph's HDF5 files, so they can be restyled and redrawn at will."""
+import json
 import os
+import sys
 
 import matplotlib
 
@@ -41,3 +43,16 @@ def save(figure, folder, name):
         figure.savefig(path, dpi=150)
     plt.close(figure)
     return paths
+
+
+def finish_checks(report, folder, name, label, written):
+    """Writes the checks' report to folder/name.json (with its overall "passed"), prints how many
+    passed and what was written, and exits 1 when a check failed, else 0."""
+    checks = report["checks"]
+    report["passed"] = all(c["passed"] for c in checks)
+    checks_path = os.path.join(folder, name + ".json")
+    with open(checks_path, "w") as out:
+        json.dump(report, out, indent=2)
+    failed = sum(not c["passed"] for c in checks)
+    print(f"{label}: {len(checks) - failed} passed, {failed} failed; wrote {', '.join(written + [checks_path])}")
+    sys.exit(1 if failed else 0)

@@ -15,7 +15,7 @@ import sys
 import h5py
 import numpy as np
 
-from figure_common import plt, provenance, save, stamp, text_attribute
+from figure_common import finish_checks, plt, provenance, save, stamp, text_attribute
 
 # A contact episode: the proxy's interaction force above this; episodes closer than MERGE_GAP
 # seconds are one (a tap's bounce, a stir's passing lulls).
@@ -187,13 +187,8 @@ def main():
               "phases": [{"start": s, "end": e, "body": b, "kind": run["bodies"][b]["kind"]} for s, e, b in phases],
               "saturation_ratio": {"force": float(saturation[0]), "torque": float(saturation[1]),
                                    "workspace": float(saturation[2])},
-              "checks": checks, "passed": all(c["passed"] for c in checks)}
-    checks_path = os.path.join(args.out, "tss_checks.json")
-    with open(checks_path, "w") as out:
-        json.dump(report, out, indent=2)
-    failed = sum(not c["passed"] for c in checks)
-    print(f"figure tss: {len(checks) - failed} passed, {failed} failed; wrote {', '.join(written + [checks_path])}")
-    sys.exit(1 if failed else 0)
+              "checks": checks}
+    finish_checks(report, args.out, "tss_checks", "figure tss", written)
 
 
 if __name__ == "__main__":
