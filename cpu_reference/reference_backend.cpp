@@ -8,28 +8,13 @@
 #include "rigid_body_dynamics.hpp"
 #include "zero_energy_control.hpp"
 #include "util/host_info.hpp"
+#include "util/phase_timer.hpp"
 
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
 
 namespace mssph::reference {
-namespace {
-
-class PhaseTimer {
- public:
-  explicit PhaseTimer(double& seconds) : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
-  ~PhaseTimer() { seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
-  PhaseTimer(const PhaseTimer&) = delete;
-  PhaseTimer& operator=(const PhaseTimer&) = delete;
-
- private:
-  double& seconds_;
-  std::chrono::steady_clock::time_point start_;
-};
-
-}  // namespace
-
 ReferenceBackend::ReferenceBackend(ParticleSetup setup)
     : setup_(std::move(setup)), deformable_rest_(build_deformable_rest_state(setup_)) {
   particles_.resize(setup_.size());
@@ -68,7 +53,7 @@ void ReferenceBackend::compute_forces() {
     compute_rotations(setup_, deformable_rest_, particles_.position, deformables_);
   }
   {
-    PhaseTimer timer(phase_seconds_[kDensity]);
+    PhaseTimer timer(phase_seconds_[kDensities]);
     compute_densities(setup_, neighbours_, particles_);
     compute_elastic_stresses(setup_, deformable_rest_, particles_.position, deformables_);
   }
@@ -100,7 +85,7 @@ void ReferenceBackend::add_deformable_forces() {
 // particles, rigid-body dynamics for rigid bodies.
 void ReferenceBackend::step() {
   compute_forces();
-  PhaseTimer timer(phase_seconds_[kIntegrate]);
+  PhaseTimer timer(phase_seconds_[kIntegration]);
   integrate();
   time_ += setup_.dt;
 }
@@ -228,7 +213,6 @@ ParticleSnapshot ReferenceBackend::snapshot() {
   return out;
 }
 
-std::vector<std::string> ReferenceBackend::phase_names() const { return {"neighbours", "rotations", "density", "forces", "integrate"}; }
 
 std::vector<double> ReferenceBackend::last_phase_seconds() const {
   return {phase_seconds_.begin(), phase_seconds_.end()};

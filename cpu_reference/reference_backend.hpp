@@ -24,7 +24,6 @@ class ReferenceBackend final : public Backend {
   std::vector<BodyState> body_states() override;
   BodyState rigid_body_state(std::size_t body) override;
   ParticleSnapshot snapshot() override;
-  std::vector<std::string> phase_names() const override;
   std::vector<double> last_phase_seconds() const override;
   ForceEvaluation evaluate_forces() override;
   void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) override;
@@ -45,7 +44,6 @@ class ReferenceBackend final : public Backend {
   void compute_forces();
 
  private:
-  enum Phase { kNeighbours, kRotations, kDensity, kForces, kIntegrate, kPhaseCount };
   void add_deformable_forces();
   void integrate();
   RigidBodyState* rigid_body_of(std::size_t body);

@@ -6,9 +6,10 @@
 // each body's rest density after Solenthaler and Pajarola 2008, clamped equation of state, the
 // energy-consistent form of eq. 2 with the lattice calibration 1/g).
 //
-// Each quantity is a sum over neighbours, written as an accumulator with one add_*_pair per
-// neighbour: the host visits all 27 cells in one loop, a GPU splits them among a few lanes and
-// adds the lanes' partial sums (same pair arithmetic, another summation order).
+// Each quantity is a sum over neighbours, assembled once by density_sum() and force_sum(): a lane
+// `lane` of a team of `lanes` visits every lanes-th candidate of the 27 cells. The host calls them
+// with one lane (all candidates); a GPU gives each particle a small team and adds the lanes'
+// partial sums (same pair arithmetic, another summation order).
 #include "particle_views.hpp"
 
 namespace mssph::kernels {
@@ -23,7 +24,13 @@ MSSPH_HD void add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, s
   sum.delta += v.step.kernels.spiky(norm(x_i - xyz(v.position[t])));
 }
 
-MSSPH_HD DensitySum combine(DensitySum a, DensitySum b) { return {a.delta + b.delta}; }
+// Lane `lane` of `lanes`' share of particle s's density sum.
+MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes) {
+  const Vec3 x_i = xyz(v.position[s]);
+  DensitySum sum{0.0f};
+  v.grid.for_each_candidate(x_i, lane, lanes, [&](std::uint32_t t) { add_density_pair(sum, v, x_i, t); });
+  return sum;
+}
 
 struct DensityResult {
   float density;  // rho = rho0 delta / delta0 [kg/m^3]
@@ -35,13 +42,6 @@ MSSPH_HD DensityResult density_from(const DensitySum& sum, const SortedView& v, 
   const float density = body.rest_density * sum.delta * v.step.inverse_rest_number_density;
   const float pressure = std::fmax(0.0f, body.pressure_stiffness * (density - body.rest_density));
   return {density, {body.sph_mass / density, pressure}};
-}
-
-MSSPH_HD DensityResult density_at(const SortedView& v, std::uint32_t s) {
-  const Vec3 x_i = xyz(v.position[s]);
-  DensitySum sum{0.0f};
-  v.grid.for_each_candidate(x_i, [&](std::uint32_t t) { add_density_pair(sum, v, x_i, t); });
-  return density_from(sum, v, s);
 }
 
 // ---- Step 3: pressure and viscosity forces ----
@@ -75,9 +75,6 @@ struct ForceSum {
 };
 
 MSSPH_HD ForceSum zero_force_sum() { return {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}; }
-MSSPH_HD ForceSum combine(const ForceSum& a, const ForceSum& b) {
-  return {a.pressure + b.pressure, a.viscosity + b.viscosity, a.interaction + b.interaction};
-}
 
 MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const SortedView& v, std::uint32_t t) {
   if (t == i.s) return;
@@ -102,10 +99,10 @@ MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
 // Boundary particles receive no force: they skip the sum.
 MSSPH_HD bool receives_forces(const ForceParticle& i) { return i.parameters.kind != kBoundary; }
 
-MSSPH_HD ForceSum pressure_viscosity_at(const SortedView& v, std::uint32_t s) {
-  const ForceParticle i = load_force_particle(v, s);
+// Lane `lane` of `lanes`' share of particle i's pressure and viscosity sums.
+MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, std::uint32_t lane, std::uint32_t lanes) {
   ForceSum sum = zero_force_sum();
-  if (receives_forces(i)) v.grid.for_each_candidate(i.x, [&](std::uint32_t t) { add_force_pair(sum, i, v, t); });
+  if (receives_forces(i)) v.grid.for_each_candidate(i.x, lane, lanes, [&](std::uint32_t t) { add_force_pair(sum, i, v, t); });
   return sum;
 }
 

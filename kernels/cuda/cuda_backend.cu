@@ -72,7 +72,7 @@ __global__ void cell_order_kernel(std::uint32_t n, const std::uint32_t* sorted_i
 // For comparisons: the pressure and viscosity sums of every sorted particle, not integrated.
 __global__ void force_probe_kernel(SortedView view, ForceSum* forces) {
   const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
-  if (s < view.step.particle_count) forces[s] = pressure_viscosity_at(view, s);
+  if (s < view.step.particle_count) forces[s] = force_sum(view, load_force_particle(view, s), 0, 1);
 }
 
 __global__ void rotation_stress_kernel(DeformableView view) {
@@ -105,10 +105,7 @@ __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure)
   const unsigned lane = thread % Lanes;
   const bool active = s < view.step.particle_count;
   DensitySum sum{0.0f};
-  if (active) {
-    const Vec3 x_i = xyz(view.position[s]);
-    view.grid.for_each_candidate(x_i, lane, Lanes, [&](std::uint32_t t) { add_density_pair(sum, view, x_i, t); });
-  }
+  if (active) sum = density_sum(view, s, lane, Lanes);
   sum.delta = team_sum<Lanes>(sum.delta);
   if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s).volume_pressure;
 }
@@ -120,10 +117,7 @@ __global__ void forces_kernel(SortedView view, CanonicalState state) {
   const unsigned lane = thread % Lanes;
   const bool active = s < view.step.particle_count;
   ForceSum sum = zero_force_sum();
-  if (active) {
-    const ForceParticle i = load_force_particle(view, s);
-    if (receives_forces(i)) view.grid.for_each_candidate(i.x, lane, Lanes, [&](std::uint32_t t) { add_force_pair(sum, i, view, t); });
-  }
+  if (active) sum = force_sum(view, load_force_particle(view, s), lane, Lanes);
   sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction)};
   if (active && lane == 0) apply_forces(view, state, s, sum);
 }
@@ -280,16 +274,12 @@ class CudaBackend final : public Backend {
   std::vector<BodyState> body_states() override;
   BodyState rigid_body_state(std::size_t body) override;
   ParticleSnapshot snapshot() override;
-  std::vector<std::string> phase_names() const override {
-    return {"grid", "elasticity", "density", "forces_integrate", "rigid_bodies"};
-  }
   std::vector<double> last_phase_seconds() const override;
   void synchronize() override { cuda_check(cudaStreamSynchronize(stream_), "synchronise"); }
   ForceEvaluation evaluate_forces() override;
   void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) override;
 
  private:
-  static constexpr int kPhaseCount = 5;
   void record_step(cudaStream_t stream);
   void launch_grid(cudaStream_t stream);
   void launch_elasticity(cudaStream_t stream);
@@ -656,10 +646,10 @@ std::vector<double> CudaBackend::last_phase_seconds() const {
   std::vector<double> seconds(kPhaseCount, 0.0);
   if (!stepped_) return seconds;
   cuda_check(cudaEventSynchronize(events_[kPhaseCount]), "wait for the step");
-  for (int p = 0; p < kPhaseCount; ++p) {
+  for (std::size_t p = 0; p < kPhaseCount; ++p) {
     float ms = 0.0f;
-    cuda_check(cudaEventElapsedTime(&ms, events_[static_cast<std::size_t>(p)], events_[static_cast<std::size_t>(p) + 1]), "read phase time");
-    seconds[static_cast<std::size_t>(p)] = 1e-3 * ms;
+    cuda_check(cudaEventElapsedTime(&ms, events_[p], events_[p + 1]), "read phase time");
+    seconds[p] = 1e-3 * ms;
   }
   return seconds;
 }

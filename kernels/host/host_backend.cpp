@@ -4,24 +4,11 @@
 #include "../common/fluid_physics.hpp"
 #include "util/errors.hpp"
 #include "util/host_info.hpp"
+#include "util/phase_timer.hpp"
 
-#include <chrono>
 
 namespace mssph::kernels {
 namespace {
-
-// Times one phase of the step on the host clock.
-class PhaseTimer {
- public:
-  explicit PhaseTimer(double& seconds) : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
-  ~PhaseTimer() { seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
-  PhaseTimer(const PhaseTimer&) = delete;
-  PhaseTimer& operator=(const PhaseTimer&) = delete;
-
- private:
-  double& seconds_;
-  std::chrono::steady_clock::time_point start_;
-};
 
 Vec3 to_vec3(const Eigen::Vector3d& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
@@ -108,7 +95,10 @@ void HostBackend::compute_densities() {
   const SortedView view = sorted_view();
   const std::size_t n = setup_.size();
 #pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < n; ++s) volume_pressure_[s] = density_at(view, static_cast<std::uint32_t>(s)).volume_pressure;
+  for (std::size_t s = 0; s < n; ++s) {
+    const auto t = static_cast<std::uint32_t>(s);
+    volume_pressure_[s] = density_from(density_sum(view, t, 0, 1), view, t).volume_pressure;
+  }
 }
 
 void HostBackend::compute_forces_and_integrate() {
@@ -117,7 +107,7 @@ void HostBackend::compute_forces_and_integrate() {
                              rotation_.empty() ? nullptr : elastic_force_.data(), scene_.body.data(), scene_.fixed.data()};
   const auto n = static_cast<std::uint32_t>(setup_.size());
 #pragma omp parallel for schedule(static)
-  for (std::uint32_t s = 0; s < n; ++s) apply_forces(view, state, s, pressure_viscosity_at(view, s));
+  for (std::uint32_t s = 0; s < n; ++s) apply_forces(view, state, s, force_sum(view, load_force_particle(view, s), 0, 1));
 }
 
 void HostBackend::advance_rigid_bodies() {
@@ -142,15 +132,15 @@ void HostBackend::advance_rigid_bodies() {
 // densities, forces with leap-frog integration of particles, then rigid-body dynamics.
 void HostBackend::step() {
   {
-    PhaseTimer timer(phase_seconds_[kGrid]);
+    PhaseTimer timer(phase_seconds_[kNeighbours]);
     build_grid();
   }
   {
-    PhaseTimer timer(phase_seconds_[kElasticity]);
+    PhaseTimer timer(phase_seconds_[kRotations]);
     compute_elasticity();
   }
   {
-    PhaseTimer timer(phase_seconds_[kDensity]);
+    PhaseTimer timer(phase_seconds_[kDensities]);
     compute_densities();
   }
   {
@@ -158,7 +148,7 @@ void HostBackend::step() {
     compute_forces_and_integrate();
   }
   {
-    PhaseTimer timer(phase_seconds_[kRigid]);
+    PhaseTimer timer(phase_seconds_[kIntegration]);
     advance_rigid_bodies();
   }
   time_ += setup_.dt;
@@ -181,7 +171,8 @@ ForceEvaluation HostBackend::evaluate_forces() {
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
     const std::uint32_t i = sorted_id_[s];
-    const ForceSum f = pressure_viscosity_at(view, static_cast<std::uint32_t>(s));
+    const auto t = static_cast<std::uint32_t>(s);
+    const ForceSum f = force_sum(view, load_force_particle(view, t), 0, 1);
     out.density[i] = scene_.bodies[scene_.body[i]].sph_mass / volume_pressure_[s].volume;
     out.pressure[i] = volume_pressure_[s].pressure;
     out.pressure_force[i] = to_eigen(f.pressure);
@@ -258,10 +249,6 @@ ParticleSnapshot HostBackend::snapshot() {
     out.pressure[i] = vp.pressure;
   }
   return out;
-}
-
-std::vector<std::string> HostBackend::phase_names() const {
-  return {"grid", "elasticity", "density", "forces_integrate", "rigid_bodies"};
 }
 
 std::vector<double> HostBackend::last_phase_seconds() const { return {phase_seconds_.begin(), phase_seconds_.end()}; }

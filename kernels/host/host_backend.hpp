@@ -20,13 +20,11 @@ class HostBackend final : public Backend {
   std::vector<BodyState> body_states() override;
   BodyState rigid_body_state(std::size_t body) override;
   ParticleSnapshot snapshot() override;
-  std::vector<std::string> phase_names() const override;
   std::vector<double> last_phase_seconds() const override;
   ForceEvaluation evaluate_forces() override;
   void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) override;
 
  private:
-  enum Phase { kGrid, kElasticity, kDensity, kForces, kRigid, kPhaseCount };
   void build_grid();
   void compute_elasticity();
   void compute_densities();

@@ -90,8 +90,18 @@ class Backend {
   // Blocks until queued work is done: a GPU backend returns from step() before the step has run.
   virtual void synchronize() {}
 
+  // The step's phases, the same for every backend so that `/timing/phases` compare by name:
+  // the paper's loop (3.2) after the neighbour search.
+  //   neighbours   the neighbour search (the float backends' cell grid);
+  //   rotations    step 1, R_i of deformable particles (the float backends also compute the
+  //                elastic stresses and forces here, one pass over the rest bonds each);
+  //   densities    step 2 (the reference also computes its elastic stresses here);
+  //   forces       step 3 (the float backends also advance fluid and deformable particles here:
+  //                step 4's leap-frog is fused into the force pass);
+  //   integration  step 4 (the float backends: rigid bodies only).
+  enum Phase : std::size_t { kNeighbours, kRotations, kDensities, kForces, kIntegration, kPhaseCount };
+  static std::vector<std::string> phase_names() { return {"neighbours", "rotations", "densities", "forces", "integration"}; }
   // Wall-clock seconds of each phase of the last step, in the order of phase_names().
-  virtual std::vector<std::string> phase_names() const = 0;
   virtual std::vector<double> last_phase_seconds() const = 0;
 };
 

@@ -59,8 +59,7 @@ class RigidBodyDouble final : public Backend {
     return state();
   }
   ParticleSnapshot snapshot() override { return {}; }
-  std::vector<std::string> phase_names() const override { return {"step"}; }
-  std::vector<double> last_phase_seconds() const override { return {0.0}; }
+  std::vector<double> last_phase_seconds() const override { return std::vector<double>(kPhaseCount, 0.0); }
   ForceEvaluation evaluate_forces() override { return {}; }  // no particles
   void set_particle_positions(const std::vector<Eigen::Vector3d>&) override {}
 
