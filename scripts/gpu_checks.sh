@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The checks that need a GPU, on an already built tree: the cuda backend's tests (one step and
-# many steps against the reference, repeatability), compute-sanitizer memcheck and racecheck on a
-# short run of each sphere-drop scene, and the Figure 2 step-time benchmarks as JSON.
+# many steps against the reference, repeatability), compute-sanitizer memcheck, racecheck, initcheck
+# and synccheck on a short run of every shipped scene, and the Figure 2 step-time benchmarks as JSON.
 #
 # Usage: scripts/gpu_checks.sh [BUILD_DIR] [OUT_DIR] [BENCHMARK_FILTER]
 #   BUILD_DIR         default build
@@ -39,15 +39,17 @@ stage one_step_tests "$build/tests/backends/test_one_step_agreement" --gtest_fil
 stage many_step_tests "$build/tests/backends/test_backend_agreement" --gtest_filter='*cuda*' \
   --gtest_output="xml:$out/many_step_tests.xml"
 
-# A short coarse run of every medium: the fluid scene has fluid, a rigid sphere and a container;
-# the deformable one an elastic block with fixed particles, a rigid sphere and a boundary. The
-# sphere starts 3 cm into the block's surface layer, so the interaction forces work from the start.
-short_run=(--backend cuda -q --set simulation/particle_spacing=0.04 --set simulation/duration=0.01
-  --set "bodies/sphere/position=[0,0,0.37]")
-for scene in sphere_drop_fluid sphere_drop_deformable; do
-  for tool in memcheck racecheck; do
+# compute-sanitizer's four tools on a short coarse run of every shipped scene: the three drops
+# (fluid with a container, an elastic block with fixed particles, a rigid block), the tap, squeeze
+# and stir scenes with their simulated device, and the three together. The drops start with the
+# sphere 3 cm into the block's surface layer, so the interaction forces work from the first step.
+short_run=(--backend cuda -q --set simulation/particle_spacing=0.04 --set simulation/duration=0.005)
+for scene in sphere_drop_fluid sphere_drop_deformable sphere_drop_rigid tap squeeze stir tap_squeeze_stir; do
+  placement=()
+  [[ $scene == sphere_drop_* ]] && placement=(--set "bodies/sphere/position=[0,0,0.37]")
+  for tool in memcheck racecheck initcheck synccheck; do
     stage "${tool}_${scene}" compute-sanitizer --tool "$tool" --error-exitcode 9 \
-      "$build/mssph" run "configs/$scene.json" "${short_run[@]}" --out "$out/${tool}_${scene}.h5"
+      "$build/mssph" run "configs/$scene.json" "${short_run[@]}" "${placement[@]}" --out "$out/${tool}_${scene}.h5"
     rm -f "$out/${tool}_${scene}.h5" "$out/${tool}_${scene}.h5.xdmf"
   done
 done
