@@ -2,7 +2,7 @@
 // for blocks of each medium. The reference is the oracle, not the fast path; these numbers say
 // how large a scene the validation suite can afford.
 #include "scene/block_scene.hpp"
-#include "neighbour_search.hpp"
+#include "model/neighbour_search.hpp"
 #include "reference_backend.hpp"
 #include "scene/scene_builder.hpp"
 
@@ -13,7 +13,7 @@ namespace {
 void BM_NeighbourSearch(benchmark::State& state) {
   const mssph::ParticleSetup setup = mssph::build_particles(mssph::block_scene(mssph::BodyKind::fluid, static_cast<std::size_t>(state.range(0))));
   for (auto _ : state) {
-    benchmark::DoNotOptimize(mssph::reference::find_neighbours(setup.position, setup.smoothing_length));
+    benchmark::DoNotOptimize(mssph::find_neighbours(setup.position, setup.smoothing_length));
   }
   state.counters["particles"] = static_cast<double>(setup.size());
 }

@@ -2,7 +2,7 @@
 // and the mixed scene with the coupled proxy, from 2k to 1M particles; one scene file's step;
 // and the haptic tick. Each benchmark iteration runs a batch of steps and waits for the device
 // once, so a GPU's asynchronous launches are timed as they run in a simulation.
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "benchmark_suite.hpp"
 #include "config/scene_loader.hpp"
 #include "haptics/haptics_run.hpp"

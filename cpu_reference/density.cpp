@@ -1,6 +1,6 @@
 #include "density.hpp"
 
-#include "sph_kernels.hpp"
+#include "model/smoothing_kernels.hpp"
 
 #include <algorithm>
 

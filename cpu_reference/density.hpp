@@ -1,6 +1,6 @@
 #pragma once
 // Step 2 of the loop (paper 3.2): densities and pressures.
-#include "neighbour_search.hpp"
+#include "model/neighbour_search.hpp"
 #include "particle_state.hpp"
 #include "scene/particle_setup.hpp"
 

@@ -4,12 +4,13 @@
 //
 // Conventions, fixed by the tests in tests/deformable/:
 //   X_ij = X_j - X_i (rest), x_ij = x_j - x_i (current), grad W(r) the spiky gradient of
-//   r = X_i - X_j (sph_kernels.hpp), which points from i towards j.
+//   r = X_i - X_j (model/smoothing_kernels.hpp), which points from i towards j.
 //   (grad u)_ab = du_a / dX_b, F = I + grad u, (a (x) b)_cd = a_c b_d.
 //   d_ij = V0_j L_i grad W(X_i - X_j), with L_i = I unless kernel-gradient correction is on;
 //   then sum_j X_ij (x) d_ij = I exactly.
 //   u_ji = R_i^T x_ij - X_ij, the displacement of j relative to i in i's rotated rest frame.
 #include "config/scene.hpp"
+#include "model/material_law.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -18,18 +19,6 @@
 #include <cmath>
 
 namespace mssph::reference {
-
-struct LameParameters {
-  double lambda = 0.0;  // [Pa]
-  double mu = 0.0;      // shear modulus [Pa]
-};
-
-// The rest-configuration kernel gradient d_ij = V0_j L_i grad W(X_i - X_j) [m^0]: the weight of
-// neighbour j in particle i's gradient estimate.
-inline Eigen::Vector3d rest_gradient(double rest_volume_j, const Eigen::Matrix3d& correction_i,
-                                     const Eigen::Vector3d& grad_w_rest) {
-  return rest_volume_j * (correction_i * grad_w_rest);
-}
 
 // u_ji = R_i^T x_ij - X_ij.
 inline Eigen::Vector3d rotated_displacement(const Eigen::Matrix3d& rotation_i, const Eigen::Vector3d& x_ij,

@@ -1,6 +1,6 @@
 #include "fluid_forces.hpp"
 
-#include "sph_kernels.hpp"
+#include "model/smoothing_kernels.hpp"
 
 namespace mssph::reference {
 namespace {

@@ -2,7 +2,7 @@
 // Step 3 of the loop (paper 3.2), pressure and viscosity: inside fluids (paper eq. 2, 3) and
 // between particles of different bodies of any kind (paper eq. 7, the whole coupling between
 // media).
-#include "neighbour_search.hpp"
+#include "model/neighbour_search.hpp"
 #include "particle_state.hpp"
 #include "scene/particle_setup.hpp"
 

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace mssph::reference {
 ReferenceBackend::ReferenceBackend(ParticleSetup setup)
@@ -35,34 +36,32 @@ RigidBodyState* ReferenceBackend::rigid_body_of(std::size_t body) {
   return nullptr;
 }
 
-void ReferenceBackend::set_external_wrench(std::size_t body, const Eigen::Vector3d& force,
-                                           const Eigen::Vector3d& torque) {
+RigidBodyState& ReferenceBackend::movable_rigid_body(std::size_t body) {
   RigidBodyState* rigid = rigid_body_of(body);
-  if (!rigid) throw std::invalid_argument("external wrench on a body that is not a movable rigid body");
-  rigid->external_force = force;
-  rigid->external_torque = torque;
+  if (!rigid) throw std::invalid_argument("body " + std::to_string(body) + " is not a movable rigid body");
+  return *rigid;
 }
 
+void ReferenceBackend::set_external_wrench(std::size_t body, const Eigen::Vector3d& force,
+                                           const Eigen::Vector3d& torque) {
+  RigidBodyState& rigid = movable_rigid_body(body);
+  rigid.external_force = force;
+  rigid.external_torque = torque;
+}
+
+// The neighbour search and steps 1-3 of paper 3.2, one phase per line with the shared phase names.
 void ReferenceBackend::compute_forces() {
-  {
-    PhaseTimer timer(phase_seconds_[kNeighbours]);
-    neighbours_ = find_neighbours(particles_.position, setup_.smoothing_length);
-  }
-  {
-    PhaseTimer timer(phase_seconds_[kRotations]);
-    compute_rotations(setup_, deformable_rest_, particles_.position, deformables_);
-  }
-  {
-    PhaseTimer timer(phase_seconds_[kDensities]);
+  timed(phase_seconds_[kNeighbours], [&] { neighbours_ = find_neighbours(particles_.position, setup_.smoothing_length); });
+  timed(phase_seconds_[kRotations], [&] { compute_rotations(setup_, deformable_rest_, particles_.position, deformables_); });
+  timed(phase_seconds_[kDensities], [&] {
     compute_densities(setup_, neighbours_, particles_);
     compute_elastic_stresses(setup_, deformable_rest_, particles_.position, deformables_);
-  }
-  {
-    PhaseTimer timer(phase_seconds_[kForces]);
+  });
+  timed(phase_seconds_[kForces], [&] {
     compute_pressure_viscosity_forces(setup_, neighbours_, particles_);
     add_deformable_forces();
     for (RigidBodyState& body : rigid_bodies_) sum_interaction_wrench(setup_, particles_, body);
-  }
+  });
 }
 
 // The internal forces of deformable bodies: elasticity (eq. 5, 6) and, where configured,
@@ -84,9 +83,8 @@ void ReferenceBackend::add_deformable_forces() {
 // (3) internal and interaction forces, (4) integration: leap-frog for fluid and deformable
 // particles, rigid-body dynamics for rigid bodies.
 void ReferenceBackend::step() {
-  compute_forces();
-  PhaseTimer timer(phase_seconds_[kIntegration]);
-  integrate();
+  compute_forces();                                                // neighbours, steps 1-3
+  timed(phase_seconds_[kIntegration], [&] { integrate(); });  // step 4
   time_ += setup_.dt;
 }
 
@@ -140,8 +138,7 @@ void ReferenceBackend::set_particle_positions(const std::vector<Eigen::Vector3d>
 }
 
 BodyState ReferenceBackend::rigid_body_state(std::size_t body) {
-  const RigidBodyState* rigid = rigid_body_of(body);
-  if (!rigid) throw std::invalid_argument("body " + std::to_string(body) + " is not a movable rigid body");
+  const RigidBodyState* rigid = &movable_rigid_body(body);
   BodyState s;
   s.mass = rigid->mass;
   s.centre_of_mass = rigid->position;

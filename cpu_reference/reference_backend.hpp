@@ -1,9 +1,9 @@
 #pragma once
 // The double-precision reference backend: the oracle every other backend is checked against.
 // step() is the paper's four-step loop (section 3.2), written for reading.
-#include "deformable_body.hpp"
+#include "model/deformable_rest_state.hpp"
 #include "deformable_state.hpp"
-#include "neighbour_search.hpp"
+#include "model/neighbour_search.hpp"
 #include "particle_state.hpp"
 #include "sim/backend.hpp"
 
@@ -46,7 +46,8 @@ class ReferenceBackend final : public Backend {
  private:
   void add_deformable_forces();
   void integrate();
-  RigidBodyState* rigid_body_of(std::size_t body);
+  RigidBodyState* rigid_body_of(std::size_t body);       // nullptr unless `body` moves as a rigid body
+  RigidBodyState& movable_rigid_body(std::size_t body);  // throws std::invalid_argument unless it does
 
   ParticleSetup setup_;
   ParticleState particles_;

@@ -5,7 +5,7 @@
 // displaced in opposite directions on a lattice): they change no grad u_i, cost no strain
 // energy and grow unresisted. The control adds a pair force that pulls each pair towards the
 // position its particles' deformation gradients predict. Off when zero_energy_stiffness = 0.
-#include "deformable_body.hpp"
+#include "model/deformable_rest_state.hpp"
 #include "deformable_state.hpp"
 #include "scene/particle_setup.hpp"
 

@@ -34,9 +34,9 @@ nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm --format=c
 cat "$out/device.csv"
 "$build/mssph" info | tee "$out/mssph_info.txt"
 
-stage one_step_tests "$build/tests/backends/test_one_step_agreement" --gtest_filter='*cuda*' \
+stage one_step_tests "$build/tests/backends/one_step_agreement_test" --gtest_filter='*cuda*' \
   --gtest_output="xml:$out/one_step_tests.xml"
-stage many_step_tests "$build/tests/backends/test_backend_agreement" --gtest_filter='*cuda*' \
+stage many_step_tests "$build/tests/backends/backend_agreement_test" --gtest_filter='*cuda*' \
   --gtest_output="xml:$out/many_step_tests.xml"
 
 # compute-sanitizer's four tools on a short coarse run of every shipped scene: the three drops

@@ -1,7 +1,7 @@
 #include "float_scene.hpp"
 
-#include "deformable_body.hpp"
-#include "sim/stability.hpp"
+#include "eigen_conversion.hpp"
+#include "model/deformable_rest_state.hpp"
 #include "util/errors.hpp"
 
 #include <algorithm>
@@ -12,9 +12,6 @@
 namespace mssph::kernels {
 namespace {
 
-Vec3 to_vec3(const Eigen::Vector3d& v) {
-  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
-}
 Vec4 to_vec4(const Eigen::Vector3d& v) { return make_vec4(to_vec3(v), 0.0f); }
 
 BodyKindCode kind_code(BodyKind kind) {
@@ -29,13 +26,26 @@ BodyKindCode kind_code(BodyKind kind) {
 
 Eigen::Vector3d to_eigen(const double v[3]) { return {v[0], v[1], v[2]}; }
 
-// The rest bonds, volumes and corrections of deformable bodies, computed once in double by the
-// reference's rest-state builder, so every backend starts from the same rest configuration.
+// The SPH mass m_i of a body's particles, as the scene builder set it (the float backends keep
+// one per body): throws if the body's particles differ.
+double body_particle_mass(const ParticleSetup& setup, const BodySetup& body) {
+  if (body.count == 0) return 0.0;
+  const double m = setup.mass[body.first];
+  for (std::size_t i = body.first; i < body.first + body.count; ++i) {
+    if (setup.mass[i] != m) {
+      throw InputError("body \"" + body.name + "\": particles of different SPH masses; the float backends keep one per body");
+    }
+  }
+  return m;
+}
+
+// The rest bonds, volumes, corrections and Lame parameters of deformable bodies, computed once in
+// double by the model's rest-state builder, so every backend starts from the same rest configuration.
 void add_deformable_bodies(const ParticleSetup& setup, FloatScene& scene) {
   bool any = false;
   for (const BodySetup& b : setup.bodies) any = any || b.kind == BodyKind::deformable;
   if (!any) return;
-  const reference::DeformableRestState rest = reference::build_deformable_rest_state(setup);
+  const DeformableRestState rest = build_deformable_rest_state(setup);
   for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
     const BodySetup& body = setup.bodies[b];
     if (body.kind != BodyKind::deformable) continue;
@@ -51,12 +61,14 @@ void add_deformable_bodies(const ParticleSetup& setup, FloatScene& scene) {
     p.model = m.model == ElasticModel::neo_hookean        ? kNeoHookean
               : m.model == ElasticModel::corotated_linear ? kCorotatedLinear
                                                           : kSaintVenantKirchhoff;
-    p.lambda = static_cast<float>(lame_lambda(m));
-    p.mu = static_cast<float>(lame_mu(m));
+    // The model's values: the rest state's Lame parameters and the scene's particle mass.
+    const LameParameters lame = body.count > 0 ? rest.lame[body.first] : LameParameters{};
+    p.lambda = static_cast<float>(lame.lambda);
+    p.mu = static_cast<float>(lame.mu);
     p.young_modulus = static_cast<float>(m.young_modulus);
     p.zero_energy_stiffness = static_cast<float>(m.zero_energy_stiffness);
     p.damping = static_cast<float>(m.damping);
-    p.particle_mass = static_cast<float>(m.rest_density * setup.spacing * setup.spacing * setup.spacing);
+    p.particle_mass = static_cast<float>(body_particle_mass(setup, body));
     p.lowest_valid_volume_ratio = static_cast<float>(lowest_valid_volume_ratio(m.model));
     const auto index = static_cast<std::uint32_t>(scene.elastic_bodies.size());
     scene.elastic_bodies.push_back(p);
@@ -65,7 +77,7 @@ void add_deformable_bodies(const ParticleSetup& setup, FloatScene& scene) {
       scene.bond_start.push_back(static_cast<std::uint32_t>(scene.bonds.size()));
       scene.rest_volume.push_back(static_cast<float>(rest.volume[i]));
       for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
-        const reference::RestBond& bond = rest.bonds[k];
+        const mssph::RestBond& bond = rest.bonds[k];
         const auto j = static_cast<std::uint32_t>(rest.neighbours.indices[k]);
         scene.bonds.push_back(RestBond{make_vec4(to_vec3(bond.offset), static_cast<float>(bond.moment_weight)),
                                        make_vec4(to_vec3(bond.d_ij), static_cast<float>(bond.kernel)),
@@ -130,7 +142,7 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
     BodyParameters p{};
     p.kind = kind_code(b.kind);
     p.rigid_index = kNotRigid;
-    p.sph_mass = static_cast<float>(b.material.rest_density * setup.spacing * setup.spacing * setup.spacing);
+    p.sph_mass = static_cast<float>(body_particle_mass(setup, b));
     p.rest_density = static_cast<float>(b.material.rest_density);
     p.pressure_stiffness = static_cast<float>(b.material.pressure_stiffness);
     p.viscosity = static_cast<float>(b.material.viscosity);

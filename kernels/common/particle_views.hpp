@@ -30,7 +30,7 @@ struct StepParameters {
   float dt;                     // [s]
   Vec3 gravity;                 // [m/s^2]
   float inverse_rest_number_density;   // 1 / delta0 [m^3]
-  float inverse_gradient_consistency;  // 1 / g, see cpu_reference/sph_kernels.hpp
+  float inverse_gradient_consistency;  // 1 / g, see model/lattice_calibration.hpp
   std::uint32_t particle_count;
 };
 

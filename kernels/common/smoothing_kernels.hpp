@@ -1,6 +1,6 @@
 #pragma once
 // Float32 smoothing kernels of Mueller, Charypar and Gross 2003, support radius h (the same
-// functions as cpu_reference/sph_kernels.hpp, written for the GPU: constants precomputed, no
+// functions as src/model/smoothing_kernels.hpp, written for the GPU: constants precomputed, no
 // branches beyond the support test).
 #include "vec_math.hpp"
 

@@ -1,7 +1,7 @@
 // `mssph bench`: the benchmark suite (benchmarks/benchmark_suite.hpp) run in-process through
 // Google Benchmark, writing its JSON with the machine context; and `mssph bench compare`: the
 // significance-gated comparison of two such files (src/bench/).
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "bench/bench_comparison.hpp"
 #include "bench/comparison_format.hpp"
 #include "benchmark_suite.hpp"

@@ -1,7 +1,7 @@
 // `mssph figure 2`: step time against particle count for each medium (Cirio et al. 2011,
 // Figure 2), timed on one backend and written to DIR/figure2.h5; scripts/figures/figure2.py draws
 // it and prints the fitted slopes next to the paper's.
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "figure_command.hpp"
 #include "io/run_log.hpp"
 #include "python_script.hpp"

@@ -1,5 +1,5 @@
 // Registers `mssph figure 2`, `mssph figure 3` and `mssph figure tss` on the command line.
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "commands.hpp"
 #include "figure_command.hpp"
 #include "guarded.hpp"

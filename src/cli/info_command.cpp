@@ -1,5 +1,5 @@
 // `mssph info`: what this binary is and what it can run on.
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "commands.hpp"
 #include "util/build_info.hpp"
 #include "util/host_info.hpp"

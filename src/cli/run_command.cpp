@@ -1,5 +1,5 @@
 // `mssph run SCENE.json`: simulate a scene and log it to HDF5.
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "commands.hpp"
 #include "guarded.hpp"
 #include "output_path.hpp"

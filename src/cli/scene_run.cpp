@@ -1,6 +1,6 @@
 #include "scene_run.hpp"
 
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "config/scene_loader.hpp"
 #include "haptics/haptics_run.hpp"
 #include "io/output_claim.hpp"

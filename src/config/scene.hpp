@@ -2,7 +2,7 @@
 // A scene as read from its JSON file: typed, validated, SI units throughout. The keys and their
 // units are documented in configs/README.md and checked by configs/scene.schema.json.
 #include "config/elastic_model.hpp"
-#include "haptics/haptics_config.hpp"
+#include "config/haptics_config.hpp"
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
@@ -78,7 +78,7 @@ struct SimulationConfig {
 
 struct ProxyConfig {
   std::string body;       // the rigid body the haptic device drives
-  HapticsConfig haptics;  // coupling, device and trajectory (src/haptics/haptics_config.hpp)
+  HapticsConfig haptics;  // coupling, device and trajectory (config/haptics_config.hpp)
 };
 
 struct OutputConfig {

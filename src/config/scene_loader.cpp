@@ -1,7 +1,7 @@
 #include "config/scene_loader.hpp"
 
 #include "config/json_reader.hpp"
-#include "haptics/haptics_config.hpp"
+#include "config/haptics_config.hpp"
 #include "util/errors.hpp"
 
 #include <algorithm>

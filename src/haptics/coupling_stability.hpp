@@ -9,7 +9,7 @@
 // workspace scale and force_scale, Kr times torque_scale), the hand's, and its own damping.
 // A violated bound is a warning: the run may still be stable, or show the growth in its
 // /haptics energy balance.
-#include "haptics/haptics_config.hpp"
+#include "config/haptics_config.hpp"
 #include "haptics/proxy_predictor.hpp"
 
 #include <string>

@@ -1,8 +1,8 @@
 #pragma once
 // The handle of a simulated Virtuose 6D (DESIGN.md section 4): what its motors can render, and
 // its motion, in the device frame, under the motors, the hand and its own mass and damping.
-#include "haptics/haptics_config.hpp"
-#include "haptics/pose.hpp"
+#include "config/haptics_config.hpp"
+#include "util/pose.hpp"
 #include "haptics/workspace_transform.hpp"
 
 namespace mssph {

@@ -1,7 +1,7 @@
 #pragma once
 // Collects the handle's pose at every tick, to write it as a device recording that a later run
 // can replay (`mssph run --record-device FILE`, then trajectory source "recorded").
-#include "haptics/device_recording.hpp"
+#include "config/device_recording.hpp"
 #include "haptics/haptic_sample.hpp"
 
 namespace mssph {

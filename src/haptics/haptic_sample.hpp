@@ -1,7 +1,7 @@
 #pragma once
 // What one haptic tick produces: everything the user would feel and what it came from. The
 // session hands each sample to its sinks (the run log, a device recording, a test).
-#include "haptics/pose.hpp"
+#include "util/pose.hpp"
 
 namespace mssph {
 

@@ -14,7 +14,7 @@
 // once per tick.
 #include "haptics/device_model.hpp"
 #include "haptics/haptic_sample.hpp"
-#include "haptics/haptics_config.hpp"
+#include "config/haptics_config.hpp"
 #include "haptics/pose_track.hpp"
 #include "haptics/proxy_predictor.hpp"
 #include "haptics/workspace_transform.hpp"

@@ -2,7 +2,7 @@
 // A pose path through timed poses: positions interpolated linearly, orientations by slerp (the
 // short way), held at the first pose before it and at the last after it. Scripted keyframes and
 // recorded device trajectories are both read through it, at the haptic rate.
-#include "haptics/pose.hpp"
+#include "util/pose.hpp"
 
 #include <vector>
 

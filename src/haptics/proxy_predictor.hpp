@@ -5,8 +5,8 @@
 //   linearised: a local model about the latest state: the proxy moves as a free rigid body under
 //               its SPH interaction wrench frozen at that state, gravity, and the coupling wrench
 //               in effect, integrated from tick to tick. The next simulation state replaces it.
-#include "haptics/haptics_config.hpp"
-#include "haptics/pose.hpp"
+#include "config/haptics_config.hpp"
+#include "util/pose.hpp"
 
 #include <cstddef>
 

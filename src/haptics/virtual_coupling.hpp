@@ -8,8 +8,8 @@
 // follower: the proxy receives (+F, +tau) on top of its SPH interaction wrench (paper eq. 8, 9)
 // and the device renders (-F, -tau). The simulated hand uses it with the scripted target and the
 // handle.
-#include "haptics/haptics_config.hpp"
-#include "haptics/pose.hpp"
+#include "config/haptics_config.hpp"
+#include "util/pose.hpp"
 
 namespace mssph {
 

@@ -3,7 +3,7 @@
 //   p_scene = offset + s R p_device,  q_scene = R q_device,
 //   v_scene = s R v_device,           w_scene = R w_device,
 // and wrenches back to the device frame by R^T (the rendered wrench is scaled separately).
-#include "haptics/pose.hpp"
+#include "util/pose.hpp"
 
 namespace mssph {
 

@@ -12,7 +12,7 @@
 // seconds and whenever a buffer fills), and a change of the file's structure (a new series,
 // array or attribute) is flushed before the next row is buffered. Rows appended since the last
 // flush are what such a kill loses.
-#include "io/hdf5_handle.hpp"
+#include "util/hdf5_handle.hpp"
 #include "io/output_claim.hpp"
 
 #include <span>

@@ -1,7 +1,7 @@
 #include "scene/scene_builder.hpp"
 
 #include "scene/lattice.hpp"
-#include "sph_kernels.hpp"
+#include "model/lattice_calibration.hpp"
 #include "util/errors.hpp"
 
 #include <cmath>
@@ -84,8 +84,8 @@ ParticleSetup build_particles(const Scene& scene) {
   ParticleSetup setup;
   setup.spacing = sim.particle_spacing;
   setup.smoothing_length = sim.smoothing_length;
-  setup.rest_number_density = reference::lattice_number_density(sim.particle_spacing, sim.smoothing_length);
-  setup.gradient_consistency = reference::lattice_gradient_consistency(sim.particle_spacing, sim.smoothing_length);
+  setup.rest_number_density = lattice_number_density(sim.particle_spacing, sim.smoothing_length);
+  setup.gradient_consistency = lattice_gradient_consistency(sim.particle_spacing, sim.smoothing_length);
   setup.gravity = sim.gravity;
   setup.dt = sim.dt;
   setup.max_speed = sim.max_speed;

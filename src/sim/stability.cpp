@@ -1,5 +1,7 @@
 #include "sim/stability.hpp"
 
+#include "model/material_law.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -16,11 +18,6 @@ std::string bound_message(const std::string& body, const std::string& bound, dou
 }
 
 }  // namespace
-
-double lame_mu(const Material& m) { return m.young_modulus / (2.0 * (1.0 + m.poisson_ratio)); }
-double lame_lambda(const Material& m) {
-  return m.young_modulus * m.poisson_ratio / ((1.0 + m.poisson_ratio) * (1.0 - 2.0 * m.poisson_ratio));
-}
 
 std::vector<TimeStepBound> time_step_bounds(const ParticleSetup& setup) {
   std::vector<TimeStepBound> bounds;

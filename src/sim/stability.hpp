@@ -23,8 +23,4 @@ std::vector<TimeStepBound> time_step_bounds(const ParticleSetup& setup);
 // One warning per bound dt exceeds, and for nearly incompressible elastic bodies.
 std::vector<std::string> stability_warnings(const ParticleSetup& setup);
 
-// Lame parameters of an isotropic material: mu_L = E / (2 (1 + nu)), lambda = E nu / ((1 + nu)(1 - 2 nu)).
-double lame_mu(const Material& m);
-double lame_lambda(const Material& m);
-
 }  // namespace mssph

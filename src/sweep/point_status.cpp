@@ -1,6 +1,6 @@
 #include "sweep/point_status.hpp"
 
-#include "io/hdf5_handle.hpp"
+#include "util/hdf5_handle.hpp"
 
 #include <filesystem>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Running a float32 backend (cpu, cuda) beside the reference on the same scene.
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "config/scene_loader.hpp"
 #include "scene/scene_builder.hpp"
 #include "framework/backends.hpp"

@@ -1,6 +1,6 @@
 // Bad input to `mssph run`: exit code 2, an error that names the file and the key or argument,
 // and nothing written (the working directory, where the default output would go, stays empty).
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "cli_fixture.hpp"
 #ifdef MSSPH_HAVE_CUDA_BACKEND
 #include "cuda/cuda_backend.hpp"

@@ -1,5 +1,5 @@
 // `mssph --help`, `mssph run --help` and `mssph info`: they work and say what the program does.
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "cli_fixture.hpp"
 #include "commands.hpp"
 #include "util/build_info.hpp"

@@ -5,7 +5,7 @@
 #include "config/scene_loader.hpp"
 #include "config_test_support.hpp"
 #include "scene/lattice.hpp"
-#include "sph_kernels.hpp"
+#include "model/smoothing_kernels.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -156,7 +156,7 @@ TEST(SceneBuilder, RestLatticeIsAtRestDensityAndParticlesCarryTheirCellsMass) {
   json b = body("fluid", box({9 * kDx, 9 * kDx, 9 * kDx}));
   b["rest_density"] = 997.0;
   const ParticleSetup setup = build_particles(scene_of({{"water", b}}));
-  const reference::SpikyKernel w(setup.smoothing_length);
+  const SpikyKernel w(setup.smoothing_length);
   const Vector3d centre = Vector3d::Zero();
   double delta = 0.0;
   for (const Vector3d& x : setup.position) delta += w((x - centre).norm());

@@ -5,7 +5,7 @@
 // outside. A stiff cube on the same path stays inside.
 #include "cli/scene_run.hpp"
 #include "h5_read.hpp"
-#include "io/hdf5_handle.hpp"
+#include "util/hdf5_handle.hpp"
 #include "temp_dir.hpp"
 
 #include <gtest/gtest.h>

@@ -9,7 +9,7 @@
 // field is exact at every particle, so det F = s everywhere.
 #include "../backends/backend_fixtures.hpp"
 #include "deformable_fixtures.hpp"
-#include "sim/stability.hpp"
+#include "model/material_law.hpp"
 
 #include <gtest/gtest.h>
 

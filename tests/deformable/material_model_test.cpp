@@ -4,7 +4,7 @@
 // patch and rotation-invariance checks as the paper's St Venant-Kirchhoff model.
 #include "deformable_fixtures.hpp"
 #include "elasticity.hpp"
-#include "sim/stability.hpp"
+#include "model/material_law.hpp"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -24,7 +24,7 @@ constexpr double kPoisson = 0.3;
 constexpr ElasticModel kModels[] = {ElasticModel::saint_venant_kirchhoff, ElasticModel::corotated_linear,
                                     ElasticModel::neo_hookean};
 
-reference::LameParameters lame() {
+LameParameters lame() {
   Material m;
   m.young_modulus = kYoung;
   m.poisson_ratio = kPoisson;

@@ -10,8 +10,9 @@
 #include "physics/elastic_statics.hpp"
 
 #include "elasticity.hpp"
-#include "sim/stability.hpp"
-#include "sph_kernels.hpp"
+#include "model/deformable_rest_state.hpp"
+#include "model/material_law.hpp"
+#include "model/smoothing_kernels.hpp"
 
 #include <gtest/gtest.h>
 
@@ -49,8 +50,8 @@ Matrix3d exact_stress(const Matrix3d& g) {
 // under test.
 double lattice_consistency() {
   const double h = 2.0 * kDx;
-  const reference::Poly6Kernel w(h);
-  const reference::SpikyGradient grad_w(h);
+  const Poly6Kernel w(h);
+  const SpikyGradient grad_w(h);
   double delta = 0.0;
   double b = 0.0;
   for (int i = -2; i <= 2; ++i) {
@@ -154,8 +155,8 @@ TEST(PatchTest, HalvesPullOnEachOtherWithStressTimesArea) {
   testing::deform_body(backend, 0, g, kCentre);
   backend.compute_forces();
   const double h = backend.setup().smoothing_length;
-  const reference::SpikyGradient grad_w(h);
-  const reference::DeformableRestState& rest = backend.deformable_rest();
+  const SpikyGradient grad_w(h);
+  const DeformableRestState& rest = backend.deformable_rest();
   const std::vector<Matrix3d>& action = backend.deformables().stress_action;
   Vector3d traction = Vector3d::Zero();
   std::size_t columns = 0;
@@ -168,8 +169,8 @@ TEST(PatchTest, HalvesPullOnEachOtherWithStressTimesArea) {
       const std::size_t j = *jp;
       const Vector3d rest_x_ij = rest.position[j] - x_i;
       if (rest.position[j].x() > 0.0) continue;
-      const Vector3d d_ij = reference::rest_gradient(rest.volume[j], rest.correction[i], grad_w(-rest_x_ij));
-      const Vector3d d_ji = reference::rest_gradient(rest.volume[i], rest.correction[j], grad_w(rest_x_ij));
+      const Vector3d d_ij = rest_gradient(rest.volume[j], rest.correction[i], grad_w(-rest_x_ij));
+      const Vector3d d_ji = rest_gradient(rest.volume[i], rest.correction[j], grad_w(rest_x_ij));
       traction += reference::elastic_force_term(action[i], d_ij, action[j], d_ji);
     }
   }

@@ -5,7 +5,7 @@
 //
 // Run on the float32 cpu backend, whose path on this very scene follows the reference within 2 %
 // (BackendAgreement.DeformableDropFollowsTheReference): the reference would take minutes here.
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "config/scene_loader.hpp"
 #include "scene/scene_builder.hpp"
 

@@ -7,7 +7,7 @@
 // dx = 1 cm, h = 2 dx, a 12 x 12 x 12 block.
 #include "deformable_fixtures.hpp"
 
-#include "sph_kernels.hpp"
+#include "model/smoothing_kernels.hpp"
 
 #include <gtest/gtest.h>
 
@@ -69,7 +69,7 @@ double hourglass_amplitude(const reference::ReferenceBackend& backend, double am
 // with V0 = 1 / sum_j W(|X_ij|) of the complete lattice neighbourhood. Computed here from the
 // kernel, independently of the code under test.
 double hourglass_stiffness(double h) {
-  const reference::Poly6Kernel w(h);
+  const Poly6Kernel w(h);
   double delta = 0.0;
   double sum = 0.0;
   for (int i = -2; i <= 2; ++i) {

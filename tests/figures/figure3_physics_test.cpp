@@ -1,7 +1,7 @@
 // Figure 3 at coarse resolution (4 cm spacing, the README's first command) on the cpu backend:
 // every shape check of scripts/figures/figure3_checks.py passes on the real runs. The checks'
 // expectations (Archimedes, Hertz, weight, the rigid impact as the reference) are physical; the
-// checks' ability to fail is tested on wrong curves in test_figure3_checks.py.
+// checks' ability to fail is tested on wrong curves in figure3_checks_test.py.
 #include "cli_fixture.hpp"
 
 namespace mssph::test {

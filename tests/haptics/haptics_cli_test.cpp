@@ -1,7 +1,7 @@
 // The haptics of `mssph run` end to end on a tiny scene (tests/haptics/data/poke.json): device
 // recordings round-trip, bad recordings and requests stop the run before any output, gains
 // beyond the stability bound are reported and show in the run.
-#include "haptics/device_recording.hpp"
+#include "config/device_recording.hpp"
 #include "haptics_cli_support.hpp"
 #include "temp_dir.hpp"
 

@@ -1,7 +1,7 @@
 // Device recordings on disk: both formats round-trip, and every malformed file is rejected with
 // an InputError that names the file and the row of the problem.
-#include "haptics/device_recording.hpp"
-#include "io/hdf5_handle.hpp"
+#include "config/device_recording.hpp"
+#include "util/hdf5_handle.hpp"
 #include "temp_dir.hpp"
 #include "util/errors.hpp"
 

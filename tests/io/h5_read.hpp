@@ -1,7 +1,7 @@
 #pragma once
 // Reading run logs back with the HDF5 C API, independently of the writer's code paths: whole
 // datasets, their shapes and layouts, and attributes of every type the run log writes.
-#include "io/hdf5_handle.hpp"
+#include "util/hdf5_handle.hpp"
 
 #include <string>
 #include <vector>

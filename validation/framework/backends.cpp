@@ -1,6 +1,6 @@
 #include "backends.hpp"
 
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #ifdef MSSPH_HAVE_CUDA_BACKEND
 #include "cuda/cuda_backend.hpp"
 #endif

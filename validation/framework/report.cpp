@@ -1,6 +1,6 @@
 #include "report.hpp"
 
-#include "io/hdf5_handle.hpp"
+#include "util/hdf5_handle.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,6 @@
 #include "framework/run_log_reader.hpp"
 
-#include "io/hdf5_handle.hpp"
+#include "util/hdf5_handle.hpp"
 
 #include <stdexcept>
 

@@ -1,6 +1,6 @@
 // `mssph validate`: runs the validation cases of validation/ and writes the table, report.json,
 // validation.h5 and report.md with plots.
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "commands.hpp"
 #include "guarded.hpp"
 #include "framework/backends.hpp"

@@ -1,6 +1,6 @@
 #include "fluids.hpp"
 
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "framework/fits.hpp"
 #include "scene/scene_builder.hpp"
 

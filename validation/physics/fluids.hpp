@@ -1,7 +1,7 @@
 #pragma once
 // Fluid statics measured on any backend: the hydrostatic pressure of a settled column and the
 // floating depth of a light sphere. Shared by the physics and convergence cases and
-// tests/reference/test_fluid_physics.cpp.
+// tests/reference/fluid_physics_test.cpp.
 #include "config/scene.hpp"
 
 #include <string>

@@ -1,6 +1,6 @@
 #include "one_step.hpp"
 
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "config/scene_loader.hpp"
 #include "framework/backends.hpp"
 #include "scene/scene_builder.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // One force evaluation from identical states: every per-particle quantity of a float32 backend
 // (cpu, cuda) against the float64 reference, on a randomly perturbed lattice. Shared by the
-// kernels suite's one-step case and tests/backends/test_one_step_agreement.cpp.
+// kernels suite's one-step case and tests/backends/one_step_agreement_test.cpp.
 #include <nlohmann/json.hpp>
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 #include "sphere_drops.hpp"
 
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "config/scene_loader.hpp"
 #include "framework/fits.hpp"
 #include "scene/scene_builder.hpp"

@@ -1,6 +1,6 @@
 #include "cantilever.hpp"
 
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "framework/backends.hpp"
 #include "scene/scene_builder.hpp"
 

@@ -2,7 +2,7 @@
 // The virtual coupling (Colgate et al. 1995; paper 4.1) measured alone, on a rigid-body stand-in
 // for the proxy (rigid_body_double.hpp): step responses against the damped oscillator, and
 // passivity over a scripted interaction. Shared by the physics cases and tests/haptics.
-#include "haptics/haptics_config.hpp"
+#include "config/haptics_config.hpp"
 
 #include <vector>
 

@@ -3,7 +3,7 @@
 // with isotropic inertia and no particles, so the haptic loop can be tested in milliseconds.
 // Under a constant wrench over a step it moves exactly (x += v dt + F/(2m) dt^2; a fixed rotation axis turns by the mean angular
 // velocity). An optional penalty floor stands in for the SPH interaction forces of a contact.
-#include "haptics/pose.hpp"
+#include "util/pose.hpp"
 #include "sim/backend.hpp"
 
 #include <optional>

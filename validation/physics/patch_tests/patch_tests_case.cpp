@@ -1,6 +1,6 @@
 // Physics case: uniaxial stress, uniaxial strain and simple shear patch tests (README.md beside
 // this file). Reference backend: the stresses are the reference's internal state.
-#include "sim/stability.hpp"
+#include "model/material_law.hpp"
 #include "framework/case_functions.hpp"
 #include "physics/elastic_statics.hpp"
 

@@ -1,6 +1,6 @@
 #include "torque_free_spin.hpp"
 
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "scene/scene_builder.hpp"
 
 #include <algorithm>

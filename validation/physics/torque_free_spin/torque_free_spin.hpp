@@ -2,7 +2,7 @@
 // A torque-free rigid body tumbling in free space (validation/physics/torque_free_spin): its
 // angular momentum L is constant (Euler's equations without torque; Landau and Lifshitz,
 // Mechanics, section 36) and so is its rotational energy L . omega / 2. Shared by the physics
-// case and tests/reference/test_rigid_physics.cpp.
+// case and tests/reference/rigid_physics_test.cpp.
 #include "config/scene.hpp"
 
 #include <string>

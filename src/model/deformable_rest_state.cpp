@@ -1,11 +1,10 @@
-#include "deformable_body.hpp"
+#include "model/deformable_rest_state.hpp"
 
-#include "sim/stability.hpp"
-#include "sph_kernels.hpp"
+#include "model/smoothing_kernels.hpp"
 
 #include <Eigen/SVD>
 
-namespace mssph::reference {
+namespace mssph {
 
 Eigen::Matrix3d kernel_gradient_correction(const Eigen::Matrix3d& b) {
   // Below this relative singular value a direction is unsampled: inverting it would amplify
@@ -48,7 +47,7 @@ DeformableRestState build_deformable_rest_state(const ParticleSetup& setup) {
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_deformable(setup, i)) continue;
     const Material& material = setup.bodies[setup.body[i]].material;
-    rest.lame[i] = LameParameters{lame_lambda(material), lame_mu(material)};
+    rest.lame[i] = lame_parameters(material);
     double mass_density = setup.mass[i] * w(0.0);
     for (const std::size_t* j = rest.neighbours.begin(i); j != rest.neighbours.end(i); ++j) {
       mass_density += setup.mass[*j] * w((setup.position[*j] - setup.position[i]).squaredNorm());
@@ -81,4 +80,4 @@ DeformableRestState build_deformable_rest_state(const ParticleSetup& setup) {
   return rest;
 }
 
-}  // namespace mssph::reference
+}  // namespace mssph

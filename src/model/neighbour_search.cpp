@@ -1,4 +1,4 @@
-#include "neighbour_search.hpp"
+#include "model/neighbour_search.hpp"
 
 #include "util/errors.hpp"
 
@@ -10,7 +10,7 @@
 
 #include <omp.h>
 
-namespace mssph::reference {
+namespace mssph {
 namespace {
 
 // Spatial hashing (Teschner et al. 2003): cells of side h are hashed into a table of 2^k buckets,
@@ -123,4 +123,4 @@ NeighbourLists find_neighbours(const std::vector<Eigen::Vector3d>& positions, do
   return lists;
 }
 
-}  // namespace mssph::reference
+}  // namespace mssph

@@ -1,22 +1,15 @@
-#include "host_backend.hpp"
+#include "cpu_backend.hpp"
 
+#include "../common/eigen_conversion.hpp"
 #include "../common/elastic_physics.hpp"
 #include "../common/fluid_physics.hpp"
-#include "util/errors.hpp"
+#include "../common/read_back.hpp"
 #include "util/host_info.hpp"
 #include "util/phase_timer.hpp"
 
-
 namespace mssph::kernels {
-namespace {
 
-Vec3 to_vec3(const Eigen::Vector3d& v) {
-  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
-}
-
-}  // namespace
-
-HostBackend::HostBackend(ParticleSetup setup) : setup_(std::move(setup)), scene_(make_float_scene(setup_)) {
+CpuBackend::CpuBackend(ParticleSetup setup) : setup_(std::move(setup)), scene_(make_float_scene(setup_)) {
   const std::size_t n = setup_.size();
   cell_start_.assign(std::size_t{scene_.grid.cell_count()} + 1, 0);
   sorted_id_.resize(n);
@@ -31,21 +24,17 @@ HostBackend::HostBackend(ParticleSetup setup) : setup_(std::move(setup)), scene_
   deformation_.assign(deformables, identity_mat3());
 }
 
-BackendInfo HostBackend::info() const { return {"cpu", host_cpu_name(), "float32"}; }
+BackendInfo CpuBackend::info() const { return {"cpu", host_cpu_name(), "float32"}; }
 
-RigidBody& HostBackend::rigid_of(std::size_t body) {
-  const std::uint32_t index = body < scene_.bodies.size() ? scene_.bodies[body].rigid_index : kNotRigid;
-  if (index == kNotRigid) throw std::invalid_argument("body " + std::to_string(body) + " is not a movable rigid body");
-  return scene_.rigid_bodies[index];
-}
+RigidBody& CpuBackend::rigid_of(std::size_t body) { return scene_.rigid_bodies[movable_rigid_index(scene_, body)]; }
 
-void HostBackend::set_external_wrench(std::size_t body, const Eigen::Vector3d& force, const Eigen::Vector3d& torque) {
+void CpuBackend::set_external_wrench(std::size_t body, const Eigen::Vector3d& force, const Eigen::Vector3d& torque) {
   RigidBody& rigid = rigid_of(body);
   rigid.external_force = to_vec3(force);
   rigid.external_torque = to_vec3(torque);
 }
 
-SortedView HostBackend::sorted_view() const {
+SortedView CpuBackend::sorted_view() const {
   return SortedView{scene_.step,           scene_.bodies.data(),
                     CellRanges{scene_.grid, cell_start_.data()},
                     sorted_position_.data(), sorted_velocity_.data(),
@@ -54,7 +43,7 @@ SortedView HostBackend::sorted_view() const {
 
 // Counting sort of the particles by cell key (stable: equal keys keep canonical order), then the
 // same cell table and cell-ordered copies as the CUDA backend.
-void HostBackend::build_grid() {
+void CpuBackend::build_grid() {
   const std::size_t n = setup_.size();
   std::vector<std::uint32_t> key(n);
 #pragma omp parallel for schedule(static)
@@ -73,7 +62,7 @@ void HostBackend::build_grid() {
   }
 }
 
-DeformableView HostBackend::deformable_view() {
+DeformableView CpuBackend::deformable_view() {
   return DeformableView{scene_.elastic_bodies.data(), scene_.deformable_body.data(), scene_.bond_start.data(),
                         scene_.bonds.data(),          scene_.rest_volume.data(),     scene_.position.data(),
                         scene_.velocity.data(),       rotation_.data(),              stress_action_.data(),
@@ -81,9 +70,10 @@ DeformableView HostBackend::deformable_view() {
                         static_cast<std::uint32_t>(scene_.deformable_body.size())};
 }
 
-// Steps 1 and 3 of deformable bodies from the positions at the start of the step: all rotations
-// and stresses first, since each elastic force reads its neighbours' stresses.
-void HostBackend::compute_elasticity() {
+// Step 1, R_i of deformable particles, with their stresses and elastic forces (step 3 of
+// deformable bodies) from the positions at the start of the step: all rotations and stresses
+// first, since each elastic force reads its neighbours' stresses.
+void CpuBackend::compute_rotations_and_elastic_forces() {
   const DeformableView view = deformable_view();
 #pragma omp parallel for schedule(static)
   for (std::uint32_t d = 0; d < view.count; ++d) rotation_and_stress(view, d);
@@ -91,7 +81,8 @@ void HostBackend::compute_elasticity() {
   for (std::uint32_t d = 0; d < view.count; ++d) elastic_force(view, d);
 }
 
-void HostBackend::compute_densities() {
+// Step 2, densities and pressures (eq. 1 and the equation of state), in cell order.
+void CpuBackend::compute_densities() {
   const SortedView view = sorted_view();
   const std::size_t n = setup_.size();
 #pragma omp parallel for schedule(static)
@@ -101,7 +92,9 @@ void HostBackend::compute_densities() {
   }
 }
 
-void HostBackend::compute_forces_and_integrate() {
+// Step 3, pressure and viscosity forces (eq. 2, 3, 7), each particle then advanced by step 4's
+// leap-frog in the same pass.
+void CpuBackend::compute_forces_and_advance_particles() {
   const SortedView view = sorted_view();
   const CanonicalState state{scene_.position.data(), scene_.velocity.data(), interaction_force_.data(),
                              rotation_.empty() ? nullptr : elastic_force_.data(), scene_.body.data(), scene_.fixed.data()};
@@ -110,7 +103,9 @@ void HostBackend::compute_forces_and_integrate() {
   for (std::uint32_t s = 0; s < n; ++s) apply_forces(view, state, s, force_sum(view, load_force_particle(view, s), 0, 1));
 }
 
-void HostBackend::advance_rigid_bodies() {
+// Step 4 of rigid bodies: the interaction wrench of their particles, rigid-body dynamics, then
+// their particles placed on the moved body.
+void CpuBackend::advance_rigid_bodies() {
   for (RigidBody& body : scene_.rigid_bodies) {
     Wrench wrench{{0, 0, 0}, {0, 0, 0}};
     for (std::uint32_t i = body.first; i < body.first + body.count; ++i) {
@@ -128,74 +123,37 @@ void HostBackend::advance_rigid_bodies() {
   }
 }
 
-// Paper 3.2 on the kernels' functions: grid, rotations and elastic forces of deformable bodies,
-// densities, forces with leap-frog integration of particles, then rigid-body dynamics.
-void HostBackend::step() {
-  {
-    PhaseTimer timer(phase_seconds_[kNeighbours]);
-    build_grid();
-  }
-  {
-    PhaseTimer timer(phase_seconds_[kRotations]);
-    compute_elasticity();
-  }
-  {
-    PhaseTimer timer(phase_seconds_[kDensities]);
-    compute_densities();
-  }
-  {
-    PhaseTimer timer(phase_seconds_[kForces]);
-    compute_forces_and_integrate();
-  }
-  {
-    PhaseTimer timer(phase_seconds_[kIntegration]);
-    advance_rigid_bodies();
-  }
+// Paper 3.2 on the kernels' functions, one phase per line with the shared phase names.
+void CpuBackend::step() {
+  timed(phase_seconds_[kNeighbours], [&] { build_grid(); });
+  timed(phase_seconds_[kRotations], [&] { compute_rotations_and_elastic_forces(); });  // step 1
+  timed(phase_seconds_[kDensities], [&] { compute_densities(); });                       // step 2
+  timed(phase_seconds_[kForces], [&] { compute_forces_and_advance_particles(); });       // step 3 (+ 4: leap-frog)
+  timed(phase_seconds_[kIntegration], [&] { advance_rigid_bodies(); });                  // step 4: rigid bodies
   time_ += setup_.dt;
 }
 
-ForceEvaluation HostBackend::evaluate_forces() {
+// Steps up to the force sums, which are returned in canonical order instead of being integrated.
+ForceEvaluation CpuBackend::evaluate_forces() {
   build_grid();
-  compute_elasticity();
+  compute_rotations_and_elastic_forces();
   compute_densities();
-  const std::size_t n = setup_.size();
-  ForceEvaluation out;
-  out.density.resize(n);
-  out.pressure.resize(n);
-  out.pressure_force.resize(n);
-  out.viscosity_force.resize(n);
-  out.elastic_force.resize(n);
-  out.rotation.assign(n, Eigen::Matrix3d::Identity());
   const SortedView view = sorted_view();
-  const auto to_eigen = [](Vec3 v) { return Eigen::Vector3d(v.x, v.y, v.z); };
+  std::vector<ForceSum> sums(setup_.size());
+  const auto n = static_cast<std::uint32_t>(setup_.size());
 #pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < n; ++s) {
-    const std::uint32_t i = sorted_id_[s];
-    const auto t = static_cast<std::uint32_t>(s);
-    const ForceSum f = force_sum(view, load_force_particle(view, t), 0, 1);
-    out.density[i] = scene_.bodies[scene_.body[i]].sph_mass / volume_pressure_[s].volume;
-    out.pressure[i] = volume_pressure_[s].pressure;
-    out.pressure_force[i] = to_eigen(f.pressure);
-    out.viscosity_force[i] = to_eigen(f.viscosity);
-    out.elastic_force[i] = to_eigen(xyz(elastic_force_[i]));
-  }
-  for (std::uint32_t d = 0; d < rotation_.size(); ++d) {
-    const ElasticParameters& body = scene_.elastic_bodies[scene_.deformable_body[d]];
-    const Mat3 r = rotation_matrix(rotation_[d]);
-    Eigen::Matrix3d& out_r = out.rotation[body.first_particle + (d - body.first_deformable)];
-    for (int k = 0; k < 9; ++k) out_r(k / 3, k % 3) = r.m[k];
-  }
-  return out;
+  for (std::uint32_t s = 0; s < n; ++s) sums[s] = force_sum(view, load_force_particle(view, s), 0, 1);
+  return pack_force_evaluation(scene_, sorted_id_, volume_pressure_, sums, elastic_force_, rotation_);
 }
 
-void HostBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& positions) {
+void CpuBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& positions) {
   for (std::size_t i = 0; i < setup_.size(); ++i) {
     const std::uint32_t kind = scene_.bodies[scene_.body[i]].kind;
     if (kind == kFluid || kind == kDeformable) scene_.position[i] = make_vec4(scene_.to_kernel_frame(positions[i]), 0.0f);
   }
 }
 
-std::vector<BodyState> HostBackend::body_states() {
+std::vector<BodyState> CpuBackend::body_states() {
   std::vector<BodyState> states;
   for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
     const BodySetup& body = setup_.bodies[b];
@@ -216,7 +174,7 @@ std::vector<BodyState> HostBackend::body_states() {
   return states;
 }
 
-BodyState HostBackend::rigid_body_state(std::size_t body) {
+BodyState CpuBackend::rigid_body_state(std::size_t body) {
   const RigidBody& rigid = rigid_of(body);
   BodySums sums = zero_body_sums();
   for (std::uint32_t i = rigid.first; i < rigid.first + rigid.count; ++i) {
@@ -225,7 +183,7 @@ BodyState HostBackend::rigid_body_state(std::size_t body) {
   return to_body_state(scene_, sums, &rigid, setup_.bodies[body]);
 }
 
-ParticleSnapshot HostBackend::snapshot() {
+ParticleSnapshot CpuBackend::snapshot() {
   const std::size_t n = setup_.size();
   ParticleSnapshot out;
   out.position.resize(3 * n);
@@ -244,13 +202,12 @@ ParticleSnapshot HostBackend::snapshot() {
   // Densities and pressures of the last force evaluation, scattered back to canonical order.
   for (std::size_t s = 0; s < n; ++s) {
     const std::uint32_t i = sorted_id_[s];
-    const VolumePressure vp = volume_pressure_[s];
-    out.density[i] = vp.volume > 0.0f ? scene_.bodies[scene_.body[i]].sph_mass / vp.volume : 0.0f;
-    out.pressure[i] = vp.pressure;
+    out.density[i] = particle_density(scene_, i, volume_pressure_[s]);
+    out.pressure[i] = volume_pressure_[s].pressure;
   }
   return out;
 }
 
-std::vector<double> HostBackend::last_phase_seconds() const { return {phase_seconds_.begin(), phase_seconds_.end()}; }
+std::vector<double> CpuBackend::last_phase_seconds() const { return {phase_seconds_.begin(), phase_seconds_.end()}; }
 
 }  // namespace mssph::kernels

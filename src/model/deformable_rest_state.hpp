@@ -1,16 +1,24 @@
 #pragma once
 // The rest configuration of deformable bodies (paper 3.1.2), found once at start: rest positions,
 // rest neighbour sets, rest volumes and kernel-gradient corrections. Indexed by particle over the
-// whole scene; particles of other kinds have no rest neighbours.
-#include "elasticity.hpp"
-#include "neighbour_search.hpp"
+// whole scene; particles of other kinds have no rest neighbours. Built in double once and used by
+// both precisions: the reference directly, the float backends converted (kernels/common/float_scene).
+#include "model/material_law.hpp"
+#include "model/neighbour_search.hpp"
 #include "scene/particle_setup.hpp"
 
 #include <Eigen/Core>
 
 #include <vector>
 
-namespace mssph::reference {
+namespace mssph {
+
+// The rest-configuration kernel gradient d_ij = V0_j L_i grad W(X_i - X_j) [m^0]: the weight of
+// neighbour j in particle i's gradient estimate.
+inline Eigen::Vector3d rest_gradient(double rest_volume_j, const Eigen::Matrix3d& correction_i,
+                                     const Eigen::Vector3d& grad_w_rest) {
+  return rest_volume_j * (correction_i * grad_w_rest);
+}
 
 // What the loop needs of one rest neighbour j of particle i, computed once.
 struct RestBond {
@@ -32,7 +40,7 @@ struct DeformableRestState {
   std::vector<double> volume;
   // L_i = (sum_j V0_j grad W(X_i - X_j) (x) X_ij)^-1 with kernel-gradient correction, else I.
   std::vector<Eigen::Matrix3d> correction;
-  std::vector<LameParameters> lame;  // per particle, from its body's material
+  std::vector<LameParameters> lame;  // per particle, the material law of its body (material_law.hpp)
 };
 
 inline bool is_deformable(const ParticleSetup& setup, std::size_t i) {
@@ -49,4 +57,4 @@ DeformableRestState build_deformable_rest_state(const ParticleSetup& setup);
 // (pseudo-inverse), so the correction acts in the directions the neighbourhood samples.
 Eigen::Matrix3d kernel_gradient_correction(const Eigen::Matrix3d& b);
 
-}  // namespace mssph::reference
+}  // namespace mssph

@@ -1,5 +1,5 @@
 // The hashed-grid neighbour search against brute force.
-#include "neighbour_search.hpp"
+#include "model/neighbour_search.hpp"
 
 #include "util/errors.hpp"
 

@@ -1,4 +1,4 @@
-#include "haptics/haptics_config.hpp"
+#include "config/haptics_config.hpp"
 
 #include "config/json_reader.hpp"
 

@@ -1,6 +1,6 @@
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 
-#include "host/host_backend.hpp"
+#include "cpu/cpu_backend.hpp"
 #include "reference_backend.hpp"
 #include "util/errors.hpp"
 #ifdef MSSPH_HAVE_CUDA_BACKEND
@@ -42,7 +42,7 @@ std::string resolve_backend_name(const std::string& requested) {
 
 std::unique_ptr<Backend> make_backend(const std::string& name, ParticleSetup setup) {
   if (name == "reference") return std::make_unique<reference::ReferenceBackend>(std::move(setup));
-  if (name == "cpu") return std::make_unique<kernels::HostBackend>(std::move(setup));
+  if (name == "cpu") return std::make_unique<kernels::CpuBackend>(std::move(setup));
 #ifdef MSSPH_HAVE_CUDA_BACKEND
   if (name == "cuda") return kernels::make_cuda_backend(std::move(setup));
 #endif

@@ -1,8 +1,8 @@
 // Device recordings as HDF5: /device/t [N] (s) and /device/pose [N, 7] (x, y, z in m; qx, qy,
 // qz, qw), the layout a run log's readers already know.
-#include "haptics/recording_formats.hpp"
+#include "config/recording_formats.hpp"
 
-#include "io/hdf5_handle.hpp"
+#include "util/hdf5_handle.hpp"
 #include "util/errors.hpp"
 
 namespace mssph {

@@ -1,6 +1,6 @@
 // Device recordings as CSV: a header naming the columns t,x,y,z,qx,qy,qz,qw (in any order; other
 // columns, e.g. a device's button state, are ignored), then one sample per line.
-#include "haptics/recording_formats.hpp"
+#include "config/recording_formats.hpp"
 
 #include "util/errors.hpp"
 

@@ -1,4 +1,4 @@
-#include "haptics/pose.hpp"
+#include "util/pose.hpp"
 
 #include <cmath>
 

@@ -5,7 +5,7 @@
 //   .h5 / .hdf5   datasets /device/t [N] (s) and /device/pose [N, 7] (x, y, z, qx, qy, qz, qw).
 // Reading validates every row and names the file and the row of the first problem (InputError).
 // Writing uses the same formats, so a run's own trajectory can be replayed (`--record-device`).
-#include "haptics/pose.hpp"
+#include "util/pose.hpp"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "io/hdf5_handle.hpp"
+#include "util/hdf5_handle.hpp"
 
 #include <cerrno>
 #include <cstdlib>

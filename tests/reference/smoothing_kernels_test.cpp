@@ -1,5 +1,5 @@
 // The smoothing kernels (Mueller et al. 2003) against their defining properties.
-#include "sph_kernels.hpp"
+#include "model/lattice_calibration.hpp"
 
 #include <gtest/gtest.h>
 

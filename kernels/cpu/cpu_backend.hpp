@@ -8,9 +8,9 @@
 
 namespace mssph::kernels {
 
-class HostBackend final : public Backend {
+class CpuBackend final : public Backend {
  public:
-  explicit HostBackend(ParticleSetup setup);
+  explicit CpuBackend(ParticleSetup setup);
 
   BackendInfo info() const override;
   std::size_t particle_count() const override { return setup_.size(); }
@@ -26,9 +26,9 @@ class HostBackend final : public Backend {
 
  private:
   void build_grid();
-  void compute_elasticity();
+  void compute_rotations_and_elastic_forces();
   void compute_densities();
-  void compute_forces_and_integrate();
+  void compute_forces_and_advance_particles();
   void advance_rigid_bodies();
   SortedView sorted_view() const;
   DeformableView deformable_view();

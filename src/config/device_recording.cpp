@@ -1,6 +1,6 @@
-#include "haptics/device_recording.hpp"
+#include "config/device_recording.hpp"
 
-#include "haptics/recording_formats.hpp"
+#include "config/recording_formats.hpp"
 #include "util/errors.hpp"
 
 #include <cctype>
