@@ -16,6 +16,7 @@ __global__ void force_probe_kernel(SortedView view, ForceSum* forces) {
 
 ForceEvaluation probe_forces(const FloatScene& scene, DeviceState& state, cudaStream_t stream) {
   const auto n = static_cast<std::uint32_t>(state.position.size());
+  // Outside the scene's device arrays: a probe runs in tests and validation, never in a step.
   DeviceBuffer<ForceSum> forces(n);
   force_probe_kernel<<<blocks_for(n), kBlock, 0, stream>>>(sorted_view(scene, state), forces.data());
   cuda_check(cudaGetLastError(), "launch force probe");
