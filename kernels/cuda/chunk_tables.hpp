@@ -1,0 +1,78 @@
+#pragma once
+// The chunk tables of the `cuda` backend's per-body reductions, built on the host (no CUDA here,
+// so they are tested without a GPU). A body of a million particles is summed by many blocks, one
+// per chunk of at most kChunk particles; every sum runs in a fixed order (strided per thread,
+// CUB's block tree, then the chunks in order): no atomics, so runs repeat bit for bit.
+#include "../common/float_scene.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace mssph::kernels {
+
+inline constexpr std::uint32_t kChunk = 4096;
+
+// A run of at most kChunk particles of one movable rigid body: its interaction wrench.
+struct RigidChunk {
+  std::uint32_t rigid;  // index of the rigid body
+  std::uint32_t first;  // canonical particle range
+  std::uint32_t count;
+};
+
+inline constexpr std::uint32_t kNotDeformable = 0xffffffffu;
+
+// A run of at most kChunk particles of one body (any kind), for the logged per-body sums.
+struct BodyChunk {
+  std::uint32_t body;
+  std::uint32_t first;
+  std::uint32_t count;
+  std::uint32_t first_deformable;   // deformable index of particle `first`, else kNotDeformable
+  float lowest_valid_volume_ratio;  // deformable bodies: the model's lowest valid det F
+};
+
+struct ChunkTables {
+  std::vector<RigidChunk> rigid;
+  std::vector<std::uint32_t> first_rigid_chunk;  // per rigid body, plus the end
+  std::vector<BodyChunk> body;
+};
+
+inline ChunkTables make_chunk_tables(const FloatScene& scene, const std::vector<BodySetup>& bodies) {
+  ChunkTables tables;
+  for (std::uint32_t r = 0; r < scene.rigid_bodies.size(); ++r) {
+    tables.first_rigid_chunk.push_back(static_cast<std::uint32_t>(tables.rigid.size()));
+    const RigidBody& body = scene.rigid_bodies[r];
+    for (std::uint32_t first = body.first; first < body.first + body.count; first += kChunk) {
+      tables.rigid.push_back({r, first, std::min(kChunk, body.first + body.count - first)});
+    }
+  }
+  tables.first_rigid_chunk.push_back(static_cast<std::uint32_t>(tables.rigid.size()));
+  for (std::uint32_t b = 0; b < bodies.size(); ++b) {
+    const auto first = static_cast<std::uint32_t>(bodies[b].first);
+    const auto end = first + static_cast<std::uint32_t>(bodies[b].count);
+    const ElasticParameters* elastic = nullptr;
+    for (const ElasticParameters& e : scene.elastic_bodies) {
+      if (e.first_particle == first && bodies[b].kind == BodyKind::deformable) elastic = &e;
+    }
+    for (std::uint32_t f = first; f < end; f += kChunk) {
+      tables.body.push_back({b, f, std::min(kChunk, end - f),
+                             elastic ? elastic->first_deformable + (f - first) : kNotDeformable,
+                             elastic ? elastic->lowest_valid_volume_ratio : 0.0f});
+    }
+  }
+  return tables;
+}
+
+// What a logged sample reads back, in one allocation so that it comes back in one copy: the
+// body-sum partials of every chunk, then (16-byte aligned) a copy of the rigid bodies' states.
+struct ReadbackLayout {
+  std::size_t rigid_offset;  // [bytes]
+  std::size_t bytes;
+
+  ReadbackLayout(std::size_t body_chunks, std::size_t rigid_bodies)
+      : rigid_offset((body_chunks * sizeof(BodySums) + 15) / 16 * 16),
+        bytes(rigid_offset + rigid_bodies * sizeof(RigidBody)) {}
+};
+
+}  // namespace mssph::kernels

@@ -1,0 +1,135 @@
+#pragma once
+// Every device array the `cuda` backend holds for a scene, in ONE list (for_each_device_array)
+// that both allocates them (device_state.cu) and counts their bytes before anything is allocated
+// (device_array_sizes below): the memory check and the allocation cannot disagree. No CUDA here,
+// so the list is tested without a GPU.
+#include "chunk_tables.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace mssph::kernels {
+
+// A device array's first contents: a copy of a host array, `count` copies of a value, or
+// `count` elements that a kernel writes before any reads them.
+template <class T>
+struct CopyOf {
+  const std::vector<T>* host;
+  std::size_t count;
+};
+template <class T>
+CopyOf<T> copy_of(const std::vector<T>& host) {
+  return {&host, host.size()};
+}
+template <class T>
+struct Filled {
+  std::size_t count;
+  T value;
+};
+struct Uninitialised {
+  std::size_t count;
+};
+
+// The arrays, each an Array<T>: DeviceBuffer<T> on the GPU (DeviceState), ArraySize<T> when
+// counting.
+template <template <class> class Array>
+struct DeviceArrays {
+  // Canonical state.
+  Array<Vec4> position, velocity, interaction_force, rest_offset;
+  Array<std::uint32_t> body;
+  Array<std::uint8_t> fixed;
+  // The neighbour grid and the cell-ordered copies.
+  Array<std::uint32_t> keys, sorted_id, cell_count, cell_start;
+  Array<Vec4> sorted_position, sorted_velocity;
+  Array<VolumePressure> volume_pressure;
+  Array<unsigned char> scan_storage;  // CUB's temporary storage for the cell-table scan
+  // Deformable bodies (empty without them).
+  Array<Vec4> elastic_force;
+  Array<ElasticParameters> elastic_bodies;
+  Array<std::uint32_t> deformable_body, bond_start;
+  Array<RestBond> bonds;
+  Array<float> rest_volume;
+  Array<Quat> rotation;
+  Array<Mat3> stress_action, deformation;
+  // Bodies, the rigid-body chunk reductions and the logged sums' read-back.
+  Array<BodyParameters> bodies;
+  Array<RigidBody> rigid_bodies;
+  Array<RigidChunk> rigid_chunks;
+  Array<std::uint32_t> first_rigid_chunk;
+  Array<Wrench> chunk_wrench;
+  Array<std::uint32_t> rigid_tickets;  // per rigid body: chunks done this step
+  Array<BodyChunk> body_chunks;
+  Array<unsigned char> readback;  // ReadbackLayout
+};
+
+// Calls visit(name, array, contents) for every array of a scene, contents being CopyOf<T>,
+// Filled<T> or Uninitialised. `scan_bytes`: CUB's temporary storage for the cell-table scan
+// (scan_temp_bytes, which needs the CUDA runtime).
+template <template <class> class Array, class Visit>
+void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, const ChunkTables& chunks,
+                           std::size_t scan_bytes, Visit&& visit) {
+  const std::size_t n = scene.position.size();
+  const std::size_t cell_table = std::size_t{scene.grid.cell_count()} + 1;
+  const Vec4 zero{0, 0, 0, 0};
+  visit("position", a.position, copy_of(scene.position));
+  visit("velocity", a.velocity, copy_of(scene.velocity));
+  visit("interaction_force", a.interaction_force, Filled<Vec4>{n, zero});
+  visit("rest_offset", a.rest_offset, copy_of(scene.rest_offset));
+  const std::size_t deformables = scene.deformable_body.size();
+  if (deformables > 0) {
+    visit("elastic_force", a.elastic_force, Filled<Vec4>{n, zero});
+    visit("elastic_bodies", a.elastic_bodies, copy_of(scene.elastic_bodies));
+    visit("deformable_body", a.deformable_body, copy_of(scene.deformable_body));
+    visit("bond_start", a.bond_start, copy_of(scene.bond_start));
+    visit("bonds", a.bonds, copy_of(scene.bonds));
+    visit("rest_volume", a.rest_volume, copy_of(scene.rest_volume));
+    visit("rotation", a.rotation, Filled<Quat>{deformables, Quat{0, 0, 0, 1}});
+    visit("stress_action", a.stress_action, Uninitialised{deformables});
+    // Identity until the first step: the logged volume ratio of the rest state is 1.
+    visit("deformation", a.deformation, Filled<Mat3>{deformables, identity_mat3()});
+  }
+  visit("body", a.body, copy_of(scene.body));
+  visit("fixed", a.fixed, copy_of(scene.fixed));
+  visit("keys", a.keys, Uninitialised{n});
+  visit("sorted_id", a.sorted_id, Uninitialised{n});
+  // Zero at the start; the slot kernel takes every count back to zero for the next step.
+  visit("cell_count", a.cell_count, Filled<std::uint32_t>{cell_table, 0u});
+  visit("cell_start", a.cell_start, Uninitialised{cell_table});
+  visit("sorted_position", a.sorted_position, Uninitialised{n});
+  visit("sorted_velocity", a.sorted_velocity, Uninitialised{n});
+  visit("volume_pressure", a.volume_pressure, Filled<VolumePressure>{n, VolumePressure{0, 0}});
+  visit("scan_storage", a.scan_storage, Uninitialised{scan_bytes});
+  visit("bodies", a.bodies, copy_of(scene.bodies));
+  visit("rigid_bodies", a.rigid_bodies, copy_of(scene.rigid_bodies));
+  visit("rigid_chunks", a.rigid_chunks, copy_of(chunks.rigid));
+  visit("first_rigid_chunk", a.first_rigid_chunk, copy_of(chunks.first_rigid_chunk));
+  visit("chunk_wrench", a.chunk_wrench, Uninitialised{chunks.rigid.size()});
+  // Zero at the start; the block that takes a body's last ticket sets it back to zero.
+  visit("rigid_tickets", a.rigid_tickets, Filled<std::uint32_t>{scene.rigid_bodies.size(), 0u});
+  visit("body_chunks", a.body_chunks, copy_of(chunks.body));
+  visit("readback", a.readback, Uninitialised{ReadbackLayout(chunks.body.size(), scene.rigid_bodies.size()).bytes});
+}
+
+// The size of one array, for counting before allocating.
+template <class T>
+struct ArraySize {
+  std::size_t count = 0;
+  std::size_t bytes() const { return count * sizeof(T); }
+};
+
+struct DeviceArraySizes {
+  DeviceArrays<ArraySize> arrays;
+  std::size_t total_bytes = 0;
+};
+
+inline DeviceArraySizes device_array_sizes(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes) {
+  DeviceArraySizes sizes;
+  for_each_device_array(sizes.arrays, scene, chunks, scan_bytes, [&](const char*, auto& array, const auto& contents) {
+    array.count = contents.count;
+    sizes.total_bytes += array.bytes();
+  });
+  return sizes;
+}
+
+}  // namespace mssph::kernels

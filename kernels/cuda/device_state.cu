@@ -1,0 +1,86 @@
+#include "device_state.cuh"
+
+#include "util/errors.hpp"
+
+#include <sstream>
+
+namespace mssph::kernels {
+namespace {
+
+std::string describe_bytes(std::size_t bytes) {
+  std::ostringstream out;
+  out.precision(3);
+  out << static_cast<double>(bytes) / (1024.0 * 1024.0) << " MiB";
+  return out.str();
+}
+
+// The visitor of for_each_device_array that allocates each array and gives it its first contents.
+struct Allocate {
+  template <class T>
+  void operator()(const char* name, DeviceBuffer<T>& array, const CopyOf<T>& contents) const {
+    array = allocate<T>(name, contents.count);
+    if (contents.count > 0) array.upload(*contents.host);
+  }
+  template <class T>
+  void operator()(const char* name, DeviceBuffer<T>& array, const Filled<T>& contents) const {
+    array = allocate<T>(name, contents.count);
+    if (contents.count > 0) array.upload(std::vector<T>(contents.count, contents.value));
+  }
+  template <class T>
+  void operator()(const char* name, DeviceBuffer<T>& array, const Uninitialised& contents) const {
+    array = allocate<T>(name, contents.count);
+  }
+
+  template <class T>
+  static DeviceBuffer<T> allocate(const char* name, std::size_t count) {
+    try {
+      return DeviceBuffer<T>(count);
+    } catch (const CudaError& e) {
+      throw CudaError(std::string(e.what()) + " (array " + name + ", " + describe_bytes(count * sizeof(T)) + ")");
+    }
+  }
+};
+
+}  // namespace
+
+DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes,
+                                  const std::string& device_name) {
+  const std::size_t needed = device_array_sizes(scene, chunks, scan_bytes).total_bytes;
+  std::size_t free_bytes = 0;
+  std::size_t total_bytes = 0;
+  cuda_check(cudaMemGetInfo(&free_bytes, &total_bytes), "read free device memory");
+  if (needed > free_bytes) {
+    throw InputError("the scene does not fit on " + device_name + ": " + std::to_string(scene.position.size()) +
+                     " particles need " + describe_bytes(needed) + " of device memory, " + describe_bytes(free_bytes) +
+                     " of " + describe_bytes(total_bytes) + " are free");
+  }
+  DeviceState state;
+  for_each_device_array(state, scene, chunks, scan_bytes, Allocate{});
+  return state;
+}
+
+SortedView sorted_view(const FloatScene& scene, const DeviceState& state) {
+  return SortedView{scene.step,
+                    state.bodies.data(),
+                    CellRanges{scene.grid, state.cell_start.data()},
+                    state.sorted_position.data(),
+                    state.sorted_velocity.data(),
+                    state.sorted_id.data(),
+                    state.volume_pressure.data()};
+}
+
+// elastic_force is empty, so null, without deformable bodies.
+CanonicalState canonical_state(DeviceState& state) {
+  return CanonicalState{state.position.data(),      state.velocity.data(), state.interaction_force.data(),
+                        state.elastic_force.data(), state.body.data(),     state.fixed.data()};
+}
+
+DeformableView deformable_view(DeviceState& state) {
+  return DeformableView{state.elastic_bodies.data(), state.deformable_body.data(), state.bond_start.data(),
+                        state.bonds.data(),          state.rest_volume.data(),     state.position.data(),
+                        state.velocity.data(),       state.rotation.data(),        state.stress_action.data(),
+                        state.deformation.data(),    state.elastic_force.data(),
+                        static_cast<std::uint32_t>(state.deformable_body.size())};
+}
+
+}  // namespace mssph::kernels

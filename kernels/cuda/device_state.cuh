@@ -1,0 +1,24 @@
+#pragma once
+// A scene's device arrays (the list in device_arrays.hpp, allocated) and the views the kernels
+// take of them.
+#include "../common/elastic_physics.hpp"
+#include "../common/particle_views.hpp"
+#include "device_arrays.hpp"
+#include "device_buffer.hpp"
+
+#include <string>
+
+namespace mssph::kernels {
+
+using DeviceState = DeviceArrays<DeviceBuffer>;
+
+// Allocates and fills every array of for_each_device_array. Throws InputError before allocating
+// when they do not fit into the device's free memory (naming particles and bytes).
+DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes,
+                                  const std::string& device_name);
+
+SortedView sorted_view(const FloatScene& scene, const DeviceState& state);
+CanonicalState canonical_state(DeviceState& state);
+DeformableView deformable_view(DeviceState& state);
+
+}  // namespace mssph::kernels

@@ -1,0 +1,85 @@
+#include "rigid_bodies.cuh"
+
+#include "thread_blocks.cuh"
+
+#include <cub/cub.cuh>
+
+namespace mssph::kernels {
+namespace {
+
+struct WrenchSum {
+  __device__ Wrench operator()(const Wrench& a, const Wrench& b) const { return a + b; }
+};
+
+// One block per chunk: the wrench of its particles' interaction forces about the body's centre.
+// The block that finishes a body's last chunk (a ticket counter tells) then adds the body's chunk
+// wrenches in chunk order and integrates the body (eq. 8, 9): which block does it varies, the sum's
+// order does not, so runs repeat bit for bit.
+__global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBody* bodies, CanonicalState state,
+                                              Wrench* partial, const std::uint32_t* first_chunk,
+                                              std::uint32_t* tickets, StepParameters step) {
+  using BlockReduce = cub::BlockReduce<Wrench, kBlock>;
+  __shared__ typename BlockReduce::TempStorage reduce_storage;
+  __shared__ bool last;
+  const RigidChunk chunk = chunks[blockIdx.x];
+  const Vec3 centre = bodies[chunk.rigid].position;
+  Wrench wrench{{0, 0, 0}, {0, 0, 0}};
+  for (std::uint32_t i = chunk.first + threadIdx.x; i < chunk.first + chunk.count; i += blockDim.x) {
+    wrench = wrench + particle_wrench(xyz(state.position[i]), xyz(state.interaction_force[i]), centre);
+  }
+  const Wrench total = BlockReduce(reduce_storage).Reduce(wrench, WrenchSum());
+  if (threadIdx.x == 0) {
+    partial[blockIdx.x] = total;
+    __threadfence();  // the partial is visible before the ticket is taken
+    const std::uint32_t chunks_of_body = first_chunk[chunk.rigid + 1] - first_chunk[chunk.rigid];
+    last = atomicAdd(&tickets[chunk.rigid], 1u) + 1u == chunks_of_body;
+  }
+  __syncthreads();
+  if (!last || threadIdx.x != 0) return;
+  __threadfence();
+  tickets[chunk.rigid] = 0;  // ready for the next step
+  Wrench sum{{0, 0, 0}, {0, 0, 0}};
+  for (std::uint32_t c = first_chunk[chunk.rigid]; c < first_chunk[chunk.rigid + 1]; ++c) {
+    // Loaded from L2 (other blocks wrote them; this block's L1 may not hold them yet).
+    const float* w = reinterpret_cast<const float*>(partial + c);
+    sum = sum + Wrench{{__ldcg(w), __ldcg(w + 1), __ldcg(w + 2)}, {__ldcg(w + 3), __ldcg(w + 4), __ldcg(w + 5)}};
+  }
+  RigidBody body = bodies[chunk.rigid];
+  body.interaction_force = sum.force;
+  body.interaction_torque = sum.torque;
+  integrate_rigid_body(body, step.gravity, step.dt);
+  bodies[chunk.rigid] = body;
+}
+
+// One block per chunk: its particles follow the body.
+__global__ void rigid_place_kernel(const RigidChunk* chunks, const RigidBody* bodies, CanonicalState state,
+                                   const Vec4* rest_offset) {
+  __shared__ RigidBody body;
+  __shared__ Mat3 rotation;
+  __shared__ Vec3 omega;
+  const RigidChunk chunk = chunks[blockIdx.x];
+  if (threadIdx.x == 0) {
+    body = bodies[chunk.rigid];
+    rotation = rotation_matrix(body.orientation);
+    omega = angular_velocity(body);
+  }
+  __syncthreads();
+  for (std::uint32_t i = chunk.first + threadIdx.x; i < chunk.first + chunk.count; i += blockDim.x) {
+    place_rigid_particle(body, rotation, omega, xyz(rest_offset[i]), state.position[i], state.velocity[i]);
+  }
+}
+
+}  // namespace
+
+void launch_rigid_bodies(const FloatScene& scene, DeviceState& state, cudaStream_t stream) {
+  if (scene.rigid_bodies.empty()) return;
+  const auto chunks = static_cast<unsigned>(state.rigid_chunks.size());
+  rigid_wrench_integrate_kernel<<<chunks, kBlock, 0, stream>>>(state.rigid_chunks.data(), state.rigid_bodies.data(),
+                                                               canonical_state(state), state.chunk_wrench.data(),
+                                                               state.first_rigid_chunk.data(),
+                                                               state.rigid_tickets.data(), scene.step);
+  rigid_place_kernel<<<chunks, kBlock, 0, stream>>>(state.rigid_chunks.data(), state.rigid_bodies.data(),
+                                                    canonical_state(state), state.rest_offset.data());
+}
+
+}  // namespace mssph::kernels

@@ -1,0 +1,11 @@
+#pragma once
+// Rigid-body dynamics on the GPU (paper eq. 8, 9): each movable body's interaction wrench summed
+// over its particles by chunks (chunk_tables.hpp), the body integrated, its particles placed.
+#include "device_state.cuh"
+
+namespace mssph::kernels {
+
+// Nothing without movable rigid bodies.
+void launch_rigid_bodies(const FloatScene& scene, DeviceState& state, cudaStream_t stream);
+
+}  // namespace mssph::kernels

@@ -1,0 +1,108 @@
+#include "step_kernels.cuh"
+
+#include "../common/fluid_physics.hpp"
+#include "thread_blocks.cuh"
+
+#include <type_traits>
+
+namespace mssph::kernels {
+namespace {
+
+__global__ void rotation_stress_kernel(DeformableView view) {
+  const std::uint32_t d = blockIdx.x * blockDim.x + threadIdx.x;
+  if (d < view.count) rotation_and_stress(view, d);
+}
+
+__global__ void elastic_force_kernel(DeformableView view) {
+  const std::uint32_t d = blockIdx.x * blockDim.x + threadIdx.x;
+  if (d < view.count) elastic_force(view, d);
+}
+
+// The neighbour sums give each particle a team of Lanes consecutive lanes of a warp (1 to 8,
+// see choose_team_lanes): the lanes split its candidates (CellRanges::for_each_candidate) and add
+// their partial sums by shuffles in a fixed order, so a sum's order depends only on Lanes.
+template <unsigned Lanes>
+__device__ float team_sum(float x) {
+  for (unsigned offset = 1; offset < Lanes; offset *= 2) x += __shfl_xor_sync(0xffffffffu, x, offset);
+  return x;
+}
+template <unsigned Lanes>
+__device__ Vec3 team_sum(Vec3 v) {
+  return {team_sum<Lanes>(v.x), team_sum<Lanes>(v.y), team_sum<Lanes>(v.z)};
+}
+
+template <unsigned Lanes>
+__global__ void density_kernel(SortedView view, VolumePressure* volume_pressure) {
+  const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
+  const std::uint32_t s = thread / Lanes;
+  const unsigned lane = thread % Lanes;
+  const bool active = s < view.step.particle_count;
+  DensitySum sum{0.0f};
+  if (active) sum = density_sum(view, s, lane, Lanes);
+  sum.delta = team_sum<Lanes>(sum.delta);
+  if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s).volume_pressure;
+}
+
+template <unsigned Lanes>
+__global__ void forces_kernel(SortedView view, CanonicalState state) {
+  const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
+  const std::uint32_t s = thread / Lanes;
+  const unsigned lane = thread % Lanes;
+  const bool active = s < view.step.particle_count;
+  ForceSum sum = zero_force_sum();
+  if (active) sum = force_sum(view, load_force_particle(view, s), lane, Lanes);
+  sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction)};
+  if (active && lane == 0) apply_forces(view, state, s, sum);
+}
+
+// Calls launch(std::integral_constant<unsigned, L>) for the team size L = lanes, so each launch
+// site names its kernel once.
+template <class Launch>
+void with_team_lanes(unsigned lanes, Launch&& launch) {
+  switch (lanes) {
+    case 8: launch(std::integral_constant<unsigned, 8>{}); break;
+    case 4: launch(std::integral_constant<unsigned, 4>{}); break;
+    case 2: launch(std::integral_constant<unsigned, 2>{}); break;
+    default: launch(std::integral_constant<unsigned, 1>{}); break;
+  }
+}
+
+}  // namespace
+
+// A small scene then has ~8x the threads in flight; a scene that fills the GPU on its own keeps
+// one lane per particle, which wastes no shuffles.
+unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads) {
+  unsigned lanes = 8;
+  while (lanes > 1 && particles * lanes > 2 * resident_threads) lanes /= 2;
+  return lanes;
+}
+
+void launch_elasticity(DeviceState& state, cudaStream_t stream) {
+  const DeformableView view = deformable_view(state);
+  if (view.count == 0) return;
+  rotation_stress_kernel<<<blocks_for(view.count), kBlock, 0, stream>>>(view);
+  elastic_force_kernel<<<blocks_for(view.count), kBlock, 0, stream>>>(view);
+}
+
+void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream) {
+  const std::size_t n = state.position.size();
+  with_team_lanes(team_lanes, [&](auto lanes) {
+    constexpr unsigned L = decltype(lanes)::value;
+    density_kernel<L><<<blocks_for(n * L), kBlock, 0, stream>>>(sorted_view(scene, state), state.volume_pressure.data());
+  });
+}
+
+void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream) {
+  const std::size_t n = state.position.size();
+  with_team_lanes(team_lanes, [&](auto lanes) {
+    constexpr unsigned L = decltype(lanes)::value;
+    forces_kernel<L><<<blocks_for(n * L), kBlock, 0, stream>>>(sorted_view(scene, state), canonical_state(state));
+  });
+}
+
+cudaError_t step_kernels_loadable() {
+  cudaFuncAttributes attributes{};
+  return cudaFuncGetAttributes(&attributes, density_kernel<1>);
+}
+
+}  // namespace mssph::kernels

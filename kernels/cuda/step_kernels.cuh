@@ -1,0 +1,27 @@
+#pragma once
+// The step's per-particle phases on the GPU, each a thin loop around one of the shared functions
+// of kernels/common: rotations and elastic forces of deformable particles, densities, forces with
+// the leap-frog integration of the particles.
+#include "device_state.cuh"
+
+#include <cstddef>
+
+namespace mssph::kernels {
+
+// Lanes per particle of the density and force sums: the most (up to 8) that keep
+// particles * lanes within two waves of resident threads.
+unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads);
+
+// Rotations and stresses of every deformable particle, then their elastic forces (nothing
+// without deformable bodies).
+void launch_elasticity(DeviceState& state, cudaStream_t stream);
+// Volume and pressure of every sorted particle.
+void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream);
+// Pressure, viscosity and interaction forces of every sorted particle, integrated (leap-frog).
+void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream);
+
+// cudaSuccess when this build's kernels can run on the current device (its compute capability
+// is among the architectures compiled for).
+cudaError_t step_kernels_loadable();
+
+}  // namespace mssph::kernels

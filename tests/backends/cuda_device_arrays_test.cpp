@@ -1,0 +1,192 @@
+// The cuda backend's device arrays come from one list (kernels/cuda/device_arrays.hpp) that both
+// allocates them and counts their bytes for the memory check and cuda_backend_bytes; its chunk
+// tables cut bodies for the fixed-order reductions. Both are host code: checked here without a GPU
+// (and without a CUDA build).
+#include "backend_fixtures.hpp"
+#include "cuda/device_arrays.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace mssph::testing {
+namespace {
+
+using kernels::ArraySize;
+using kernels::ChunkTables;
+using kernels::DeviceArrays;
+using kernels::FloatScene;
+using kernels::kChunk;
+
+struct ListedArray {
+  std::string name;
+  std::size_t bytes;
+};
+
+template <class T>
+std::size_t element_bytes(const ArraySize<T>&) {
+  return sizeof(T);
+}
+
+// Every array the list visits, with its bytes, in the list's order.
+std::vector<ListedArray> listed_arrays(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes) {
+  DeviceArrays<ArraySize> arrays;
+  std::vector<ListedArray> listed;
+  kernels::for_each_device_array(arrays, scene, chunks, scan_bytes, [&](const char* name, auto& array, const auto& contents) {
+    listed.push_back({name, element_bytes(array) * contents.count});
+  });
+  return listed;
+}
+
+std::size_t bytes_of(const std::vector<ListedArray>& listed, const std::string& name) {
+  for (const ListedArray& a : listed) {
+    if (a.name == name) return a.bytes;
+  }
+  ADD_FAILURE() << "no device array " << name;
+  return 0;
+}
+
+std::size_t chunks_of(std::size_t particles) { return (particles + kChunk - 1) / kChunk; }
+
+// The deformable scene has every kind of array: fluid-free, but an elastic block, a rigid sphere
+// and a boundary.
+struct DeviceArraysTest : ::testing::Test {
+  ParticleSetup setup = coarse_scene("sphere_drop_deformable.json", 0.01);
+  FloatScene scene = kernels::make_float_scene(setup);
+  ChunkTables chunks = kernels::make_chunk_tables(scene, setup.bodies);
+  static constexpr std::size_t kScanBytes = 1000;  // stands in for CUB's figure (needs the CUDA runtime)
+};
+
+TEST_F(DeviceArraysTest, CountedBytesAreTheSumOfTheListedArrays) {
+  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes);
+  std::size_t sum = 0;
+  for (const ListedArray& a : listed) sum += a.bytes;
+  EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes).total_bytes, sum);
+  EXPECT_EQ(bytes_of(listed, "scan_storage"), kScanBytes);
+}
+
+// An array declared in DeviceArrays but allocated outside the list would escape the count: every
+// member must be listed once. All ArraySize<T> are one std::size_t, so the members are counted by
+// size.
+TEST_F(DeviceArraysTest, EveryDeclaredArrayIsListedOnce) {
+  static_assert(sizeof(ArraySize<kernels::Mat3>) == sizeof(std::size_t) && sizeof(ArraySize<char>) == sizeof(std::size_t));
+  constexpr std::size_t declared = sizeof(DeviceArrays<ArraySize>) / sizeof(std::size_t);
+  ASSERT_FALSE(scene.deformable_body.empty());
+  ASSERT_FALSE(scene.rigid_bodies.empty());
+  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes);
+  std::set<std::string> names;
+  for (const ListedArray& a : listed) names.insert(a.name);
+  EXPECT_EQ(names.size(), listed.size()) << "an array is listed twice";
+  EXPECT_EQ(listed.size(), declared);
+}
+
+// The sizes follow from the scene alone: n particles, the grid's cells, deformable particles and
+// their bonds, chunks of at most kChunk particles.
+TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
+  const std::size_t n = setup.size();
+  const std::size_t cells = scene.grid.cell_count();
+  const std::size_t deformables = scene.deformable_body.size();
+  std::size_t rigid_chunks = 0;
+  std::size_t body_chunks = 0;
+  std::size_t rigid_bodies = 0;
+  std::size_t deformable_particles = 0;
+  for (const BodySetup& body : setup.bodies) {
+    body_chunks += chunks_of(body.count);
+    if (body.moves_as_rigid_body()) {
+      rigid_chunks += chunks_of(body.count);
+      ++rigid_bodies;
+    }
+    if (body.kind == BodyKind::deformable) deformable_particles += body.count;
+  }
+  ASSERT_EQ(deformables, deformable_particles);
+  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes);
+  EXPECT_EQ(bytes_of(listed, "position"), n * 16);
+  EXPECT_EQ(bytes_of(listed, "sorted_id"), n * 4);
+  EXPECT_EQ(bytes_of(listed, "cell_start"), (cells + 1) * 4);
+  EXPECT_EQ(bytes_of(listed, "elastic_force"), n * 16);
+  EXPECT_EQ(bytes_of(listed, "rotation"), deformables * sizeof(kernels::Quat));
+  EXPECT_EQ(bytes_of(listed, "bond_start"), (deformables + 1) * 4);
+  EXPECT_EQ(bytes_of(listed, "bonds"), scene.bonds.size() * sizeof(kernels::RestBond));
+  EXPECT_EQ(bytes_of(listed, "rigid_bodies"), rigid_bodies * sizeof(kernels::RigidBody));
+  EXPECT_EQ(bytes_of(listed, "rigid_chunks"), rigid_chunks * sizeof(kernels::RigidChunk));
+  EXPECT_EQ(bytes_of(listed, "chunk_wrench"), rigid_chunks * sizeof(kernels::Wrench));
+  EXPECT_EQ(bytes_of(listed, "body_chunks"), body_chunks * sizeof(kernels::BodyChunk));
+  // The partial sums, padded to 16 bytes, then the rigid bodies.
+  const std::size_t sums = body_chunks * sizeof(kernels::BodySums);
+  EXPECT_GE(bytes_of(listed, "readback"), sums + rigid_bodies * sizeof(kernels::RigidBody));
+  EXPECT_LT(bytes_of(listed, "readback"), sums + 16 + rigid_bodies * sizeof(kernels::RigidBody));
+}
+
+// The count changes exactly by the arrays a scene adds: the same scene without its deformable
+// data loses the deformable arrays' bytes, summed here by hand from their element types.
+TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
+  FloatScene without = scene;
+  without.elastic_bodies.clear();
+  without.deformable_body.clear();
+  without.bond_start.assign(1, 0u);
+  without.bonds.clear();
+  without.rest_volume.clear();
+  const std::size_t n = setup.size();
+  const std::size_t d = scene.deformable_body.size();
+  const std::size_t deformable_bytes =
+      n * sizeof(kernels::Vec4) +                                           // elastic_force
+      scene.elastic_bodies.size() * sizeof(kernels::ElasticParameters) +    // elastic_bodies
+      d * (sizeof(std::uint32_t) + sizeof(float) + sizeof(kernels::Quat)) + // deformable_body, rest_volume, rotation
+      d * 2 * sizeof(kernels::Mat3) +                                       // stress_action, deformation
+      (d + 1) * sizeof(std::uint32_t) +                                     // bond_start
+      scene.bonds.size() * sizeof(kernels::RestBond);                       // bonds
+  EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes).total_bytes -
+                kernels::device_array_sizes(without, chunks, kScanBytes).total_bytes,
+            deformable_bytes);
+}
+
+// Synthetic bodies: a rigid body of 2 kChunk + 5 particles and a deformable one of 3 particles
+// behind a fluid of 10.
+TEST(ChunkTables, ChunksCoverEachBodyInOrderWithAtMostKChunkParticles) {
+  FloatScene scene;
+  kernels::RigidBody rigid{};
+  rigid.first = 10;
+  rigid.count = 2 * kChunk + 5;
+  scene.rigid_bodies = {rigid};
+  kernels::ElasticParameters elastic{};
+  elastic.first_particle = 10 + rigid.count;
+  elastic.first_deformable = 0;
+  elastic.lowest_valid_volume_ratio = 0.25f;
+  scene.elastic_bodies = {elastic};
+  std::vector<BodySetup> bodies(3);
+  bodies[0].kind = BodyKind::fluid;
+  bodies[0].count = 10;
+  bodies[1].kind = BodyKind::rigid;
+  bodies[1].first = 10;
+  bodies[1].count = rigid.count;
+  bodies[2].kind = BodyKind::deformable;
+  bodies[2].first = elastic.first_particle;
+  bodies[2].count = 3;
+
+  const ChunkTables tables = kernels::make_chunk_tables(scene, bodies);
+  ASSERT_EQ(tables.rigid.size(), 3u);
+  EXPECT_EQ(tables.first_rigid_chunk, (std::vector<std::uint32_t>{0, 3}));
+  const std::uint32_t counts[] = {kChunk, kChunk, 5};
+  std::uint32_t next = 10;
+  for (std::size_t c = 0; c < 3; ++c) {
+    EXPECT_EQ(tables.rigid[c].rigid, 0u);
+    EXPECT_EQ(tables.rigid[c].first, next);
+    EXPECT_EQ(tables.rigid[c].count, counts[c]);
+    next += counts[c];
+  }
+  // Body chunks: the fluid's one, the rigid body's three, the deformable body's one (which knows
+  // its deformable index and its model's limit).
+  ASSERT_EQ(tables.body.size(), 5u);
+  EXPECT_EQ(tables.body[0].body, 0u);
+  EXPECT_EQ(tables.body[0].first_deformable, kernels::kNotDeformable);
+  EXPECT_EQ(tables.body[3].first, 10 + kChunk * 2);
+  EXPECT_EQ(tables.body[4].body, 2u);
+  EXPECT_EQ(tables.body[4].first, elastic.first_particle);
+  EXPECT_EQ(tables.body[4].first_deformable, 0u);
+  EXPECT_EQ(tables.body[4].lowest_valid_volume_ratio, 0.25f);
+}
+
+}  // namespace
+}  // namespace mssph::testing
