@@ -3,6 +3,8 @@
 // (device_state) and what the logs and the haptic loop read back (body_readback).
 #include "cuda_backend.hpp"
 
+#include "../common/eigen_conversion.hpp"
+#include "../common/read_back.hpp"
 #include "body_readback.cuh"
 #include "cuda_device.cuh"
 #include "force_probe.cuh"
@@ -30,7 +32,7 @@ class CudaBackend final : public Backend {
   void step() override;
   std::vector<BodyState> body_states() override { return readback_.body_states(state_, steps_, stream_); }
   BodyState rigid_body_state(std::size_t body) override {
-    return readback_.rigid_body_state(state_, body, rigid_index(body), steps_, stream_);
+    return readback_.rigid_body_state(state_, body, movable_rigid_index(scene_, body), steps_, stream_);
   }
   ParticleSnapshot snapshot() override;
   std::vector<double> last_phase_seconds() const override;
@@ -40,7 +42,6 @@ class CudaBackend final : public Backend {
 
  private:
   void record_step(cudaStream_t stream);
-  std::uint32_t rigid_index(std::size_t body) const;
 
   ParticleSetup setup_;
   FloatScene scene_;
@@ -152,19 +153,12 @@ std::vector<double> CudaBackend::last_phase_seconds() const {
   return seconds;
 }
 
-std::uint32_t CudaBackend::rigid_index(std::size_t body) const {
-  const std::uint32_t index = body < scene_.bodies.size() ? scene_.bodies[body].rigid_index : kNotRigid;
-  if (index == kNotRigid) throw std::invalid_argument("body " + std::to_string(body) + " is not a movable rigid body");
-  return index;
-}
-
 void CudaBackend::set_external_wrench(std::size_t body, const Eigen::Vector3d& force, const Eigen::Vector3d& torque) {
-  const std::uint32_t index = rigid_index(body);
+  const std::uint32_t index = movable_rigid_index(scene_, body);
   // external_force and external_torque are adjacent members: one small copy, ordered in the
   // stream before the next step; its host source lives in the backend.
   std::array<Vec3, 2>& wrench = external_wrench_[index];
-  wrench = {Vec3{static_cast<float>(force.x()), static_cast<float>(force.y()), static_cast<float>(force.z())},
-            Vec3{static_cast<float>(torque.x()), static_cast<float>(torque.y()), static_cast<float>(torque.z())}};
+  wrench = {to_vec3(force), to_vec3(torque)};
   static_assert(offsetof(RigidBody, external_torque) == offsetof(RigidBody, external_force) + sizeof(Vec3));
   cuda_check(cudaMemcpyAsync(reinterpret_cast<char*>(state_.rigid_bodies.data() + index) + offsetof(RigidBody, external_force),
                              wrench.data(), sizeof wrench, cudaMemcpyHostToDevice, stream_),
@@ -193,7 +187,7 @@ ParticleSnapshot CudaBackend::snapshot() {
   if (stepped_) {
     for (std::size_t s = 0; s < n; ++s) {
       const std::uint32_t i = id[s];
-      out.density[i] = vp[s].volume > 0.0f ? scene_.bodies[scene_.body[i]].sph_mass / vp[s].volume : 0.0f;
+      out.density[i] = particle_density(scene_, i, vp[s]);
       out.pressure[i] = vp[s].pressure;
     }
   }
