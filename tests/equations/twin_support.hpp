@@ -71,8 +71,10 @@ class TwinDraws {
   Eigen::Matrix3d rotation() { return rounded(quaternion().toRotationMatrix()); }
 
   static double rounded(double x) { return static_cast<float>(x); }
-  static Eigen::Matrix3d rounded(const Eigen::Matrix3d& m) { return m.cast<float>().cast<double>(); }
-  static Eigen::Vector3d rounded(const Eigen::Vector3d& v) { return v.cast<float>().cast<double>(); }
+  template <class Derived>
+  static typename Derived::PlainObject rounded(const Eigen::MatrixBase<Derived>& m) {
+    return m.eval().template cast<float>().template cast<double>();
+  }
 
  private:
   std::mt19937_64 random_;
@@ -110,10 +112,9 @@ class TwinComparison {
   TwinComparison& operator=(const TwinComparison&) = delete;
 
   void add(double got, double expected, double scale) { record(std::abs(got - expected), std::abs(expected), scale); }
-  void add(const Eigen::Vector3d& got, const Eigen::Vector3d& expected, double scale) {
-    record((got - expected).norm(), expected.norm(), scale);
-  }
-  void add(const Eigen::Matrix3d& got, const Eigen::Matrix3d& expected, double scale) {
+  // Vectors by their Euclidean norm, matrices by their Frobenius norm.
+  template <class Got, class Expected>
+  void add(const Eigen::MatrixBase<Got>& got, const Eigen::MatrixBase<Expected>& expected, double scale) {
     record((got - expected).norm(), expected.norm(), scale);
   }
 
