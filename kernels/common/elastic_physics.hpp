@@ -79,6 +79,38 @@ MSSPH_HD Quat extract_rotation(const Mat3& a, Quat q) {
   return q;
 }
 
+// What step 1 and eq. 4 need of deformable particle d's rest bonds, gathered in one pass: the
+// moment matrix A = sum_j m_j W_ij x_ij X_ij^T and the two halves of eq. 4,
+// sum_j x_ij d_ij^T and sum_j X_ij d_ij^T. Each half sums terms of size |X_ij| |d_ij| as the
+// per-bond form does, so float32 rounding is of the same order; the bonds, the step's largest
+// read, are read once instead of twice.
+struct BondSums {
+  Mat3 moment;
+  Mat3 current_gradient;
+  Mat3 rest_gradient;
+};
+
+MSSPH_HD BondSums bond_sums(const DeformableView& v, std::uint32_t d, Vec3 x_i) {
+  BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
+  for (std::uint32_t b = v.bond_start[d]; b < v.bond_start[d + 1]; ++b) {
+    const RestBond bond = v.bonds[b];
+    const Vec3 x_ij = xyz(v.position[bond_neighbour(bond)]) - x_i;
+    const Vec3 rest_offset = xyz(bond.offset_weight);
+    const Vec3 d_ij = xyz(bond.d_ij_kernel);
+    sums.moment = sums.moment + outer(bond.offset_weight.w * x_ij, rest_offset);
+    sums.current_gradient = sums.current_gradient + outer(x_ij, d_ij);
+    sums.rest_gradient = sums.rest_gradient + outer(rest_offset, d_ij);
+  }
+  return sums;
+}
+
+// Paper eq. 4, grad u_i = sum_j u_ji (x) d_ij with u_ji = R_i^T x_ij - X_ij, from the bond sums:
+// grad u_i = R_i^T (sum_j x_ij d_ij^T) - sum_j X_ij d_ij^T (reference: displacement_gradient,
+// which sums per bond). The paper prints V0_i where the quadrature weight is V0_j, inside d_ij.
+MSSPH_HD Mat3 displacement_gradient(const Mat3& rotation, const BondSums& sums) {
+  return transpose(rotation) * sums.current_gradient - sums.rest_gradient;
+}
+
 // Paper eq. 5's strain, in the two measures of the material models (reference: cauchy_strain,
 // green_saint_venant_strain): eps = 1/2 (grad u + grad u^T) and
 // E = eps + 1/2 grad u^T grad u = 1/2 (F^T F - I).
@@ -137,38 +169,6 @@ MSSPH_HD Mat3 stress_action(float rest_volume, const Mat3& rotation, const Mat3&
 // world_deformation_gradient), for the zero-energy control and the logged volume ratio det F_i.
 MSSPH_HD Mat3 world_deformation_gradient(const Mat3& rotation, const Mat3& grad_u) {
   return rotation * (identity_mat3() + grad_u);
-}
-
-// What step 1 and eq. 4 need of deformable particle d's rest bonds, gathered in one pass: the
-// moment matrix A = sum_j m_j W_ij x_ij X_ij^T and the two halves of eq. 4,
-// sum_j x_ij d_ij^T and sum_j X_ij d_ij^T. Each half sums terms of size |X_ij| |d_ij| as the
-// per-bond form does, so float32 rounding is of the same order; the bonds, the step's largest
-// read, are read once instead of twice.
-struct BondSums {
-  Mat3 moment;
-  Mat3 current_gradient;
-  Mat3 rest_gradient;
-};
-
-MSSPH_HD BondSums bond_sums(const DeformableView& v, std::uint32_t d, Vec3 x_i) {
-  BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
-  for (std::uint32_t b = v.bond_start[d]; b < v.bond_start[d + 1]; ++b) {
-    const RestBond bond = v.bonds[b];
-    const Vec3 x_ij = xyz(v.position[bond_neighbour(bond)]) - x_i;
-    const Vec3 rest_offset = xyz(bond.offset_weight);
-    const Vec3 d_ij = xyz(bond.d_ij_kernel);
-    sums.moment = sums.moment + outer(bond.offset_weight.w * x_ij, rest_offset);
-    sums.current_gradient = sums.current_gradient + outer(x_ij, d_ij);
-    sums.rest_gradient = sums.rest_gradient + outer(rest_offset, d_ij);
-  }
-  return sums;
-}
-
-// Paper eq. 4, grad u_i = sum_j u_ji (x) d_ij with u_ji = R_i^T x_ij - X_ij, from the bond sums:
-// grad u_i = R_i^T (sum_j x_ij d_ij^T) - sum_j X_ij d_ij^T (reference: displacement_gradient,
-// which sums per bond). The paper prints V0_i where the quadrature weight is V0_j, inside d_ij.
-MSSPH_HD Mat3 displacement_gradient(const Mat3& rotation, const BondSums& sums) {
-  return transpose(rotation) * sums.current_gradient - sums.rest_gradient;
 }
 
 // Step 1 and the elastic part of step 2 for deformable particle d: R_i, grad u_i (eq. 4), P_i
