@@ -195,11 +195,13 @@ MSSPH_HD Vec3 elastic_force_pair(const Mat3& action_i, Vec3 d_ij, const Mat3& ac
 // to where both neighbourhoods' deformations put it (reference: zero_energy_force_pair, with the
 // formula's derivation),
 //   delta = ((F_i + F_j) X_ij - 2 x_ij) . n,  f_i = -(alpha / 2) V0_i V0_j W(|X_ij|) E delta / |X_ij|^2 n.
+// Needs |x_ij| > 0: coincident particles have no pair direction, and the caller skips them
+// (the reference's twin returns zero for them). The test stays with the caller so that the
+// GPU's compiler can still fuse the force sum's multiply-add, as it did before this function.
 MSSPH_HD Vec3 zero_energy_force_pair(const Mat3& world_f_i, const Mat3& world_f_j, Vec3 rest_x_ij, Vec3 x_ij,
                                      float rest_volume_i, float rest_volume_j, float w_rest, float young_modulus,
                                      float alpha) {
   const float r = norm(x_ij);
-  if (!(r > 0.0f)) return Vec3{0.0f, 0.0f, 0.0f};
   const Vec3 n = (1.0f / r) * x_ij;
   const float delta = dot((world_f_i + world_f_j) * rest_x_ij - 2.0f * x_ij, n);
   return (-0.5f * alpha * rest_volume_i * rest_volume_j * w_rest * young_modulus * delta / squared_norm(rest_x_ij)) * n;
@@ -224,9 +226,12 @@ MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) {
     const std::uint32_t dj = body.first_deformable + (j - body.first_particle);
     force += elastic_force_pair(k_i, xyz(bond.d_ij_kernel), v.stress_action[dj], xyz(bond.d_ji_neighbour));
     if (body.zero_energy_stiffness > 0.0f) {
-      force += zero_energy_force_pair(f_i, v.deformation[dj], xyz(bond.offset_weight), xyz(v.position[j]) - x_i,
-                                      v.rest_volume[d], v.rest_volume[dj], bond.d_ij_kernel.w, body.young_modulus,
-                                      body.zero_energy_stiffness);
+      const Vec3 x_ij = xyz(v.position[j]) - x_i;
+      if (norm(x_ij) > 0.0f) {
+        force += zero_energy_force_pair(f_i, v.deformation[dj], xyz(bond.offset_weight), x_ij, v.rest_volume[d],
+                                        v.rest_volume[dj], bond.d_ij_kernel.w, body.young_modulus,
+                                        body.zero_energy_stiffness);
+      }
     }
   }
   if (body.damping > 0.0f) force += damping_force(body.damping, body.particle_mass, xyz(v.velocity[i]));
