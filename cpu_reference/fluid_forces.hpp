@@ -47,9 +47,9 @@ inline Eigen::Vector3d interaction_force(const Eigen::Vector3d& pressure, const 
 }
 
 // The pressure and viscosity forces of all particles. Forces between particles of one fluid body
-// go to internal_force, forces between particles of different bodies to interaction_force. Rigid, deformable and boundary bodies feel no pressure or
-// viscosity from their own particles (their internal forces are rigidity and elasticity).
-// Boundary particles receive no force.
+// go to internal_force, forces between particles of different bodies to interaction_force.
+// Rigid, deformable and boundary bodies feel no pressure or viscosity from their own particles
+// (their internal forces are rigidity and elasticity). Boundary particles receive no force.
 void compute_pressure_viscosity_forces(const ParticleSetup& setup, const NeighbourLists& neighbours,
                                        ParticleState& state);
 
