@@ -28,7 +28,7 @@ struct RigidMotion {
 
 RigidMotion rigid_motion_of(const ParticleSetup& setup, const ParticleState& particles, const BodySetup& body);
 
-// f_i = -gamma m_i (v_i - v_ref).
+// f_i = -gamma m_i (v_i - v_ref). Float twin: kernels::damping_force (v_ref = 0 there).
 inline Eigen::Vector3d damping_force(double rate, double mass, const Eigen::Vector3d& velocity,
                                      const Eigen::Vector3d& reference_velocity) {
   return -rate * mass * (velocity - reference_velocity);

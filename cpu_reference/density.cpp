@@ -2,8 +2,6 @@
 
 #include "model/smoothing_kernels.hpp"
 
-#include <algorithm>
-
 namespace mssph::reference {
 
 void compute_densities(const ParticleSetup& setup, const NeighbourLists& neighbours, ParticleState& state) {
@@ -17,9 +15,9 @@ void compute_densities(const ParticleSetup& setup, const NeighbourLists& neighbo
     }
     const Material& material = setup.bodies[setup.body[i]].material;
     state.number_density[i] = delta;
-    state.density[i] = material.rest_density * delta / setup.rest_number_density;
+    state.density[i] = density(material.rest_density, delta, setup.rest_number_density);
     state.volume[i] = setup.mass[i] / state.density[i];
-    state.pressure[i] = std::max(0.0, material.pressure_stiffness * (state.density[i] - material.rest_density));
+    state.pressure[i] = equation_of_state(material.pressure_stiffness, state.density[i], material.rest_density);
   }
 }
 

@@ -4,6 +4,8 @@
 #include "particle_state.hpp"
 #include "scene/particle_setup.hpp"
 
+#include <algorithm>
+
 namespace mssph::reference {
 
 // Multi-material density after Solenthaler and Pajarola 2008 ("Density contrast SPH
@@ -19,9 +21,20 @@ namespace mssph::reference {
 // energy-consistent and a settling water column gains kinetic energy exponentially (x10 in
 // 0.5 s at mu = 0.5 Pa s); with the spiky pair it calms down.
 //
+// Paper eq. 1 read as a number density: rho_i = rho0 delta_i / delta0 (float twin:
+// kernels::density, which multiplies by 1 / delta0).
+inline double density(double rest_density, double number_density, double rest_number_density) {
+  return rest_density * number_density / rest_number_density;
+}
+
 // Equation of state (paper): P_i = k (rho_i - rho0), clamped at P >= 0: free-surface particles
 // lack neighbours, and a negative pressure there would pull them into clumps (tensile
-// instability).
+// instability). Float twin: kernels::equation_of_state.
+inline double equation_of_state(double pressure_stiffness, double density, double rest_density) {
+  return std::max(0.0, pressure_stiffness * (density - rest_density));
+}
+
+// Densities, volumes V_i = m_i / rho_i and pressures of all particles.
 void compute_densities(const ParticleSetup& setup, const NeighbourLists& neighbours, ParticleState& state);
 
 }  // namespace mssph::reference

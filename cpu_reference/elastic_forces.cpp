@@ -5,18 +5,34 @@
 
 namespace mssph::reference {
 
+Eigen::Matrix3d moment_matrix(const DeformableRestState& rest, const std::vector<Eigen::Vector3d>& positions,
+                              std::size_t i) {
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
+    const RestBond& bond = rest.bonds[k];
+    a += moment_matrix_term(bond.moment_weight, positions[rest.neighbours.indices[k]] - positions[i], bond.offset);
+  }
+  return a;
+}
+
+Eigen::Matrix3d displacement_gradient(const Eigen::Matrix3d& rotation_i, const DeformableRestState& rest,
+                                      const std::vector<Eigen::Vector3d>& positions, std::size_t i) {
+  Eigen::Matrix3d grad_u = Eigen::Matrix3d::Zero();
+  for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
+    const RestBond& bond = rest.bonds[k];
+    const Eigen::Vector3d x_ij = positions[rest.neighbours.indices[k]] - positions[i];
+    grad_u += displacement_gradient_term(rotated_displacement(rotation_i, x_ij, bond.offset), bond.d_ij);
+  }
+  return grad_u;
+}
+
 void compute_rotations(const ParticleSetup& setup, const DeformableRestState& rest,
                        const std::vector<Eigen::Vector3d>& positions, DeformableState& state) {
   const std::size_t n = setup.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_deformable(setup, i)) continue;
-    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
-    for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
-      const RestBond& bond = rest.bonds[k];
-      a += moment_matrix_term(bond.moment_weight, positions[rest.neighbours.indices[k]] - positions[i], bond.offset);
-    }
-    state.rotation[i] = rotation_from_moment_matrix(a, state.rotation[i]);
+    state.rotation[i] = rotation_from_moment_matrix(moment_matrix(rest, positions, i), state.rotation[i]);
   }
 }
 
@@ -27,12 +43,7 @@ void compute_elastic_stresses(const ParticleSetup& setup, const DeformableRestSt
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_deformable(setup, i)) continue;
     const Material& material = setup.bodies[setup.body[i]].material;
-    Eigen::Matrix3d grad_u = Eigen::Matrix3d::Zero();
-    for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
-      const RestBond& bond = rest.bonds[k];
-      const Eigen::Vector3d x_ij = positions[rest.neighbours.indices[k]] - positions[i];
-      grad_u += displacement_gradient_term(rotated_displacement(state.rotation[i], x_ij, bond.offset), bond.d_ij);
-    }
+    const Eigen::Matrix3d grad_u = displacement_gradient(state.rotation[i], rest, positions, i);
     const ElasticResponse response = elastic_response(grad_u, rest.lame[i], material.model);
     state.displacement_gradient[i] = grad_u;
     state.strain[i] = response.strain;
@@ -49,7 +60,7 @@ void compute_elastic_forces(const ParticleSetup& setup, const DeformableRestStat
     Eigen::Vector3d force = Eigen::Vector3d::Zero();
     for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
       const RestBond& bond = rest.bonds[k];
-      force += elastic_force_term(state.stress_action[i], bond.d_ij, state.stress_action[rest.neighbours.indices[k]],
+      force += elastic_force_pair(state.stress_action[i], bond.d_ij, state.stress_action[rest.neighbours.indices[k]],
                                   bond.d_ji);
     }
     state.elastic_force[i] = force;

@@ -12,6 +12,16 @@
 
 namespace mssph::reference {
 
+// The moment matrix A_i = sum_j m_j W(|X_ij|) x_ij X_ij^T over i's rest bonds, whose rotational
+// part is R_i (float: the moment of kernels::bond_sums).
+Eigen::Matrix3d moment_matrix(const DeformableRestState& rest, const std::vector<Eigen::Vector3d>& positions,
+                              std::size_t i);
+
+// Paper eq. 4 over i's rest bonds: grad u_i = sum_j (R_i^T x_ij - X_ij) (x) d_ij. Float twin:
+// kernels::displacement_gradient, which splits the sum in two halves gathered with A_i.
+Eigen::Matrix3d displacement_gradient(const Eigen::Matrix3d& rotation_i, const DeformableRestState& rest,
+                                      const std::vector<Eigen::Vector3d>& positions, std::size_t i);
+
 // Step 1: R_i = rotational part of A_i = sum_j m_j W(|X_ij|) x_ij X_ij^T over i's rest
 // neighbours (state.rotation holds last step's R_i on entry, used only for degenerate A_i).
 void compute_rotations(const ParticleSetup& setup, const DeformableRestState& rest,

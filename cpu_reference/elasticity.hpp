@@ -1,6 +1,10 @@
 #pragma once
 // Per-particle continuum mechanics of a deformable body (paper 3.1.2, eq. 4-6), as small pure
-// functions with explicit inputs and outputs, in the order the loop evaluates them.
+// functions with explicit inputs and outputs, in the order the loop evaluates them. The float32
+// code (kernels/common/elastic_physics.hpp) has a twin of the same name for each equation's
+// function: eq. 4 displacement_gradient (elastic_forces.hpp, over i's bonds), eq. 5
+// cauchy_strain, green_saint_venant_strain, isotropic_stress, first_piola_kirchhoff and
+// stress_action, eq. 6 elastic_force_pair, and world_deformation_gradient.
 //
 // Conventions, fixed by the tests in tests/deformable/:
 //   X_ij = X_j - X_i (rest), x_ij = x_j - x_i (current), grad W(r) the spiky gradient of
@@ -26,9 +30,10 @@ inline Eigen::Vector3d rotated_displacement(const Eigen::Matrix3d& rotation_i, c
   return rotation_i.transpose() * x_ij - rest_x_ij;
 }
 
-// One neighbour's term of the displacement gradient, paper eq. 4: grad u_i = sum_j u_ji (x) d_ij.
-// The paper prints the volume as V0_i; the SPH quadrature weight of neighbour j is its own volume
-// V0_j (Becker et al. 2009), which sits in d_ij here. The two agree inside a regular lattice.
+// One neighbour's term of the displacement gradient, paper eq. 4: grad u_i = sum_j u_ji (x) d_ij
+// (summed by displacement_gradient). The paper prints the volume as V0_i; the SPH quadrature
+// weight of neighbour j is its own volume V0_j (Becker et al. 2009), which sits in d_ij here. The
+// two agree inside a regular lattice.
 inline Eigen::Matrix3d displacement_gradient_term(const Eigen::Vector3d& u_ji, const Eigen::Vector3d& d_ij) {
   return u_ji * d_ij.transpose();
 }
@@ -50,7 +55,7 @@ inline Eigen::Matrix3d green_saint_venant_strain(const Eigen::Matrix3d& grad_u) 
 // Linear Cauchy strain (Becker et al. 2009): eps = 1/2 (grad u + grad u^T).
 inline Eigen::Matrix3d cauchy_strain(const Eigen::Matrix3d& grad_u) { return 0.5 * (grad_u + grad_u.transpose()); }
 
-// Isotropic linear elasticity sigma = C eps = lambda tr(eps) I + 2 mu eps (tensor shear:
+// Paper eq. 5's stress: isotropic linear elasticity sigma = C eps = lambda tr(eps) I + 2 mu eps (tensor shear:
 // sigma_xy = 2 mu eps_xy = mu gamma_xy).
 inline Eigen::Matrix3d isotropic_stress(const Eigen::Matrix3d& eps, const LameParameters& lame) {
   return lame.lambda * eps.trace() * Eigen::Matrix3d::Identity() + 2.0 * lame.mu * eps;
@@ -139,10 +144,22 @@ inline ElasticResponse elastic_response(const Eigen::Matrix3d& grad_u, const Lam
   return saint_venant_kirchhoff(grad_u, lame);
 }
 
+// Paper eq. 5 up to its volumes: P = d psi / d(grad u) of the material model, alone (the float
+// code computes P only; the reference's loop also keeps strain, stress and energy).
+inline Eigen::Matrix3d first_piola_kirchhoff(const Eigen::Matrix3d& grad_u, const LameParameters& lame,
+                                             ElasticModel model) {
+  return elastic_response(grad_u, lame, model).first_piola;
+}
+
 // The volume ratio J = det F = det(I + grad u) of i's neighbourhood [-] (R_i has det 1): the
 // compression measure of the run log.
 inline double volume_ratio(const Eigen::Matrix3d& grad_u) {
   return (Eigen::Matrix3d::Identity() + grad_u).determinant();
+}
+
+// The world-frame deformation gradient F_i = R_i (I + grad u_i) of i's neighbourhood.
+inline Eigen::Matrix3d world_deformation_gradient(const Eigen::Matrix3d& rotation_i, const Eigen::Matrix3d& grad_u) {
+  return rotation_i * (Eigen::Matrix3d::Identity() + grad_u);
 }
 
 // K_i = V0_i R_i P_i, the world-frame matrix through which particle i's strain energy
@@ -157,7 +174,7 @@ inline Eigen::Matrix3d stress_action(double rest_volume_i, const Eigen::Matrix3d
 // One neighbour's term of the symmetrised elastic force on i, paper eq. 6:
 //   f_i = sum_j (-R_i f_ji + R_j f_ij) = sum_j (K_i d_ij - K_j d_ji).
 // Each pair term appears with opposite sign in j's sum, so the forces sum to zero over a body.
-inline Eigen::Vector3d elastic_force_term(const Eigen::Matrix3d& action_i, const Eigen::Vector3d& d_ij,
+inline Eigen::Vector3d elastic_force_pair(const Eigen::Matrix3d& action_i, const Eigen::Vector3d& d_ij,
                                           const Eigen::Matrix3d& action_j, const Eigen::Vector3d& d_ji) {
   return action_i * d_ij - action_j * d_ji;
 }

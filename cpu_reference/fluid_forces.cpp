@@ -3,11 +3,6 @@
 #include "model/smoothing_kernels.hpp"
 
 namespace mssph::reference {
-namespace {
-
-double interface_viscosity(double mu_i, double mu_j) { return mu_i + mu_j > 0.0 ? 2.0 * mu_i * mu_j / (mu_i + mu_j) : 0.0; }
-
-}  // namespace
 
 void compute_pressure_viscosity_forces(const ParticleSetup& setup, const NeighbourLists& neighbours,
                                        ParticleState& state) {
@@ -32,11 +27,16 @@ void compute_pressure_viscosity_forces(const ParticleSetup& setup, const Neighbo
         const double v_i = state.volume[i];
         const double v_j = state.volume[j];
         const Eigen::Vector3d pressure =
-            -((v_i * v_i * state.pressure[i] + v_j * v_j * state.pressure[j]) / setup.gradient_consistency) * grad_w(r_ij);
+            pressure_force_pair(v_i, state.pressure[i], v_j, state.pressure[j], setup.gradient_consistency, grad_w(r_ij));
         const double mu = same_body ? body_i.material.viscosity
                                     : interface_viscosity(body_i.material.viscosity, body_j.material.viscosity);
-        const Eigen::Vector3d viscosity = mu * v_i * v_j * lap_w(r_ij.norm()) * (state.velocity[j] - state.velocity[i]);
-        (same_body ? internal : interaction) += pressure + viscosity;
+        const Eigen::Vector3d viscosity =
+            viscosity_force_pair(mu, v_i, v_j, lap_w(r_ij.norm()), state.velocity[i], state.velocity[j]);
+        if (same_body) {
+          internal += pressure + viscosity;
+        } else {
+          interaction += interaction_force(pressure, viscosity);
+        }
         pressure_sum += pressure;
         viscosity_sum += viscosity;
       }

@@ -6,9 +6,11 @@
 #include "particle_state.hpp"
 #include "scene/particle_setup.hpp"
 
+#include <Eigen/Core>
+
 namespace mssph::reference {
 
-// Pressure force, paper eq. 2 in its energy-consistent form:
+// Pressure force, paper eq. 2 in its energy-consistent form, one neighbour's term:
 //   f_i = -(1 / g) sum_j (V_i^2 P_i + V_j^2 P_j) grad W(x_i - x_j),
 // the negative gradient of the internal energy sum_i m_i e(rho_i) for the densities of
 // density.hpp (Solenthaler and Pajarola 2008, eq. 5), up to the constant 1 / g. Eq. 2 as printed,
@@ -18,16 +20,36 @@ namespace mssph::reference {
 // column would carry twice the hydrostatic pressure; and V_i V_j in place of V_i^2, V_j^2 is not a
 // gradient of any energy at interfaces. g (lattice_gradient_consistency, 0.956 at h = 2 dx)
 // makes the gradient of a linear field exact inside a rest lattice. Pinned by the
-// hydrostatic-column and floating-sphere tests.
-//
-// Viscosity force, paper eq. 3: f_i = mu V_i sum_j V_j (v_j - v_i) lap W(|x_i - x_j|). Between
-// bodies mu is the harmonic mean 2 mu_i mu_j / (mu_i + mu_j) of the two bodies' viscosities
-// (Morris et al. 1997), so a body of zero viscosity, e.g. a free-slip wall, exerts no friction.
-//
-// Forces between particles of one fluid body go to internal_force, forces between particles of
-// different bodies to interaction_force. Rigid, deformable and boundary bodies feel no pressure or
-// viscosity from their own particles (their internal forces are rigidity and elasticity).
-// Boundary particles receive no force.
+// hydrostatic-column and floating-sphere tests. Float twin: kernels::pressure_force_pair.
+inline Eigen::Vector3d pressure_force_pair(double volume_i, double pressure_i, double volume_j, double pressure_j,
+                                           double gradient_consistency, const Eigen::Vector3d& grad_w) {
+  return -((volume_i * volume_i * pressure_i + volume_j * volume_j * pressure_j) / gradient_consistency) * grad_w;
+}
+
+// Viscosity force, paper eq. 3, one neighbour's term: f_i = mu V_i sum_j V_j (v_j - v_i) lap W(|x_i - x_j|).
+// Float twin: kernels::viscosity_force_pair.
+inline Eigen::Vector3d viscosity_force_pair(double mu, double volume_i, double volume_j, double laplacian,
+                                            const Eigen::Vector3d& velocity_i, const Eigen::Vector3d& velocity_j) {
+  return mu * volume_i * volume_j * laplacian * (velocity_j - velocity_i);
+}
+
+// The mu of eq. 3 between bodies: the harmonic mean 2 mu_i mu_j / (mu_i + mu_j) of the two bodies'
+// viscosities (Morris et al. 1997), so a body of zero viscosity, e.g. a free-slip wall, exerts no
+// friction. Float twin: kernels::interface_viscosity.
+inline double interface_viscosity(double mu_i, double mu_j) {
+  return mu_i + mu_j > 0.0 ? 2.0 * mu_i * mu_j / (mu_i + mu_j) : 0.0;
+}
+
+// Paper eq. 7: between particles of different bodies the interaction force is the pressure and
+// viscosity force of eq. 2 and 3. Float twin: kernels::interaction_force.
+inline Eigen::Vector3d interaction_force(const Eigen::Vector3d& pressure, const Eigen::Vector3d& viscosity) {
+  return pressure + viscosity;
+}
+
+// The pressure and viscosity forces of all particles. Forces between particles of one fluid body
+// go to internal_force, forces between particles of different bodies to interaction_force.
+// Rigid, deformable and boundary bodies feel no pressure or viscosity from their own particles
+// (their internal forces are rigidity and elasticity). Boundary particles receive no force.
 void compute_pressure_viscosity_forces(const ParticleSetup& setup, const NeighbourLists& neighbours,
                                        ParticleState& state);
 

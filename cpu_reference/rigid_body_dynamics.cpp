@@ -31,8 +31,8 @@ void sum_interaction_wrench(const ParticleSetup& setup, const ParticleState& par
 }
 
 void integrate_rigid_body(RigidBodyState& body, const Eigen::Vector3d& gravity, double dt) {
-  body.velocity += ((body.interaction_force + body.external_force) / body.mass + gravity) * dt;
-  body.angular_momentum += (body.interaction_torque + body.external_torque) * dt;
+  body.velocity += (rigid_body_force(body) / body.mass + gravity) * dt;
+  body.angular_momentum += rigid_body_torque(body) * dt;
   body.position += body.velocity * dt;
   const Eigen::Vector3d omega = body.angular_velocity();
   const double angle = omega.norm() * dt;

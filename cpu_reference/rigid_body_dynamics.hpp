@@ -13,6 +13,16 @@ RigidBodyState make_rigid_body_state(const BodySetup& body, std::size_t index);
 // body's particles, from the interaction forces (a rigid body has no internal forces).
 void sum_interaction_wrench(const ParticleSetup& setup, const ParticleState& particles, RigidBodyState& body);
 
+// Paper eq. 8: F = sum_i f_i^interaction + f_device, the summed interaction force plus the haptic
+// coupling's force. Float twin: kernels::rigid_body_force.
+inline Eigen::Vector3d rigid_body_force(const RigidBodyState& body) { return body.interaction_force + body.external_force; }
+
+// Paper eq. 9: tau = sum_i tau_i^interaction + tau_device, about the centre of mass. Float twin:
+// kernels::rigid_body_torque.
+inline Eigen::Vector3d rigid_body_torque(const RigidBodyState& body) {
+  return body.interaction_torque + body.external_torque;
+}
+
 // Semi-implicit (symplectic) Euler, the rigid-body counterpart of the particles' leap-frog:
 //   v += (F_interaction + F_external) / M dt + g dt,   L += (tau_interaction + tau_external) dt,
 //   x += v dt,   q = exp(omega dt) q with omega = I_world^-1 L (I_world = R I_body R^T).

@@ -15,7 +15,8 @@
 
 namespace mssph::reference {
 
-// One neighbour's control force on i (Ganzenmueller 2015, in our notation):
+// One neighbour's control force on i (Ganzenmueller 2015, in our notation; float twin
+// kernels::zero_energy_force_pair):
 //   error of the pair as seen from i:  e_i = F_i X_ij - x_ij,  from j: e_j = F_j X_ij - x_ij
 //   (world-frame F = R (I + grad u)), projected on the current pair direction n = x_ij / |x_ij|:
 //   delta = (e_i + e_j) . n,
@@ -25,7 +26,7 @@ namespace mssph::reference {
 // conserved. With kernel-gradient correction a linear deformation has e = 0 exactly and feels no
 // control force; without it, e is a few per cent of the strain and the control adds that much
 // stiffness (times alpha) to uniform deformations.
-inline Eigen::Vector3d zero_energy_force_term(const Eigen::Matrix3d& world_f_i, const Eigen::Matrix3d& world_f_j,
+inline Eigen::Vector3d zero_energy_force_pair(const Eigen::Matrix3d& world_f_i, const Eigen::Matrix3d& world_f_j,
                                               const Eigen::Vector3d& rest_x_ij, const Eigen::Vector3d& x_ij,
                                               double rest_volumes, double w_rest, double young_modulus,
                                               double alpha) {

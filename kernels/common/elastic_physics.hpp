@@ -1,7 +1,11 @@
 #pragma once
 // Corotated SPH elasticity of deformable particles (paper 3.1.2, eq. 4-6), float32, for the CUDA
 // kernels and the host build: step 1 (rotations) with the elastic part of step 2 (strain, stress)
-// in one pass, the elastic forces of step 3 in a second. Conventions and derivations are the
+// in one pass, the elastic forces of step 3 in a second. Each equation is one function named as
+// its float64 twin in cpu_reference/ (tests/equations/ checks each against it): eq. 4
+// displacement_gradient, eq. 5 first_piola_kirchhoff (with cauchy_strain,
+// green_saint_venant_strain, isotropic_stress) and stress_action, eq. 6 elastic_force_pair,
+// plus zero_energy_force_pair and damping_force. Conventions and derivations are the
 // reference's (cpu_reference/elasticity.hpp): (grad u)_ab = du_a/dX_b, d_ij = V0_j L_i grad W(X_i - X_j),
 // K_i = V0_i R_i P_i, f_i = sum_j (K_i d_ij - K_j d_ji). The rest bonds (neighbours, offsets,
 // weights, d_ij, d_ji) come precomputed from the reference's rest state, converted to float.
@@ -75,7 +79,47 @@ MSSPH_HD Quat extract_rotation(const Mat3& a, Quat q) {
   return q;
 }
 
-// sigma = lambda tr(eps) I + 2 mu eps.
+// What step 1 and eq. 4 need of deformable particle d's rest bonds, gathered in one pass: the
+// moment matrix A = sum_j m_j W_ij x_ij X_ij^T and the two halves of eq. 4,
+// sum_j x_ij d_ij^T and sum_j X_ij d_ij^T. Each half sums terms of size |X_ij| |d_ij| as the
+// per-bond form does, so float32 rounding is of the same order; the bonds, the step's largest
+// read, are read once instead of twice.
+struct BondSums {
+  Mat3 moment;
+  Mat3 current_gradient;
+  Mat3 rest_gradient;
+};
+
+MSSPH_HD BondSums bond_sums(const DeformableView& v, std::uint32_t d, Vec3 x_i) {
+  BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
+  for (std::uint32_t b = v.bond_start[d]; b < v.bond_start[d + 1]; ++b) {
+    const RestBond bond = v.bonds[b];
+    const Vec3 x_ij = xyz(v.position[bond_neighbour(bond)]) - x_i;
+    const Vec3 rest_offset = xyz(bond.offset_weight);
+    const Vec3 d_ij = xyz(bond.d_ij_kernel);
+    sums.moment = sums.moment + outer(bond.offset_weight.w * x_ij, rest_offset);
+    sums.current_gradient = sums.current_gradient + outer(x_ij, d_ij);
+    sums.rest_gradient = sums.rest_gradient + outer(rest_offset, d_ij);
+  }
+  return sums;
+}
+
+// Paper eq. 4, grad u_i = sum_j u_ji (x) d_ij with u_ji = R_i^T x_ij - X_ij, from the bond sums:
+// grad u_i = R_i^T (sum_j x_ij d_ij^T) - sum_j X_ij d_ij^T (reference: displacement_gradient,
+// which sums per bond). The paper prints V0_i where the quadrature weight is V0_j, inside d_ij.
+MSSPH_HD Mat3 displacement_gradient(const Mat3& rotation, const BondSums& sums) {
+  return transpose(rotation) * sums.current_gradient - sums.rest_gradient;
+}
+
+// Paper eq. 5's strain, in the two measures of the material models (reference: cauchy_strain,
+// green_saint_venant_strain): eps = 1/2 (grad u + grad u^T) and
+// E = eps + 1/2 grad u^T grad u = 1/2 (F^T F - I).
+MSSPH_HD Mat3 cauchy_strain(const Mat3& grad_u) { return 0.5f * (grad_u + transpose(grad_u)); }
+MSSPH_HD Mat3 green_saint_venant_strain(const Mat3& grad_u) {
+  return cauchy_strain(grad_u) + 0.5f * (transpose(grad_u) * grad_u);
+}
+
+// Paper eq. 5's stress sigma = C eps = lambda tr(eps) I + 2 mu eps.
 MSSPH_HD Mat3 isotropic_stress(const ElasticParameters& body, const Mat3& eps) {
   Mat3 stress = (2.0f * body.mu) * eps;
   const float pressure_like = body.lambda * trace(eps);
@@ -97,9 +141,11 @@ MSSPH_HD float neo_hookean_volumetric_derivative(const ElasticParameters& body, 
   return g + curvature * (j - je);
 }
 
-// P = d psi / d(grad u) in the rotated rest frame, per material model:
-//   stvk: P = F C E, E = 1/2 (grad u + grad u^T + grad u^T grad u) (paper eq. 5);
-//   corotated: P = C eps, eps = 1/2 (grad u + grad u^T);
+// Paper eq. 5 up to its volumes: P = d psi / d(grad u) in the rotated rest frame, per material
+// model (reference: first_piola_kirchhoff):
+//   stvk: P = F C E with the Green-Saint-Venant strain E, the paper's (I + grad u^T) sigma in our
+//         gradient convention;
+//   corotated: P = C eps with the Cauchy strain eps;
 //   neo_hookean: P = mu F + g(J) cof F (Bonet and Wood 2008, eq. 6.28).
 MSSPH_HD Mat3 first_piola_kirchhoff(const ElasticParameters& body, const Mat3& grad_u) {
   const Mat3 f = identity_mat3() + grad_u;
@@ -108,47 +154,65 @@ MSSPH_HD Mat3 first_piola_kirchhoff(const ElasticParameters& body, const Mat3& g
     const float j = dot(column(f, 0), column(cof, 0));
     return body.mu * f + neo_hookean_volumetric_derivative(body, j) * cof;
   }
-  const Mat3 gt = transpose(grad_u);
-  Mat3 strain = 0.5f * (grad_u + gt);
-  if (body.model == kCorotatedLinear) return isotropic_stress(body, strain);
-  strain = strain + 0.5f * (gt * grad_u);
-  return f * isotropic_stress(body, strain);
+  if (body.model == kCorotatedLinear) return isotropic_stress(body, cauchy_strain(grad_u));
+  return f * isotropic_stress(body, green_saint_venant_strain(grad_u));
 }
 
-// Step 1 and the elastic part of step 2 for deformable particle d: R_i, grad u_i (eq. 4), strain,
-// stress, K_i and F_i.
+// K_i = V0_i R_i P_i, the world-frame matrix through which i's strain energy acts on its
+// neighbours (paper eq. 5: f_ji = -V0_i P_i d_ij, the 2 of eq. 5 cancelling the 1/2 of eq. 6;
+// reference: stress_action).
+MSSPH_HD Mat3 stress_action(float rest_volume, const Mat3& rotation, const Mat3& first_piola) {
+  return rest_volume * (rotation * first_piola);
+}
+
+// The world-frame deformation gradient F_i = R_i (I + grad u_i) (reference:
+// world_deformation_gradient), for the zero-energy control and the logged volume ratio det F_i.
+MSSPH_HD Mat3 world_deformation_gradient(const Mat3& rotation, const Mat3& grad_u) {
+  return rotation * (identity_mat3() + grad_u);
+}
+
+// Step 1 and the elastic part of step 2 for deformable particle d: R_i, grad u_i (eq. 4), P_i
+// (eq. 5), K_i and F_i.
 MSSPH_HD void rotation_and_stress(const DeformableView& v, std::uint32_t d) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const std::uint32_t i = body.first_particle + (d - body.first_deformable);
-  const Vec3 x_i = xyz(v.position[i]);
-  // One pass over the bonds: the moment matrix A = sum_j m_j W_ij x_ij X_ij^T and the two halves
-  // of eq. 4, since u_ji = R^T x_ij - X_ij gives grad u = R^T (sum_j x_ij d_ij^T) - sum_j X_ij d_ij^T.
-  // Each half sums terms of size |X_ij| |d_ij| as the per-bond form does, so float32 rounding is
-  // of the same order; the bonds, the step's largest read, are read once instead of twice.
-  Mat3 moment = zero_mat3();
-  Mat3 current_gradient = zero_mat3();
-  Mat3 rest_gradient = zero_mat3();
-  for (std::uint32_t b = v.bond_start[d]; b < v.bond_start[d + 1]; ++b) {
-    const RestBond bond = v.bonds[b];
-    const Vec3 x_ij = xyz(v.position[bond_neighbour(bond)]) - x_i;
-    const Vec3 rest_offset = xyz(bond.offset_weight);
-    const Vec3 d_ij = xyz(bond.d_ij_kernel);
-    moment = moment + outer(bond.offset_weight.w * x_ij, rest_offset);
-    current_gradient = current_gradient + outer(x_ij, d_ij);
-    rest_gradient = rest_gradient + outer(rest_offset, d_ij);
-  }
-  const Quat q = extract_rotation(moment, v.rotation[d]);
+  const BondSums sums = bond_sums(v, d, xyz(v.position[i]));
+  const Quat q = extract_rotation(sums.moment, v.rotation[d]);
   const Mat3 rotation = rotation_matrix(q);
-  const Mat3 grad_u = transpose(rotation) * current_gradient - rest_gradient;
-  const Mat3 f_local = identity_mat3() + grad_u;
-  const Mat3 first_piola = first_piola_kirchhoff(body, grad_u);
+  const Mat3 grad_u = displacement_gradient(rotation, sums);
   v.rotation[d] = q;
-  v.stress_action[d] = v.rest_volume[d] * (rotation * first_piola);
-  v.deformation[d] = rotation * f_local;
+  v.stress_action[d] = stress_action(v.rest_volume[d], rotation, first_piola_kirchhoff(body, grad_u));
+  v.deformation[d] = world_deformation_gradient(rotation, grad_u);
 }
 
-// Step 3 for deformable particle d: the symmetrised elastic force of eq. 6, plus the zero-energy
-// control (Ganzenmueller 2015) and the mass-proportional damping when its body has them.
+// Paper eq. 6, one neighbour's term of the symmetrised elastic force on i:
+// f_i = sum_j (-R_i f_ji + R_j f_ij) = sum_j (K_i d_ij - K_j d_ji) (reference: elastic_force_pair).
+MSSPH_HD Vec3 elastic_force_pair(const Mat3& action_i, Vec3 d_ij, const Mat3& action_j, Vec3 d_ji) {
+  return action_i * d_ij - action_j * d_ji;
+}
+
+// Zero-energy-mode control (Ganzenmueller 2015), one neighbour's force on i: the pair is pulled
+// to where both neighbourhoods' deformations put it (reference: zero_energy_force_pair, with the
+// formula's derivation),
+//   delta = ((F_i + F_j) X_ij - 2 x_ij) . n,  f_i = -(alpha / 2) V0_i V0_j W(|X_ij|) E delta / |X_ij|^2 n.
+// Needs |x_ij| > 0: coincident particles have no pair direction, and the caller skips them
+// (the reference's twin returns zero for them). The test stays with the caller so that the
+// GPU's compiler can still fuse the force sum's multiply-add, as it did before this function.
+MSSPH_HD Vec3 zero_energy_force_pair(const Mat3& world_f_i, const Mat3& world_f_j, Vec3 rest_x_ij, Vec3 x_ij,
+                                     float rest_volume_i, float rest_volume_j, float w_rest, float young_modulus,
+                                     float alpha) {
+  const float r = norm(x_ij);
+  const Vec3 n = (1.0f / r) * x_ij;
+  const float delta = dot((world_f_i + world_f_j) * rest_x_ij - 2.0f * x_ij, n);
+  return (-0.5f * alpha * rest_volume_i * rest_volume_j * w_rest * young_modulus * delta / squared_norm(rest_x_ij)) * n;
+}
+
+// Mass-proportional damping f_i = -gamma m_i (v_i - v_ref) with v_ref = 0: on the float side
+// only bodies held by fixed regions damp, against the world (reference: damping_force).
+MSSPH_HD Vec3 damping_force(float rate, float mass, Vec3 velocity) { return (-rate * mass) * velocity; }
+
+// Step 3 for deformable particle d: the elastic force of eq. 6, plus the zero-energy control and
+// the mass-proportional damping when its body has them.
 MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const std::uint32_t i = body.first_particle + (d - body.first_deformable);
@@ -160,22 +224,17 @@ MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) {
     const RestBond bond = v.bonds[b];
     const std::uint32_t j = bond_neighbour(bond);
     const std::uint32_t dj = body.first_deformable + (j - body.first_particle);
-    force += k_i * xyz(bond.d_ij_kernel) - v.stress_action[dj] * xyz(bond.d_ji_neighbour);
+    force += elastic_force_pair(k_i, xyz(bond.d_ij_kernel), v.stress_action[dj], xyz(bond.d_ji_neighbour));
     if (body.zero_energy_stiffness > 0.0f) {
-      // Ganzenmueller 2015: pull the pair to where both neighbourhoods' deformations put it.
-      const Vec3 rest = xyz(bond.offset_weight);
       const Vec3 x_ij = xyz(v.position[j]) - x_i;
-      const float r = norm(x_ij);
-      if (r > 0.0f) {
-        const Vec3 n = (1.0f / r) * x_ij;
-        const float delta = dot((f_i + v.deformation[dj]) * rest - 2.0f * x_ij, n);
-        force += (-0.5f * body.zero_energy_stiffness * v.rest_volume[d] * v.rest_volume[dj] * bond.d_ij_kernel.w *
-                  body.young_modulus * delta / squared_norm(rest)) * n;
+      if (norm(x_ij) > 0.0f) {
+        force += zero_energy_force_pair(f_i, v.deformation[dj], xyz(bond.offset_weight), x_ij, v.rest_volume[d],
+                                        v.rest_volume[dj], bond.d_ij_kernel.w, body.young_modulus,
+                                        body.zero_energy_stiffness);
       }
     }
   }
-  // A body held by fixed regions damps against the world (v_ref = 0).
-  if (body.damping > 0.0f) force -= (body.damping * body.particle_mass) * xyz(v.velocity[i]);
+  if (body.damping > 0.0f) force += damping_force(body.damping, body.particle_mass, xyz(v.velocity[i]));
   v.elastic_force[i] = make_vec4(force, 0.0f);
 }
 

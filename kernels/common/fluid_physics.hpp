@@ -4,7 +4,10 @@
 // The same functions run in the CUDA kernels and in the host build; cpu_reference/density.hpp and
 // cpu_reference/fluid_forces.hpp document the formulation (spiky number densities read against
 // each body's rest density after Solenthaler and Pajarola 2008, clamped equation of state, the
-// energy-consistent form of eq. 2 with the lattice calibration 1/g).
+// energy-consistent form of eq. 2 with the lattice calibration 1/g). Each equation is one function
+// named as its float64 twin there (tests/equations/ checks each against it): eq. 1 density,
+// equation_of_state, eq. 2 pressure_force_pair, eq. 3 viscosity_force_pair (with
+// interface_viscosity), eq. 7 interaction_force.
 //
 // Each quantity is a sum over neighbours, assembled once by density_sum() and force_sum(): a lane
 // `lane` of a team of `lanes` visits every lanes-th candidate of the 27 cells. The host calls them
@@ -32,6 +35,18 @@ MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint3
   return sum;
 }
 
+// Paper eq. 1 read as a number density (Solenthaler and Pajarola 2008): rho_i = rho0 delta_i / delta0
+// with delta_i = sum_j W(x_i - x_j) over all bodies (reference: density, which divides by delta0).
+MSSPH_HD float density(float rest_density, float number_density, float inverse_rest_number_density) {
+  return rest_density * number_density * inverse_rest_number_density;
+}
+
+// The paper's equation of state P = k (rho - rho0), clamped at P >= 0 against the tensile
+// instability at free surfaces (reference: equation_of_state).
+MSSPH_HD float equation_of_state(float pressure_stiffness, float density, float rest_density) {
+  return std::fmax(0.0f, pressure_stiffness * (density - rest_density));
+}
+
 struct DensityResult {
   float density;  // rho = rho0 delta / delta0 [kg/m^3]
   VolumePressure volume_pressure;
@@ -39,18 +54,38 @@ struct DensityResult {
 
 MSSPH_HD DensityResult density_from(const DensitySum& sum, const SortedView& v, std::uint32_t s) {
   const BodyParameters& body = v.bodies[body_of(v.position[s])];
-  const float density = body.rest_density * sum.delta * v.step.inverse_rest_number_density;
-  const float pressure = std::fmax(0.0f, body.pressure_stiffness * (density - body.rest_density));
-  return {density, {body.sph_mass / density, pressure}};
+  const float rho = density(body.rest_density, sum.delta, v.step.inverse_rest_number_density);
+  return {rho, {body.sph_mass / rho, equation_of_state(body.pressure_stiffness, rho, body.rest_density)}};
 }
 
 // ---- Step 3: pressure and viscosity forces ----
 
-// Harmonic mean of two bodies' viscosities (Morris et al. 1997): no friction against a body of
-// zero viscosity.
+// The mu of eq. 3 between two bodies: the harmonic mean of their viscosities (Morris et al. 1997),
+// so a body of zero viscosity exerts no friction (reference: interface_viscosity).
 MSSPH_HD float interface_viscosity(float mu_i, float mu_j) {
   return mu_i + mu_j > 0.0f ? 2.0f * mu_i * mu_j / (mu_i + mu_j) : 0.0f;
 }
+
+// Paper eq. 2 in its energy-consistent form, one neighbour's pressure force on i:
+// f_ij = -(1 / g) (V_i^2 P_i + V_j^2 P_j) grad W(x_i - x_j), where eq. 2 as printed has
+// V_i V_j (P_i + P_j) / 2; the reference's pressure_force_pair says why, and what the lattice
+// calibration g is.
+MSSPH_HD Vec3 pressure_force_pair(VolumePressure i, VolumePressure j, float inverse_gradient_consistency,
+                                  Vec3 grad_w) {
+  const float pressure_term = i.volume * i.volume * i.pressure + j.volume * j.volume * j.pressure;
+  return (-pressure_term * inverse_gradient_consistency) * grad_w;
+}
+
+// Paper eq. 3, one neighbour's viscosity force on i: mu V_i V_j (v_j - v_i) lap W(|x_i - x_j|)
+// (reference: viscosity_force_pair).
+MSSPH_HD Vec3 viscosity_force_pair(float mu, float volume_i, float volume_j, float laplacian, Vec3 velocity_i,
+                                   Vec3 velocity_j) {
+  return (mu * volume_i * volume_j * laplacian) * (velocity_j - velocity_i);
+}
+
+// Paper eq. 7: between particles of different bodies the interaction force is the pressure and
+// viscosity force of eq. 2 and 3 (reference: interaction_force).
+MSSPH_HD Vec3 interaction_force(Vec3 pressure, Vec3 viscosity) { return pressure + viscosity; }
 
 // What the force sum needs of particle i, loaded once.
 struct ForceParticle {
@@ -87,13 +122,14 @@ MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
   if (same_body && i.parameters.kind != kFluid) return;  // rigid, deformable: no pressure among themselves
   const VolumePressure vp_j = v.volume_pressure[t];
   const float r = std::sqrt(r2);
-  const float pressure_term = i.vp.volume * i.vp.volume * i.vp.pressure + vp_j.volume * vp_j.volume * vp_j.pressure;
-  const Vec3 pressure = (-pressure_term * v.step.inverse_gradient_consistency) * v.step.kernels.spiky_gradient(r_ij, r);
+  const Vec3 pressure = pressure_force_pair(i.vp, vp_j, v.step.inverse_gradient_consistency,
+                                            v.step.kernels.spiky_gradient(r_ij, r));
   const float mu = same_body ? i.parameters.viscosity : interface_viscosity(i.parameters.viscosity, v.bodies[body_j].viscosity);
-  const Vec3 viscosity = (mu * i.vp.volume * vp_j.volume * v.step.kernels.viscosity_laplacian(r)) * (xyz(v.velocity[t]) - i.u);
+  const Vec3 viscosity = viscosity_force_pair(mu, i.vp.volume, vp_j.volume, v.step.kernels.viscosity_laplacian(r), i.u,
+                                              xyz(v.velocity[t]));
   sum.pressure += pressure;
   sum.viscosity += viscosity;
-  if (!same_body) sum.interaction += pressure + viscosity;
+  if (!same_body) sum.interaction += interaction_force(pressure, viscosity);
 }
 
 // Boundary particles receive no force: they skip the sum.

@@ -2,7 +2,8 @@
 // Rigid bodies as particle sets (Solenthaler et al. 2007; paper 3.1.1, eq. 8, 9), float32, for
 // the CUDA kernels and the host build. The integration scheme is the reference's
 // (cpu_reference/rigid_body_dynamics.hpp): semi-implicit Euler on the linear and angular
-// momentum, orientation advanced by exp(omega dt).
+// momentum, orientation advanced by exp(omega dt). Eq. 8 and 9 are rigid_body_force and
+// rigid_body_torque, named as their float64 twins (tests/equations/ checks each against it).
 #include "vec_math.hpp"
 
 #include <cstdint>
@@ -29,7 +30,8 @@ MSSPH_HD Vec3 angular_velocity(const RigidBody& b) {
   return r * (b.inverse_inertia_body * (transpose(r) * b.angular_momentum));
 }
 
-// Accumulates one particle's interaction force into a body wrench (torque about the centre).
+// One particle's share of eq. 8 and 9: its interaction force and that force's torque about the
+// centre (reference: the terms of sum_interaction_wrench).
 struct Wrench {
   Vec3 force;
   Vec3 torque;
@@ -39,9 +41,17 @@ MSSPH_HD Wrench particle_wrench(Vec3 particle_position, Vec3 force, Vec3 centre)
   return {force, cross(particle_position - centre, force)};
 }
 
+// Paper eq. 8: F = sum_i f_i^interaction + f_device, the sum over the body's particles
+// (particle_wrench, added up by the backend) plus the haptic coupling's force.
+MSSPH_HD Vec3 rigid_body_force(const RigidBody& b) { return b.interaction_force + b.external_force; }
+
+// Paper eq. 9: tau = sum_i tau_i^interaction + tau_device, about the centre of mass.
+MSSPH_HD Vec3 rigid_body_torque(const RigidBody& b) { return b.interaction_torque + b.external_torque; }
+
+// Semi-implicit Euler under the force and torque of eq. 8, 9 (reference: integrate_rigid_body).
 MSSPH_HD void integrate_rigid_body(RigidBody& b, Vec3 gravity, float dt) {
-  b.velocity += dt * ((b.interaction_force + b.external_force) * (1.0f / b.mass) + gravity);
-  b.angular_momentum += dt * (b.interaction_torque + b.external_torque);
+  b.velocity += dt * (rigid_body_force(b) * (1.0f / b.mass) + gravity);
+  b.angular_momentum += dt * rigid_body_torque(b);
   b.position += dt * b.velocity;
   const Vec3 omega = angular_velocity(b);
   const float speed = norm(omega);

@@ -171,7 +171,7 @@ TEST(PatchTest, HalvesPullOnEachOtherWithStressTimesArea) {
       if (rest.position[j].x() > 0.0) continue;
       const Vector3d d_ij = rest_gradient(rest.volume[j], rest.correction[i], grad_w(-rest_x_ij));
       const Vector3d d_ji = rest_gradient(rest.volume[i], rest.correction[j], grad_w(rest_x_ij));
-      traction += reference::elastic_force_term(action[i], d_ij, action[j], d_ji);
+      traction += reference::elastic_force_pair(action[i], d_ij, action[j], d_ji);
     }
   }
   ASSERT_GT(columns, 0u);

@@ -1,0 +1,291 @@
+// Paper eq. 4-6 with step 1's rotation, the zero-energy control and the damping, float32
+// (kernels/common/elastic_physics.hpp) against the float64 twins of the same names
+// (cpu_reference/elasticity.hpp, elastic_forces.hpp, corotation.hpp, zero_energy_control.hpp,
+// deformable_damping.hpp). Method and tolerance: twin_support.hpp. Lengths are those of a
+// 2 cm lattice (h = 4 cm), moduli those of the scenes (E up to 1e6 Pa, Poisson ratio up to 0.45).
+#include "corotation.hpp"
+#include "deformable_damping.hpp"
+#include "elastic_forces.hpp"
+#include "elasticity.hpp"
+#include "zero_energy_control.hpp"
+#include "common/elastic_physics.hpp"
+#include "twin_support.hpp"
+
+#include <vector>
+
+namespace mssph::testing {
+namespace {
+
+constexpr double kSupport = 0.04;  // h [m]
+
+// Lame parameters from E in [1e3, 1e6] Pa and nu in [0, 0.45], as float32 values.
+reference::LameParameters draw_lame(TwinDraws& draws) {
+  const double e = draws.uniform(1e3, 1e6), nu = draws.uniform(0.0, 0.45);
+  return {TwinDraws::rounded(e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))), TwinDraws::rounded(e / (2.0 * (1.0 + nu)))};
+}
+
+kernels::ElasticParameters float_body(const reference::LameParameters& lame, ElasticModel model) {
+  kernels::ElasticParameters body{};
+  body.model = model == ElasticModel::neo_hookean        ? kernels::kNeoHookean
+               : model == ElasticModel::corotated_linear ? kernels::kCorotatedLinear
+                                                          : kernels::kSaintVenantKirchhoff;
+  body.lambda = static_cast<float>(lame.lambda);
+  body.mu = static_cast<float>(lame.mu);
+  return body;
+}
+
+// A rest offset X_ij inside the support, not closer than 0.2 h.
+Eigen::Vector3d draw_rest_offset(TwinDraws& draws) {
+  for (;;) {
+    const Eigen::Vector3d x = draws.vector(kSupport);
+    if (x.norm() < kSupport && x.norm() > 0.2 * kSupport) return x;
+  }
+}
+
+// Deformable particle 0 and its rest bonds to particles 1..n, deformed by R (I + G) plus noise,
+// held in both precisions' data structures.
+struct Neighbourhood {
+  reference::DeformableRestState rest;
+  std::vector<Eigen::Vector3d> positions;
+  double moment_scale = 0.0;    // sum_j m_j W_ij |x_ij| |X_ij|
+  double gradient_scale = 0.0;  // sum_j (|x_ij| + |X_ij|) |d_ij|
+
+  kernels::ElasticParameters body{};
+  std::vector<std::uint32_t> body_of{0}, bond_start;
+  std::vector<kernels::RestBond> bonds;
+  std::vector<kernels::Vec4> position;
+
+  kernels::DeformableView view() const {
+    kernels::DeformableView v{};
+    v.bodies = &body;
+    v.body_of = body_of.data();
+    v.bond_start = bond_start.data();
+    v.bonds = bonds.data();
+    v.position = position.data();
+    v.count = 1;
+    return v;
+  }
+};
+
+Neighbourhood draw_neighbourhood(TwinDraws& draws, const Eigen::Matrix3d& rotation) {
+  Neighbourhood n;
+  const int bonds = static_cast<int>(draws.uniform(8.0, 41.0));
+  const Eigen::Matrix3d deformation = rotation * (Eigen::Matrix3d::Identity() + draws.matrix(0.5));
+  const Eigen::Vector3d x_i = draws.vector(1.0);
+  n.positions.push_back(x_i);
+  n.rest.neighbours.offsets = {0, static_cast<std::size_t>(bonds)};
+  n.bond_start = {0, static_cast<std::uint32_t>(bonds)};
+  n.position.push_back(to_float4(x_i, 0.0f));
+  for (int j = 1; j <= bonds; ++j) {
+    reference::RestBond bond;
+    bond.offset = draw_rest_offset(draws);
+    bond.moment_weight = draws.uniform(0.1, 1.0);
+    bond.kernel = draws.uniform(0.1, 1.0);
+    bond.d_ij = draws.vector(2.0 / kSupport);
+    bond.d_ji = draws.vector(2.0 / kSupport);
+    const Eigen::Vector3d x_j = TwinDraws::rounded(x_i + deformation * bond.offset + draws.vector(0.05 * kSupport));
+    n.positions.push_back(x_j);
+    n.rest.neighbours.indices.push_back(static_cast<std::size_t>(j));
+    n.rest.bonds.push_back(bond);
+    n.position.push_back(to_float4(x_j, 0.0f));
+    n.bonds.push_back({to_float4(bond.offset, static_cast<float>(bond.moment_weight)),
+                       to_float4(bond.d_ij, static_cast<float>(bond.kernel)),
+                       to_float4(bond.d_ji, kernels::index_as_float_bits(static_cast<std::uint32_t>(j)))});
+    const double x_ij = (x_j - x_i).norm();
+    n.moment_scale += bond.moment_weight * x_ij * bond.offset.norm();
+    n.gradient_scale += (x_ij + bond.offset.norm()) * bond.d_ij.norm();
+  }
+  return n;
+}
+
+// Step 1's moment matrix and eq. 4: kernels::bond_sums gathers A_i and eq. 4's two halves in one
+// pass; reference::moment_matrix and reference::displacement_gradient sum per bond.
+TEST(ElasticEquationTwins, MomentMatrixAndDisplacementGradient) {
+  TwinDraws draws("ElasticEquationTwins.MomentMatrixAndDisplacementGradient");
+  TwinComparison moment("moment matrix A_i (step 1)");
+  TwinComparison gradient("displacement gradient (eq. 4)");
+  for (int k = 0; k < kDraws; ++k) {
+    const Eigen::Matrix3d rotation = draws.rotation();
+    const Neighbourhood n = draw_neighbourhood(draws, rotation);
+    const kernels::BondSums sums = kernels::bond_sums(n.view(), 0, kernels::xyz(n.position[0]));
+    moment.add(to_double(sums.moment), reference::moment_matrix(n.rest, n.positions, 0), n.moment_scale);
+    gradient.add(to_double(kernels::displacement_gradient(to_float(rotation), sums)),
+                 reference::displacement_gradient(rotation, n.rest, n.positions, 0), n.gradient_scale);
+  }
+}
+
+// Step 1: the float code's iterative rotation extraction (Mueller et al. 2016) and the
+// reference's polar decomposition by SVD agree on A = R S, S symmetric positive definite,
+// warm-started 0.3 rad away. The iteration stops after 20 rounds: for stretches up to 25 % that
+// converges within one call; for stretches up to a factor 2 (one axis squeezed to half, another
+// doubled) it may take longer, as the next steps' calls continue from the last rotation, which
+// the check repeats with three calls.
+TEST(ElasticEquationTwins, RotationOfTheMomentMatrix) {
+  TwinDraws draws("ElasticEquationTwins.RotationOfTheMomentMatrix");
+  struct Case {
+    double largest_stretch;
+    int calls;
+    const char* name;
+  };
+  // A function that returned its warm start would be off by |R(0.3 rad) - I| = 0.42 (scale 1).
+  for (const Case c : {Case{1.25, 1, "R_i from A_i (step 1), stretches to 1.25, one call"},
+                       Case{2.0, 3, "R_i from A_i (step 1), stretches to 2, three calls"}}) {
+    const double largest_stretch = c.largest_stretch;
+    TwinComparison rotation(c.name);
+    for (int k = 0; k < kDraws; ++k) {
+      const Eigen::Quaterniond q = draws.quaternion();
+      const Eigen::Matrix3d axes = draws.rotation();
+      const Eigen::Vector3d stretch(draws.uniform(1.0 / largest_stretch, largest_stretch),
+                                    draws.uniform(1.0 / largest_stretch, largest_stretch),
+                                    draws.uniform(1.0 / largest_stretch, largest_stretch));
+      const double size = draws.uniform(1e-6, 1.0);
+      const Eigen::Matrix3d a =
+          TwinDraws::rounded(size * q.toRotationMatrix() * axes * stretch.asDiagonal() * axes.transpose());
+      const Eigen::Vector3d axis = draws.vector(1.0).normalized();
+      const Eigen::Quaterniond start = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, axis)) * q;
+      const Eigen::Matrix3d expected = reference::rotation_from_moment_matrix(a, start.toRotationMatrix());
+      kernels::Quat got = to_float(start);
+      for (int call = 0; call < c.calls; ++call) got = kernels::extract_rotation(to_float(a), got);
+      rotation.add(to_double(kernels::rotation_matrix(got)), expected, 1.0);
+    }
+  }
+}
+
+TEST(ElasticEquationTwins, Strains) {
+  TwinDraws draws("ElasticEquationTwins.Strains");
+  TwinComparison cauchy("Cauchy strain (eq. 5, corotated)");
+  TwinComparison green("Green-Saint-Venant strain (eq. 5)");
+  for (int k = 0; k < kDraws; ++k) {
+    const Eigen::Matrix3d grad_u = draws.matrix(0.5);
+    const double size = grad_u.norm();
+    cauchy.add(to_double(kernels::cauchy_strain(to_float(grad_u))), reference::cauchy_strain(grad_u), size);
+    green.add(to_double(kernels::green_saint_venant_strain(to_float(grad_u))),
+              reference::green_saint_venant_strain(grad_u), size * (1.0 + size));
+  }
+}
+
+TEST(ElasticEquationTwins, IsotropicStress) {
+  TwinDraws draws("ElasticEquationTwins.IsotropicStress");
+  TwinComparison stress("sigma = C eps (eq. 5)");
+  for (int k = 0; k < kDraws; ++k) {
+    const reference::LameParameters lame = draw_lame(draws);
+    const Eigen::Matrix3d eps = draws.matrix(0.2);
+    const Eigen::Matrix3d eps_symmetric = TwinDraws::rounded(0.5 * (eps + eps.transpose()));
+    stress.add(to_double(kernels::isotropic_stress(float_body(lame, ElasticModel::saint_venant_kirchhoff),
+                                                   to_float(eps_symmetric))),
+               reference::isotropic_stress(eps_symmetric, lame), (3.0 * lame.lambda + 2.0 * lame.mu) * eps_symmetric.norm());
+  }
+}
+
+// Eq. 5's P for each material model, on gradients up to 0.5 and, for Neo-Hookean, compressions
+// down to J = 0.02, past the barrier's end J = 0.1 where the continued energy takes over.
+TEST(ElasticEquationTwins, FirstPiolaKirchhoff) {
+  TwinDraws draws("ElasticEquationTwins.FirstPiolaKirchhoff");
+  for (const ElasticModel model :
+       {ElasticModel::saint_venant_kirchhoff, ElasticModel::corotated_linear, ElasticModel::neo_hookean}) {
+    TwinComparison piola(std::string("P (eq. 5), ") + to_string(model));
+    int past_barrier = 0;
+    for (int k = 0; k < kDraws; ++k) {
+      const reference::LameParameters lame = draw_lame(draws);
+      Eigen::Matrix3d grad_u = draws.matrix(0.5);
+      if (model == ElasticModel::neo_hookean && k % 2 == 1) {  // squeezed along z
+        grad_u = TwinDraws::rounded(0.1 * grad_u);
+        grad_u(2, 2) = draws.uniform(-0.98, -0.5);
+      }
+      const Eigen::Matrix3d f = Eigen::Matrix3d::Identity() + grad_u;
+      double scale = 0.0;
+      if (model == ElasticModel::neo_hookean) {
+        // P = mu F + g(J) cof F: each term's size.
+        const double j = f.determinant();
+        if (j < kNeoHookeanBarrierEnd) ++past_barrier;
+        const double g = reference::neo_hookean_volumetric(j, lame).derivative;
+        scale = lame.mu * f.norm() + std::abs(g) * (j * f.inverse().transpose()).norm();
+      } else {
+        // P = F C E or C eps: |F| (3 lambda + 2 mu) |E|.
+        scale = f.norm() * (3.0 * lame.lambda + 2.0 * lame.mu) * grad_u.norm() * (1.0 + grad_u.norm());
+      }
+      piola.add(to_double(kernels::first_piola_kirchhoff(float_body(lame, model), to_float(grad_u))),
+                reference::first_piola_kirchhoff(grad_u, lame, model), scale);
+    }
+    if (model == ElasticModel::neo_hookean) {
+      EXPECT_GT(past_barrier, kDraws / 20);
+    }
+  }
+}
+
+TEST(ElasticEquationTwins, StressActionAndWorldDeformationGradient) {
+  TwinDraws draws("ElasticEquationTwins.StressActionAndWorldDeformationGradient");
+  TwinComparison action("K_i = V0_i R_i P_i (eq. 5, 6)");
+  TwinComparison deformation("F_i = R_i (I + grad u_i)");
+  for (int k = 0; k < kDraws; ++k) {
+    const Eigen::Matrix3d rotation = draws.rotation();
+    const Eigen::Matrix3d first_piola = draws.matrix(1e5);
+    const double rest_volume = draws.uniform(1e-6, 1e-4);
+    action.add(to_double(kernels::stress_action(static_cast<float>(rest_volume), to_float(rotation), to_float(first_piola))),
+               reference::stress_action(rest_volume, rotation, first_piola), rest_volume * first_piola.norm());
+    const Eigen::Matrix3d grad_u = draws.matrix(0.5);
+    deformation.add(to_double(kernels::world_deformation_gradient(to_float(rotation), to_float(grad_u))),
+                    reference::world_deformation_gradient(rotation, grad_u),
+                    (Eigen::Matrix3d::Identity() + grad_u).norm());
+  }
+}
+
+TEST(ElasticEquationTwins, ElasticForcePair) {
+  TwinDraws draws("ElasticEquationTwins.ElasticForcePair");
+  TwinComparison force("elastic force pair (eq. 6)");
+  for (int k = 0; k < kDraws; ++k) {
+    const Eigen::Matrix3d action_i = draws.matrix(0.1), action_j = draws.matrix(0.1);
+    const Eigen::Vector3d d_ij = draws.vector(2.0 / kSupport), d_ji = draws.vector(2.0 / kSupport);
+    force.add(to_double(kernels::elastic_force_pair(to_float(action_i), to_float(d_ij), to_float(action_j), to_float(d_ji))),
+              reference::elastic_force_pair(action_i, d_ij, action_j, d_ji),
+              action_i.norm() * d_ij.norm() + action_j.norm() * d_ji.norm());
+  }
+}
+
+// Ganzenmueller 2015's pair force on pairs displaced by up to 30 % of |X_ij| from where the two
+// neighbourhoods' deformations put them.
+TEST(ElasticEquationTwins, ZeroEnergyForcePair) {
+  TwinDraws draws("ElasticEquationTwins.ZeroEnergyForcePair");
+  TwinComparison force("zero-energy control pair force");
+  for (int k = 0; k < kDraws; ++k) {
+    const Eigen::Matrix3d rotation = draws.rotation();
+    const Eigen::Matrix3d f_i = TwinDraws::rounded(rotation * (Eigen::Matrix3d::Identity() + draws.matrix(0.2)));
+    const Eigen::Matrix3d f_j = TwinDraws::rounded(rotation * (Eigen::Matrix3d::Identity() + draws.matrix(0.2)));
+    const Eigen::Vector3d rest = draw_rest_offset(draws);
+    const Eigen::Vector3d x_ij = TwinDraws::rounded(f_i * rest + draws.vector(0.3 * rest.norm()));
+    const double volume_i = draws.uniform(1e-6, 1e-4), volume_j = draws.uniform(1e-6, 1e-4);
+    const double w = draws.uniform(0.0, 1.0) * 315.0 / (64.0 * 3.14159265358979 * std::pow(kSupport, 3));
+    const double w_float = TwinDraws::rounded(w);
+    const double young = draws.uniform(1e3, 1e6), alpha = draws.uniform(0.01, 1.0);
+    // The reference takes V0_i V0_j as one product (exact in double for float inputs).
+    const Eigen::Vector3d expected =
+        reference::zero_energy_force_pair(f_i, f_j, rest, x_ij, volume_i * volume_j, w_float, young, alpha);
+    const kernels::Vec3 got = kernels::zero_energy_force_pair(
+        to_float(f_i), to_float(f_j), to_float(rest), to_float(x_ij), static_cast<float>(volume_i),
+        static_cast<float>(volume_j), static_cast<float>(w_float), static_cast<float>(young), static_cast<float>(alpha));
+    // delta = ((F_i + F_j) X_ij - 2 x_ij) . n cancels: the scale holds its terms.
+    const double coefficient = 0.5 * alpha * volume_i * volume_j * w_float * young / rest.squaredNorm();
+    force.add(to_double(got), expected, coefficient * ((f_i + f_j) * rest).norm() + 2.0 * coefficient * x_ij.norm());
+  }
+  // Coincident particles: no direction, no force (the float code's caller skips them).
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  EXPECT_EQ(reference::zero_energy_force_pair(identity, identity, Eigen::Vector3d(0.01, 0.0, 0.0),
+                                              Eigen::Vector3d::Zero(), 1e-6, 1.0, 1e5, 0.1),
+            Eigen::Vector3d::Zero());
+}
+
+// The float code damps bodies held by fixed regions only, against the world: v_ref = 0.
+TEST(ElasticEquationTwins, DampingForce) {
+  TwinDraws draws("ElasticEquationTwins.DampingForce");
+  TwinComparison force("mass-proportional damping force");
+  for (int k = 0; k < kDraws; ++k) {
+    const double rate = draws.uniform(0.1, 100.0), mass = draws.uniform(1e-4, 1.0);
+    const Eigen::Vector3d velocity = draws.vector(2.0);
+    const Eigen::Vector3d expected = reference::damping_force(rate, mass, velocity, Eigen::Vector3d::Zero());
+    force.add(to_double(kernels::damping_force(static_cast<float>(rate), static_cast<float>(mass), to_float(velocity))),
+              expected, expected.norm());
+  }
+}
+
+}  // namespace
+}  // namespace mssph::testing

@@ -1,0 +1,67 @@
+// The float32 smoothing kernels (kernels/common/smoothing_kernels.hpp) against their float64 twins
+// (cpu_reference/sph_kernels.hpp), the W, grad W and lap W inside paper eq. 1-3 and 4-6. Method and
+// tolerance: twin_support.hpp. Each kernel is compared relative to its peak value (at r = 0):
+// near the support's edge both twins cancel h - r or h^2 - r^2, exactly in float32 for r near h.
+#include "sph_kernels.hpp"
+#include "common/smoothing_kernels.hpp"
+#include "twin_support.hpp"
+
+#include <numbers>
+
+namespace mssph::testing {
+namespace {
+
+// A support radius with an exact float32 value, so both twins use the same h.
+double float_support(TwinDraws& draws) { return draws.uniform(0.005, 0.2); }
+
+TEST(SmoothingKernelTwins, Poly6) {
+  TwinDraws draws("SmoothingKernelTwins.Poly6");
+  TwinComparison value("poly6 W(r^2)", 0.6);  // W > 1 % of its peak for r < 0.89 h: 0.8 of r in [0, 1.1 h)
+  for (int k = 0; k < kDraws; ++k) {
+    const double h = float_support(draws);
+    const double r2 = draws.uniform(0.0, 1.21 * h * h);
+    const reference::Poly6Kernel expected(h);
+    const kernels::SmoothingKernels got = kernels::SmoothingKernels::for_support(h);
+    value.add(got.poly6(static_cast<float>(r2)), expected(r2), expected(0.0));
+  }
+}
+
+TEST(SmoothingKernelTwins, Spiky) {
+  TwinDraws draws("SmoothingKernelTwins.Spiky");
+  TwinComparison value("spiky W(r)", 0.6);  // W > 1 % of its peak for r < 0.78 h: 0.7 of r in [0, 1.1 h)
+  for (int k = 0; k < kDraws; ++k) {
+    const double h = float_support(draws);
+    const double r = draws.uniform(0.0, 1.1 * h);
+    const reference::SpikyKernel expected(h);
+    value.add(kernels::SmoothingKernels::for_support(h).spiky(static_cast<float>(r)), expected(r), expected(0.0));
+  }
+}
+
+TEST(SmoothingKernelTwins, SpikyGradient) {
+  TwinDraws draws("SmoothingKernelTwins.SpikyGradient");
+  TwinComparison gradient("spiky grad W(r_vec)", 0.6);
+  for (int k = 0; k < kDraws; ++k) {
+    const double h = float_support(draws);
+    const Eigen::Vector3d r_vec = draws.vector(0.65 * h);  // |r_vec| up to 1.13 h
+    const kernels::Vec3 r_float = to_float(r_vec);
+    const double peak = 45.0 / (std::numbers::pi * std::pow(h, 4));  // |grad W| as r -> 0
+    const Eigen::Vector3d got =
+        to_double(kernels::SmoothingKernels::for_support(h).spiky_gradient(r_float, kernels::norm(r_float)));
+    gradient.add(got, reference::SpikyGradient(h)(r_vec), peak);
+  }
+}
+
+TEST(SmoothingKernelTwins, ViscosityLaplacian) {
+  TwinDraws draws("SmoothingKernelTwins.ViscosityLaplacian");
+  TwinComparison laplacian("viscosity lap W(r)", 0.8);  // > 1 % of its peak for r < 0.99 h
+  for (int k = 0; k < kDraws; ++k) {
+    const double h = float_support(draws);
+    const double r = draws.uniform(0.0, 1.1 * h);
+    const reference::ViscosityLaplacian expected(h);
+    laplacian.add(kernels::SmoothingKernels::for_support(h).viscosity_laplacian(static_cast<float>(r)), expected(r),
+                  expected(0.0));
+  }
+}
+
+}  // namespace
+}  // namespace mssph::testing
