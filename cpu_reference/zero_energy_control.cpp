@@ -1,5 +1,7 @@
 #include "zero_energy_control.hpp"
 
+#include "elasticity.hpp"
+
 namespace mssph::reference {
 
 void compute_zero_energy_forces(const ParticleSetup& setup, const DeformableRestState& rest,

@@ -19,12 +19,12 @@ namespace {
 constexpr double kSupport = 0.04;  // h [m]
 
 // Lame parameters from E in [1e3, 1e6] Pa and nu in [0, 0.45], as float32 values.
-reference::LameParameters draw_lame(TwinDraws& draws) {
+LameParameters draw_lame(TwinDraws& draws) {
   const double e = draws.uniform(1e3, 1e6), nu = draws.uniform(0.0, 0.45);
   return {TwinDraws::rounded(e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))), TwinDraws::rounded(e / (2.0 * (1.0 + nu)))};
 }
 
-kernels::ElasticParameters float_body(const reference::LameParameters& lame, ElasticModel model) {
+kernels::ElasticParameters float_body(const LameParameters& lame, ElasticModel model) {
   kernels::ElasticParameters body{};
   body.model = model == ElasticModel::neo_hookean        ? kernels::kNeoHookean
                : model == ElasticModel::corotated_linear ? kernels::kCorotatedLinear
@@ -45,7 +45,7 @@ Eigen::Vector3d draw_rest_offset(TwinDraws& draws) {
 // Deformable particle 0 and its rest bonds to particles 1..n, deformed by R (I + G) plus noise,
 // held in both precisions' data structures.
 struct Neighbourhood {
-  reference::DeformableRestState rest;
+  DeformableRestState rest;
   std::vector<Eigen::Vector3d> positions;
   double moment_scale = 0.0;    // sum_j m_j W_ij |x_ij| |X_ij|
   double gradient_scale = 0.0;  // sum_j (|x_ij| + |X_ij|) |d_ij|
@@ -77,7 +77,7 @@ Neighbourhood draw_neighbourhood(TwinDraws& draws, const Eigen::Matrix3d& rotati
   n.bond_start = {0, static_cast<std::uint32_t>(bonds)};
   n.position.push_back(to_float4(x_i, 0.0f));
   for (int j = 1; j <= bonds; ++j) {
-    reference::RestBond bond;
+    RestBond bond;
     bond.offset = draw_rest_offset(draws);
     bond.moment_weight = draws.uniform(0.1, 1.0);
     bond.kernel = draws.uniform(0.1, 1.0);
@@ -168,7 +168,7 @@ TEST(ElasticEquationTwins, IsotropicStress) {
   TwinDraws draws("ElasticEquationTwins.IsotropicStress");
   TwinComparison stress("sigma = C eps (eq. 5)");
   for (int k = 0; k < kDraws; ++k) {
-    const reference::LameParameters lame = draw_lame(draws);
+    const LameParameters lame = draw_lame(draws);
     const Eigen::Matrix3d eps = draws.matrix(0.2);
     const Eigen::Matrix3d eps_symmetric = TwinDraws::rounded(0.5 * (eps + eps.transpose()));
     stress.add(to_double(kernels::isotropic_stress(float_body(lame, ElasticModel::saint_venant_kirchhoff),
@@ -186,7 +186,7 @@ TEST(ElasticEquationTwins, FirstPiolaKirchhoff) {
     TwinComparison piola(std::string("P (eq. 5), ") + to_string(model));
     int past_barrier = 0;
     for (int k = 0; k < kDraws; ++k) {
-      const reference::LameParameters lame = draw_lame(draws);
+      const LameParameters lame = draw_lame(draws);
       Eigen::Matrix3d grad_u = draws.matrix(0.5);
       if (model == ElasticModel::neo_hookean && k % 2 == 1) {  // squeezed along z
         grad_u = TwinDraws::rounded(0.1 * grad_u);

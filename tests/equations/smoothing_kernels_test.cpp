@@ -1,8 +1,8 @@
 // The float32 smoothing kernels (kernels/common/smoothing_kernels.hpp) against their float64 twins
-// (cpu_reference/sph_kernels.hpp), the W, grad W and lap W inside paper eq. 1-3 and 4-6. Method and
+// (src/model/smoothing_kernels.hpp), the W, grad W and lap W inside paper eq. 1-3 and 4-6. Method and
 // tolerance: twin_support.hpp. Each kernel is compared relative to its peak value (at r = 0):
 // near the support's edge both twins cancel h - r or h^2 - r^2, exactly in float32 for r near h.
-#include "sph_kernels.hpp"
+#include "model/smoothing_kernels.hpp"
 #include "common/smoothing_kernels.hpp"
 #include "twin_support.hpp"
 
@@ -20,7 +20,7 @@ TEST(SmoothingKernelTwins, Poly6) {
   for (int k = 0; k < kDraws; ++k) {
     const double h = float_support(draws);
     const double r2 = draws.uniform(0.0, 1.21 * h * h);
-    const reference::Poly6Kernel expected(h);
+    const Poly6Kernel expected(h);
     const kernels::SmoothingKernels got = kernels::SmoothingKernels::for_support(h);
     value.add(got.poly6(static_cast<float>(r2)), expected(r2), expected(0.0));
   }
@@ -32,7 +32,7 @@ TEST(SmoothingKernelTwins, Spiky) {
   for (int k = 0; k < kDraws; ++k) {
     const double h = float_support(draws);
     const double r = draws.uniform(0.0, 1.1 * h);
-    const reference::SpikyKernel expected(h);
+    const SpikyKernel expected(h);
     value.add(kernels::SmoothingKernels::for_support(h).spiky(static_cast<float>(r)), expected(r), expected(0.0));
   }
 }
@@ -47,7 +47,7 @@ TEST(SmoothingKernelTwins, SpikyGradient) {
     const double peak = 45.0 / (std::numbers::pi * std::pow(h, 4));  // |grad W| as r -> 0
     const Eigen::Vector3d got =
         to_double(kernels::SmoothingKernels::for_support(h).spiky_gradient(r_float, kernels::norm(r_float)));
-    gradient.add(got, reference::SpikyGradient(h)(r_vec), peak);
+    gradient.add(got, SpikyGradient(h)(r_vec), peak);
   }
 }
 
@@ -57,7 +57,7 @@ TEST(SmoothingKernelTwins, ViscosityLaplacian) {
   for (int k = 0; k < kDraws; ++k) {
     const double h = float_support(draws);
     const double r = draws.uniform(0.0, 1.1 * h);
-    const reference::ViscosityLaplacian expected(h);
+    const ViscosityLaplacian expected(h);
     laplacian.add(kernels::SmoothingKernels::for_support(h).viscosity_laplacian(static_cast<float>(r)), expected(r),
                   expected(0.0));
   }
