@@ -1,7 +1,7 @@
 // What the hand feels while it holds the proxy pressed into the soft block of configs/squeeze.json
 // (the hold phase, 0.6 s to 1.0 s of the script): a steady push, not a buzz. The contact force
 // on the proxy and the force the device renders may change from one haptic tick (1 ms) to the
-// next only by what a steady press explains.
+// next only by what a steady press explains, and the proxy may not bounce off the block.
 //
 // At 4 cm spacing (the CI's), on the float32 cpu backend, 0.8 s: the window 0.65 s to 0.8 s
 // starts once the hand has stopped and the approach transient has passed.
@@ -25,6 +25,7 @@ struct HoldPhase {
   double max_rendered_jump = 0.0;     // max |rendered force - previous tick's| [N]
   double max_contact_jump = 0.0;      // max |interaction force - previous tick's| [N]
   double mean_contact = 0.0;          // mean |interaction force| [N]
+  double min_contact = 1e300;         // min |interaction force| [N]
 };
 
 HoldPhase measure_hold(const std::vector<std::string>& extra) {
@@ -55,6 +56,7 @@ HoldPhase measure_hold(const std::vector<std::string>& extra) {
     }
     hold.max_contact_jump = std::max(hold.max_contact_jump, std::sqrt(step));
     hold.mean_contact += std::sqrt(magnitude);
+    hold.min_contact = std::min(hold.min_contact, std::sqrt(magnitude));
     ++samples;
   }
   EXPECT_GT(samples, 100u);
@@ -67,15 +69,22 @@ TEST(SqueezeHold, TheHeldPressIsSteadyFromTickToTick) {
   RecordProperty("max_rendered_force_jump_N", std::to_string(hold.max_rendered_jump));
   RecordProperty("max_contact_force_jump_N", std::to_string(hold.max_contact_jump));
   RecordProperty("mean_contact_force_N", std::to_string(hold.mean_contact));
+  RecordProperty("min_contact_force_N", std::to_string(hold.min_contact));
   std::cout << "hold phase: rendered force jump per tick up to " << hold.max_rendered_jump
-            << " N, contact force jump up to " << hold.max_contact_jump << " N, mean contact force "
-            << hold.mean_contact << " N\n";
+            << " N, contact force jump up to " << hold.max_contact_jump << " N, contact force "
+            << hold.min_contact << " N to mean " << hold.mean_contact << " N\n";
+  // With the hand still, the contact force on the proxy balances the coupling's pull (the hand's
+  // and the coupling's springs in series, ~17 N) and the proxy's weight (3 N): a steady press
+  // changes from tick to tick only as the block creeps. The 3 N bound per 1 ms tick (15 % of the
+  // press) is the rendered force's below, so that the steadiness the hand feels does not rest on
+  // the coupling and the device filtering a buzz (measured: 0.4 N; 35 N with the block's
+  // pressure stiffness at 500, the proxy bouncing off the block, results/squeeze-chatter.md).
+  EXPECT_LT(hold.max_contact_jump, 3.0);
+  // The proxy stays on the block: never near contact loss (a bouncing proxy drops to 0 N).
+  EXPECT_GT(hold.min_contact, 0.5 * hold.mean_contact);
   // What the hand feels: the rendered force may change by at most 3 N from one 1 ms tick to the
-  // next while the hand holds still (measured at 4 cm: 2.4 N with neo_hookean, 2.5 N with the
-  // paper's stvk block; the 3 N bound is that plus a margin, not a formula). The coupling spring (1000 N/m) and the device filter the contact's
-  // chatter: the SPH contact force on the light proxy (0.31 kg) itself swings between ~0 and
-  // 60-90 N every 15-30 ms (RecordProperty max_contact_force_jump_N), which this bound does not
-  // cover (see README, "What the hand feels while squeezing").
+  // next (a margin over the 2.5 N that the coupling spring and the device's mass let through of
+  // the bouncing proxy's 0 to 90 N; measured now 0.06 N; not a formula).
   EXPECT_LT(hold.max_rendered_jump, 3.0);
   EXPECT_GT(hold.mean_contact, 10.0);  // the proxy is pressed onto the block, not hovering
 }
