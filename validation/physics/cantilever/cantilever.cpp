@@ -88,6 +88,7 @@ CantileverMeasurement measure_cantilever(const std::string& backend_name, double
     ++count;
   }
   m.tip = sum / count;
+  m.rest_speed = 0.01 * euler_bernoulli(length) * 0.5 * omega_1;
   m.euler_bernoulli = euler_bernoulli(length - 0.5 * dx);
   const double tip_x = length - 0.5 * dx;
   const double shear_modulus = young / (2.0 * (1.0 + nu));
