@@ -4,6 +4,7 @@
 #include "cli_fixture.hpp"
 #include "framework/backends.hpp"
 #include "framework/validation_case.hpp"
+#include "physics/cantilever_frequency/cantilever_frequency.hpp"
 
 #include <gmock/gmock.h>
 
@@ -83,6 +84,15 @@ TEST_F(Validate, BadArgumentsExit2AndWriteNothing) {
   const ProcessResult r = mssph({"validate", "--case", "no_such_case"});
   EXPECT_THAT(r.err, HasSubstr("--case no_such_case: no such case"));
   EXPECT_THAT(r.err, HasSubstr("hydrostatic"));  // the known cases are listed
+}
+
+// The Timoshenko correction the cantilever frequency case quotes is what its script computes.
+TEST_F(Validate, TimoshenkoRatioOfTheFrequencyCaseIsTheScripts) {
+  const ProcessResult r = run_process({MSSPH_PYTHON, std::string(MSSPH_SOURCE_DIR) + "/scripts/validation/timoshenko_cantilever.py"}, work("."));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::size_t at = r.out.find("ratio = ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  EXPECT_NEAR(std::stod(r.out.substr(at + 8)), validation::kTimoshenkoF1Ratio, 1e-5) << r.out;
 }
 
 // The suites, case by case: each required check has a registered case whose folder holds

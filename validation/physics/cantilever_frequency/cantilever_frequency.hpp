@@ -15,6 +15,11 @@ namespace mssph::validation {
 // level between its extremes gives crossings one period apart, so the mean need not be exact.
 double oscillation_frequency(const std::vector<double>& time, const std::vector<double>& signal);
 
+// f1 of Timoshenko's cantilever (shear with kappa = 5/6, and rotary inertia) over Euler-Bernoulli's
+// for this beam (L / H = 6, nu = 0.3), from converged finite elements:
+// scripts/validation/timoshenko_cantilever.py, which tests/cli/validate_command_test.cpp reruns.
+inline constexpr double kTimoshenkoF1Ratio = 0.97868;
+
 struct CantileverVibration {
   double frequency = 0.0;        // measured from the tip's sag [Hz]
   double euler_bernoulli = 0.0;  // f1 of Euler-Bernoulli's cantilever [Hz]
