@@ -27,6 +27,8 @@ const std::vector<ValidationCase>& all_cases() {
        "free bar: longitudinal period, energy drift, damping rate", run_bar_vibration_case},
       {"physics", "cantilever", "physics/cantilever", "cantilever tip deflection under gravity vs Euler-Bernoulli",
        run_cantilever_case},
+      {"physics", "cantilever_frequency", "physics/cantilever_frequency",
+       "cantilever first bending frequency vs Euler-Bernoulli", run_cantilever_frequency_case},
       {"physics", "hertz", "physics/hertz", "Hertz contact: exponent 1.5 and prefactor 4/3 E* sqrt(R)", run_hertz_case},
       {"physics", "coupling_step", "physics/coupling_step", "coupling step responses vs the damped oscillator",
        run_coupling_step_case},

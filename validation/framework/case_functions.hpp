@@ -19,6 +19,7 @@ CaseResult run_rotation_invariance_case(const CaseContext& context);
 CaseResult run_patch_tests_case(const CaseContext& context);
 CaseResult run_bar_vibration_case(const CaseContext& context);
 CaseResult run_cantilever_case(const CaseContext& context);
+CaseResult run_cantilever_frequency_case(const CaseContext& context);
 CaseResult run_hertz_case(const CaseContext& context);
 CaseResult run_coupling_step_case(const CaseContext& context);
 CaseResult run_passivity_case(const CaseContext& context);

@@ -60,7 +60,7 @@ HydrostaticMeasurement measure_hydrostatic(const std::string& backend_name, cons
   HydrostaticMeasurement m;
   for (int k = 0; k < slabs; ++k) {
     const double z = (k + 0.5) * dx;
-    if (samples[k] == 0.0 || z > top - 2.0 * setup.smoothing_length) continue;
+    if (samples[k] == 0.0 || z > top - 2.0 * setup.smoothing_length || z < setup.smoothing_length) continue;
     m.height.push_back(z);
     m.pressure.push_back(pressure_sum[k] / samples[k]);
   }

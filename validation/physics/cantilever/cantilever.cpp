@@ -9,27 +9,56 @@
 
 namespace mssph::validation {
 
-CantileverMeasurement measure_cantilever(const std::string& backend_name, double dx, bool correction) {
+namespace {
+constexpr double kClampLayers = 3.0;
+}  // namespace
+
+double CantileverBeam::p_wave_speed() const {
+  const double nu = poisson_ratio;
+  return std::sqrt(young_modulus * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)) / density);
+}
+
+double CantileverBeam::first_bending_omega() const {
+  const double beta_l = 1.8751;
+  return beta_l * beta_l * std::sqrt(young_modulus * side * side / (12.0 * density * std::pow(length, 4)));
+}
+
+CantileverBeam cantilever_beam() {
   const Scene base = case_scene("physics/cantilever");
-  const BodyConfig& beam = *base.find_body("beam");
-  const double clamp_layers = 3.0;
-  const double length = beam.shape.size.x() - clamp_layers * base.simulation.particle_spacing;
-  const double side = beam.shape.size.y();
-  const double young = beam.material.young_modulus;
-  const double nu = beam.material.poisson_ratio;
-  const double rho = beam.material.rest_density;
-  const double g = base.simulation.gravity.norm();
-  const double c_p = std::sqrt(young * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)) / rho);
-  const double dt = 0.2 * 2.0 * dx / c_p;
-  const double omega_1 = 3.516 * std::sqrt(young * side * side / (12.0 * rho * std::pow(length, 4)));
-  const double clamp = clamp_layers * dx;
-  const Scene scene = case_scene(
+  const BodyConfig& body = *base.find_body("beam");
+  CantileverBeam beam;
+  beam.length = body.shape.size.x() - kClampLayers * base.simulation.particle_spacing;
+  beam.side = body.shape.size.y();
+  beam.young_modulus = body.material.young_modulus;
+  beam.poisson_ratio = body.material.poisson_ratio;
+  beam.density = body.material.rest_density;
+  beam.gravity = base.simulation.gravity.norm();
+  return beam;
+}
+
+Scene cantilever_scene(const CantileverBeam& beam, double dx, double damping, double duration, bool correction) {
+  const double dt = 0.2 * 2.0 * dx / beam.p_wave_speed();
+  const double clamp = kClampLayers * dx;
+  return case_scene(
       "physics/cantilever",
       {"simulation/particle_spacing=" + exact(dx), "simulation/dt=" + exact(dt),
-       "simulation/duration=" + exact(12.0 / omega_1), "bodies/beam/damping=" + exact(2.0 * omega_1),
+       "simulation/duration=" + exact(duration), "bodies/beam/damping=" + exact(damping),
        "bodies/beam/kernel_gradient_correction=" + std::string(correction ? "true" : "false"),
-       "bodies/beam/shape/size=[" + exact(length + clamp) + "," + exact(side) + "," + exact(side) + "]",
-       "bodies/beam/position=[" + exact(0.5 * (length - clamp)) + ",0,0]"});
+       "bodies/beam/shape/size=[" + exact(beam.length + clamp) + "," + exact(beam.side) + "," + exact(beam.side) + "]",
+       "bodies/beam/position=[" + exact(0.5 * (beam.length - clamp)) + ",0,0]"});
+}
+
+CantileverMeasurement measure_cantilever(const std::string& backend_name, double dx, bool correction) {
+  const CantileverBeam beam = cantilever_beam();
+  const double length = beam.length;
+  const double side = beam.side;
+  const double young = beam.young_modulus;
+  const double nu = beam.poisson_ratio;
+  const double rho = beam.density;
+  const double g = beam.gravity;
+  const double omega_1 = beam.first_bending_omega();
+  const Scene scene = cantilever_scene(beam, dx, 2.0 * omega_1, 12.0 / omega_1, correction);
+  const double dt = scene.simulation.dt;
   const ParticleSetup setup = build_particles(scene);
   std::unique_ptr<Backend> backend = make_backend(backend_name, setup);
   CantileverMeasurement m;
@@ -38,6 +67,7 @@ CantileverMeasurement measure_cantilever(const std::string& backend_name, double
   m.steps = static_cast<std::size_t>(std::ceil(12.0 / omega_1 / dt));
   for (std::size_t s = 0; s < m.steps; ++s) backend->step();
   const ParticleSnapshot snapshot = backend->snapshot();
+  m.final_max_speed = backend->body_states().front().max_speed;
 
   const double q = rho * side * side * g;
   const double inertia = std::pow(side, 4) / 12.0;
@@ -58,6 +88,7 @@ CantileverMeasurement measure_cantilever(const std::string& backend_name, double
     ++count;
   }
   m.tip = sum / count;
+  m.rest_speed = 0.01 * euler_bernoulli(length) * 0.5 * omega_1;
   m.euler_bernoulli = euler_bernoulli(length - 0.5 * dx);
   const double tip_x = length - 0.5 * dx;
   const double shear_modulus = young / (2.0 * (1.0 + nu));
