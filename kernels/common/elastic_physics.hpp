@@ -46,7 +46,7 @@ MSSPH_HD std::uint32_t bond_neighbour(const RestBond& b) { return index_from_flo
 struct DeformableView {
   const ElasticParameters* bodies;   // per deformable body
   const std::uint32_t* body_of;      // per deformable particle: index into bodies
-  const std::uint32_t* bond_start;   // per deformable particle, plus the end: its bonds
+  const std::uint32_t* bond_count;   // per deformable particle: its number of rest bonds
   const RestBond* bonds;
   const float* rest_volume;          // V0 per deformable particle [m^3]
   const Vec4* position;              // canonical positions (read)
@@ -92,8 +92,8 @@ struct BondSums {
 
 MSSPH_HD BondSums bond_sums(const DeformableView& v, std::uint32_t d, Vec3 x_i) {
   BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
-  for (std::uint32_t b = v.bond_start[d]; b < v.bond_start[d + 1]; ++b) {
-    const RestBond bond = v.bonds[b];
+  for (std::uint32_t k = 0; k < v.bond_count[d]; ++k) {
+    const RestBond bond = v.bonds[k * v.count + d];  // bond-major: FloatScene::bond_count
     const Vec3 x_ij = xyz(v.position[bond_neighbour(bond)]) - x_i;
     const Vec3 rest_offset = xyz(bond.offset_weight);
     const Vec3 d_ij = xyz(bond.d_ij_kernel);
@@ -220,8 +220,8 @@ MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) {
   const Mat3 k_i = v.stress_action[d];
   const Mat3 f_i = v.deformation[d];
   Vec3 force{0, 0, 0};
-  for (std::uint32_t b = v.bond_start[d]; b < v.bond_start[d + 1]; ++b) {
-    const RestBond bond = v.bonds[b];
+  for (std::uint32_t k = 0; k < v.bond_count[d]; ++k) {
+    const RestBond bond = v.bonds[k * v.count + d];  // bond-major: FloatScene::bond_count
     const std::uint32_t j = bond_neighbour(bond);
     const std::uint32_t dj = body.first_deformable + (j - body.first_particle);
     force += elastic_force_pair(k_i, xyz(bond.d_ij_kernel), v.stress_action[dj], xyz(bond.d_ji_neighbour));

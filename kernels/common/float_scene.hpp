@@ -34,7 +34,10 @@ struct FloatScene {
   // canonical order, and the rest bonds of each.
   std::vector<ElasticParameters> elastic_bodies;
   std::vector<std::uint32_t> deformable_body;  // index into elastic_bodies
-  std::vector<std::uint32_t> bond_start;       // deformable particle d: bonds[bond_start[d] .. bond_start[d + 1])
+  // Deformable particle d has bond_count[d] rest bonds; its k-th is bonds[k * D + d] for D deformable
+  // particles: bond-major, padded to the longest list, so that the threads of neighbouring particles
+  // read neighbouring records (one coalesced load per bond and warp instead of one per thread).
+  std::vector<std::uint32_t> bond_count;
   std::vector<RestBond> bonds;
   std::vector<float> rest_volume;              // V0 [m^3]
 

@@ -121,12 +121,12 @@ MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
   const bool same_body = body_j == i.body;
   if (same_body && i.parameters.kind != kFluid) return;  // rigid, deformable: no pressure among themselves
   const VolumePressure vp_j = v.volume_pressure[t];
+  const Vec3 u_j = xyz(v.velocity[t]);
   const float r = std::sqrt(r2);
   const Vec3 pressure = pressure_force_pair(i.vp, vp_j, v.step.inverse_gradient_consistency,
                                             v.step.kernels.spiky_gradient(r_ij, r));
   const float mu = same_body ? i.parameters.viscosity : interface_viscosity(i.parameters.viscosity, v.bodies[body_j].viscosity);
-  const Vec3 viscosity = viscosity_force_pair(mu, i.vp.volume, vp_j.volume, v.step.kernels.viscosity_laplacian(r), i.u,
-                                              xyz(v.velocity[t]));
+  const Vec3 viscosity = viscosity_force_pair(mu, i.vp.volume, vp_j.volume, v.step.kernels.viscosity_laplacian(r), i.u, u_j);
   sum.pressure += pressure;
   sum.viscosity += viscosity;
   if (!same_body) sum.interaction += interaction_force(pressure, viscosity);

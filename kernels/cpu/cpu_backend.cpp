@@ -63,7 +63,7 @@ void CpuBackend::build_grid() {
 }
 
 DeformableView CpuBackend::deformable_view() {
-  return DeformableView{scene_.elastic_bodies.data(), scene_.deformable_body.data(), scene_.bond_start.data(),
+  return DeformableView{scene_.elastic_bodies.data(), scene_.deformable_body.data(), scene_.bond_count.data(),
                         scene_.bonds.data(),          scene_.rest_volume.data(),     scene_.position.data(),
                         scene_.velocity.data(),       rotation_.data(),              stress_action_.data(),
                         deformation_.data(),          elastic_force_.data(),

@@ -1,5 +1,6 @@
 // The `cuda` backend: the step's kernels (neighbour_grid, step_kernels, rigid_bodies) captured in
-// one CUDA graph and replayed each step, with events between the phases; the device arrays
+// a CUDA graph and replayed each step (a second graph with events between the phases for when
+// phase timing is asked for); the device arrays
 // (device_state) and what the logs and the haptic loop read back (body_readback).
 #include "cuda_backend.hpp"
 
@@ -14,6 +15,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -36,12 +38,19 @@ class CudaBackend final : public Backend {
   }
   ParticleSnapshot snapshot() override;
   std::vector<double> last_phase_seconds() const override;
+  void set_phase_timing(bool on) override { phase_timing_ = on; }
   void synchronize() override { cuda_check(cudaStreamSynchronize(stream_), "synchronise"); }
   ForceEvaluation evaluate_forces() override;
   void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) override;
 
  private:
-  void record_step(cudaStream_t stream);
+  // One step's kernels, captured once and replayed: one launch per step instead of one per kernel.
+  struct StepGraph {
+    cudaGraph_t graph = nullptr;
+    cudaGraphExec_t exec = nullptr;
+  };
+  StepGraph capture_step(bool timed);
+  void record_step(cudaStream_t stream, bool timed);
 
   ParticleSetup setup_;
   FloatScene scene_;
@@ -53,12 +62,13 @@ class CudaBackend final : public Backend {
   std::uint64_t steps_ = 0;
 
   cudaStream_t stream_ = nullptr;
-  cudaGraph_t graph_ = nullptr;
-  cudaGraphExec_t graph_exec_ = nullptr;
   std::array<cudaEvent_t, kPhaseCount + 1> events_{};  // events_[p], events_[p + 1] enclose phase p
+  StepGraph plain_step_;  // the step alone
+  StepGraph timed_step_;  // the step with the phase events: ~10 us more on an H100 (Backend::set_phase_timing)
+  bool phase_timing_ = false;
+  bool last_step_timed_ = false;
   unsigned team_lanes_ = 1;  // lanes per particle in the neighbour sums (choose_team_lanes)
   double time_ = 0.0;
-  bool stepped_ = false;
 };
 
 CudaBackend::CudaBackend(ParticleSetup setup)
@@ -73,31 +83,40 @@ CudaBackend::CudaBackend(ParticleSetup setup)
   cuda_check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "create stream");
   for (cudaEvent_t& e : events_) cuda_check(cudaEventCreate(&e), "create event");
 
-  // The whole step is captured once and replayed: one launch per step instead of one per kernel.
-  cuda_check(cudaStreamBeginCapture(stream_, cudaStreamCaptureModeThreadLocal), "begin graph capture");
-  record_step(stream_);
-  cuda_check(cudaStreamEndCapture(stream_, &graph_), "end graph capture");
-  cuda_check(cudaGraphInstantiate(&graph_exec_, graph_, 0), "instantiate step graph");
+  plain_step_ = capture_step(false);
+  timed_step_ = capture_step(true);
   cuda_check(cudaStreamSynchronize(stream_), "synchronise after set-up");
 }
 
 CudaBackend::~CudaBackend() {
-  if (graph_exec_) cudaGraphExecDestroy(graph_exec_);
-  if (graph_) cudaGraphDestroy(graph_);
+  for (StepGraph* g : {&plain_step_, &timed_step_}) {
+    if (g->exec) cudaGraphExecDestroy(g->exec);
+    if (g->graph) cudaGraphDestroy(g->graph);
+  }
   for (cudaEvent_t e : events_) {
     if (e) cudaEventDestroy(e);
   }
   if (stream_) cudaStreamDestroy(stream_);
 }
 
+CudaBackend::StepGraph CudaBackend::capture_step(bool timed) {
+  StepGraph g;
+  cuda_check(cudaStreamBeginCapture(stream_, cudaStreamCaptureModeThreadLocal), "begin graph capture");
+  record_step(stream_, timed);
+  cuda_check(cudaStreamEndCapture(stream_, &g.graph), "end graph capture");
+  cuda_check(cudaGraphInstantiate(&g.exec, g.graph, 0), "instantiate step graph");
+  return g;
+}
+
 // Paper 3.2 as a kernel sequence, one phase of Backend's list each: the neighbour grid (counting
 // sort into cells, cell-ordered copies), rotations and elastic forces, densities, forces with the
-// leap-frog integration of the particles, rigid-body dynamics. Events between the phases time them.
-void CudaBackend::record_step(cudaStream_t stream) {
+// leap-frog integration of the particles, rigid-body dynamics. When timed, events between the
+// phases time them.
+void CudaBackend::record_step(cudaStream_t stream, bool timed) {
   // External event records: the graph's replays record them, so their times can be read after
   // each launch (a plain record during capture only orders the graph's nodes).
   const auto mark = [&](std::size_t event) {
-    cuda_check(cudaEventRecordWithFlags(events_[event], stream, cudaEventRecordExternal), "record phase event");
+    if (timed) cuda_check(cudaEventRecordWithFlags(events_[event], stream, cudaEventRecordExternal), "record phase event");
   };
   mark(kNeighbours);
   launch_neighbour_grid(state_, scene_.grid, stream);
@@ -135,15 +154,16 @@ void CudaBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& pos
 }
 
 void CudaBackend::step() {
-  cuda_check(cudaGraphLaunch(graph_exec_, stream_), "launch step graph");
+  cuda_check(cudaGraphLaunch(phase_timing_ ? timed_step_.exec : plain_step_.exec, stream_), "launch step graph");
   time_ += setup_.dt;
   ++steps_;
-  stepped_ = true;
+  last_step_timed_ = phase_timing_;
 }
 
+// NaN for every phase when the last step ran without its events (Backend::set_phase_timing).
 std::vector<double> CudaBackend::last_phase_seconds() const {
-  std::vector<double> seconds(kPhaseCount, 0.0);
-  if (!stepped_) return seconds;
+  std::vector<double> seconds(kPhaseCount, std::numeric_limits<double>::quiet_NaN());
+  if (!last_step_timed_) return seconds;
   cuda_check(cudaEventSynchronize(events_[kPhaseCount]), "wait for the step");
   for (std::size_t p = 0; p < kPhaseCount; ++p) {
     float ms = 0.0f;
@@ -184,7 +204,7 @@ ParticleSnapshot CudaBackend::snapshot() {
   // Densities and pressures of the last force evaluation, back in canonical order.
   out.density.assign(n, 0.0f);
   out.pressure.assign(n, 0.0f);
-  if (stepped_) {
+  if (steps_ > 0) {
     for (std::size_t s = 0; s < n; ++s) {
       const std::uint32_t i = id[s];
       out.density[i] = particle_density(scene_, i, vp[s]);

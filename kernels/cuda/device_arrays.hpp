@@ -47,7 +47,7 @@ struct DeviceArrays {
   // Deformable bodies (empty without them).
   Array<Vec4> elastic_force;
   Array<ElasticParameters> elastic_bodies;
-  Array<std::uint32_t> deformable_body, bond_start;
+  Array<std::uint32_t> deformable_body, bond_count;
   Array<RestBond> bonds;
   Array<float> rest_volume;
   Array<Quat> rotation;
@@ -81,7 +81,7 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
     visit("elastic_force", a.elastic_force, Filled<Vec4>{n, zero});
     visit("elastic_bodies", a.elastic_bodies, copy_of(scene.elastic_bodies));
     visit("deformable_body", a.deformable_body, copy_of(scene.deformable_body));
-    visit("bond_start", a.bond_start, copy_of(scene.bond_start));
+    visit("bond_count", a.bond_count, copy_of(scene.bond_count));
     visit("bonds", a.bonds, copy_of(scene.bonds));
     visit("rest_volume", a.rest_volume, copy_of(scene.rest_volume));
     visit("rotation", a.rotation, Filled<Quat>{deformables, Quat{0, 0, 0, 1}});

@@ -76,7 +76,7 @@ CanonicalState canonical_state(DeviceState& state) {
 }
 
 DeformableView deformable_view(DeviceState& state) {
-  return DeformableView{state.elastic_bodies.data(), state.deformable_body.data(), state.bond_start.data(),
+  return DeformableView{state.elastic_bodies.data(), state.deformable_body.data(), state.bond_count.data(),
                         state.bonds.data(),          state.rest_volume.data(),     state.position.data(),
                         state.velocity.data(),       state.rotation.data(),        state.stress_action.data(),
                         state.deformation.data(),    state.elastic_force.data(),

@@ -49,6 +49,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
                   "number); mssph sweep tags each point's log with its parameters")
       ->allow_extra_args(false);
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or start-up lines (warnings and errors still print)");
+  cmd->add_flag("--phase-timing", args->phase_timing,
+                "Log each step's phase times in /timing/phases (on a GPU, events between the phases: about 10 us "
+                "per step on an H100, so off by default)");
   cmd->footer(
       "The run log: one HDF5 file per run. Root attributes record the version, git commit, backend,\n"
       "device, precision, threads, the scene (config: after --set; config_file: the file verbatim),\n"

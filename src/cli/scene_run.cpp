@@ -168,6 +168,7 @@ std::string command_line_of(const SceneRunRequest& request) {
   if (!request.record_device.empty()) line += " --record-device " + request.record_device;
   for (const std::string& t : request.tags) line += " --tag " + t;
   if (request.threads > 0) line += " --threads " + std::to_string(request.threads);
+  if (request.phase_timing) line += " --phase-timing";
   if (request.force) line += " --force";
   return line;
 }
@@ -255,7 +256,7 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   result.output = log->path();
   try {
     result.summary = run_simulation(scene, setup_for_log, *backend, *log,
-                                    RunOptions{request.quiet, request.record_device});
+                                    RunOptions{request.quiet, request.record_device, request.phase_timing});
     result.output = log->path();
     result.exit_code = kExitOk;
     print_summary_line(result.output, result.summary, result.backend);

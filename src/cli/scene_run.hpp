@@ -25,6 +25,7 @@ struct SceneRunRequest {
   bool force = false;    // replace existing output files (regular files only, never an input)
   bool dry_run = false;  // print the plan (particles, memory, dt bounds, steps) and write nothing
   int threads = 0;       // host threads of the OpenMP loops; 0 for default_thread_count()
+  bool phase_timing = false;  // log each step's phase times (/timing/phases)
 };
 
 struct SceneRunResult {

@@ -101,8 +101,14 @@ class Backend {
   //   integration  step 4 (the float backends: rigid bodies only).
   enum Phase : std::size_t { kNeighbours, kRotations, kDensities, kForces, kIntegration, kPhaseCount };
   static std::vector<std::string> phase_names() { return {"neighbours", "rotations", "densities", "forces", "integration"}; }
-  // Wall-clock seconds of each phase of the last step, in the order of phase_names().
+  // Wall-clock seconds of each phase of the last step, in the order of phase_names(), while phase
+  // timing is on; NaN for a phase a backend did not time.
   virtual std::vector<double> last_phase_seconds() const = 0;
+  // Per-phase timing is off unless asked for: a GPU backend times its phases with events recorded
+  // between them, which cost about 10 us per step on an H100 (10 % of a 30k-particle step, see
+  // results/performance.md) and make reading them wait for the step. Host backends read a clock per
+  // phase either way.
+  virtual void set_phase_timing(bool on) { (void)on; }
 };
 
 }  // namespace mssph

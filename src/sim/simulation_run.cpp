@@ -103,11 +103,16 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
 
   const std::size_t time_series = log.add_series("/time", 1, "s", "simulated time of each logged sample");
   const std::vector<BodySeries> body_series = add_body_series(log, setup);
-  const std::vector<std::string> phases = backend.phase_names();
-  log.set_attribute("/timing", "phase_names", phases);
-  const std::size_t step_time_series = log.add_series("/timing/step_wall_time", 1, "s", "wall-clock time of each step");
-  const std::size_t phase_series =
-      log.add_series("/timing/phases", phases.size(), "s", "wall-clock time of each phase of each step", phases);
+  const std::size_t step_time_series = log.add_series("/timing/step_wall_time", 1, "s",
+                                                         "host wall-clock time of each step (a GPU step returns once queued; its "
+                                                         "device time per phase is in /timing/phases, with --phase-timing)");
+  std::optional<std::size_t> phase_series;
+  backend.set_phase_timing(options.phase_timing);
+  if (options.phase_timing) {
+    const std::vector<std::string> phases = backend.phase_names();
+    log.set_attribute("/timing", "phase_names", phases);
+    phase_series = log.add_series("/timing/phases", phases.size(), "s", "wall-clock time of each phase of each step", phases);
+  }
 
   std::size_t force_body = setup.bodies.size();
   if (scene.proxy) {
@@ -140,7 +145,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
       backend.step();
       const double step_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
       append_scalar(log, step_time_series, step_seconds);
-      log.append(phase_series, backend.last_phase_seconds());
+      if (phase_series) log.append(*phase_series, backend.last_phase_seconds());
 
       const bool log_now = step % log_every == 0 || step == total_steps;
       if (log_now || step % check_every == 0) {

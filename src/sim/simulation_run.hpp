@@ -15,6 +15,7 @@ namespace mssph {
 struct RunOptions {
   bool quiet = false;
   std::string record_device;  // write the haptic device's trajectory here (.csv or .h5); "" for none
+  bool phase_timing = false;  // log /timing/phases (Backend::set_phase_timing)
 };
 
 struct RunSummary {

@@ -36,14 +36,21 @@ StepTimes time_steps(Backend& backend, const StepTimingOptions& options) {
   times.batch_steps = std::max<std::size_t>(1, steps_for(options.min_batch_seconds));
   const std::size_t batches = std::max(options.min_batches, steps_for(options.min_total_seconds) / times.batch_steps);
   const std::size_t affordable = std::max<std::size_t>(options.min_batches, options.max_steps / times.batch_steps);
-  times.phase_names = backend.phase_names();
-  times.phase_seconds.assign(times.phase_names.size(), 0.0);
   for (std::size_t b = 0; b < std::min(batches, affordable); ++b) {
     times.per_step_seconds.push_back(run_batch(backend, times.batch_steps) / static_cast<double>(times.batch_steps));
     times.steps += times.batch_steps;
+  }
+  // The phases from as many further steps, timed one by one, outside the step times above: timing
+  // the phases costs a GPU step its events (Backend::set_phase_timing).
+  times.phase_names = backend.phase_names();
+  times.phase_seconds.assign(times.phase_names.size(), 0.0);
+  backend.set_phase_timing(true);
+  for (std::size_t b = 0; b < times.per_step_seconds.size(); ++b) {
+    run_batch(backend, 1);
     const std::vector<double> last = backend.last_phase_seconds();
     for (std::size_t p = 0; p < last.size(); ++p) times.phase_seconds[p] += last[p];
   }
+  backend.set_phase_timing(false);
   for (double& s : times.phase_seconds) s /= static_cast<double>(times.per_step_seconds.size());
   return times;
 }

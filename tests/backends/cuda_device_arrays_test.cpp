@@ -107,7 +107,7 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   EXPECT_EQ(bytes_of(listed, "cell_start"), (cells + 1) * 4);
   EXPECT_EQ(bytes_of(listed, "elastic_force"), n * 16);
   EXPECT_EQ(bytes_of(listed, "rotation"), deformables * sizeof(kernels::Quat));
-  EXPECT_EQ(bytes_of(listed, "bond_start"), (deformables + 1) * 4);
+  EXPECT_EQ(bytes_of(listed, "bond_count"), deformables * 4);
   EXPECT_EQ(bytes_of(listed, "bonds"), scene.bonds.size() * sizeof(kernels::RestBond));
   EXPECT_EQ(bytes_of(listed, "rigid_bodies"), rigid_bodies * sizeof(kernels::RigidBody));
   EXPECT_EQ(bytes_of(listed, "rigid_chunks"), rigid_chunks * sizeof(kernels::RigidChunk));
@@ -125,7 +125,7 @@ TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
   FloatScene without = scene;
   without.elastic_bodies.clear();
   without.deformable_body.clear();
-  without.bond_start.assign(1, 0u);
+  without.bond_count.clear();
   without.bonds.clear();
   without.rest_volume.clear();
   const std::size_t n = setup.size();
@@ -135,7 +135,7 @@ TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
       scene.elastic_bodies.size() * sizeof(kernels::ElasticParameters) +    // elastic_bodies
       d * (sizeof(std::uint32_t) + sizeof(float) + sizeof(kernels::Quat)) + // deformable_body, rest_volume, rotation
       d * 2 * sizeof(kernels::Mat3) +                                       // stress_action, deformation
-      (d + 1) * sizeof(std::uint32_t) +                                     // bond_start
+      d * sizeof(std::uint32_t) +                                           // bond_count
       scene.bonds.size() * sizeof(kernels::RestBond);                       // bonds
   EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes).total_bytes -
                 kernels::device_array_sizes(without, chunks, kScanBytes).total_bytes,

@@ -95,9 +95,12 @@ TEST_F(RunCommand, SnapshotsComeWithAValidXdmfSidecar) {
 // series, haptics, timing, the body index and snapshots, as h5py reads it.
 TEST_F(RunCommand, EveryDatasetHasUnitsAndADescription) {
   const std::string out = work("described.h5");
-  ASSERT_EQ(mssph({"run", kScene, "--out", out, "--set", "output/snapshot_interval=0.01", "-q"}).exit_code, 0);
+  ASSERT_EQ(mssph({"run", kScene, "--out", out, "--set", "output/snapshot_interval=0.01", "--phase-timing", "-q"})
+                .exit_code,
+            0);
   std::size_t datasets = 0;
   const nlohmann::json summary = h5py_summary(out);
+  EXPECT_TRUE(summary["objects"].contains("/timing/phases")) << "--phase-timing logs the phases";
   for (const auto& [path, object] : summary["objects"].items()) {
     if (object["kind"] != "dataset") continue;
     ++datasets;
@@ -105,6 +108,24 @@ TEST_F(RunCommand, EveryDatasetHasUnitsAndADescription) {
     EXPECT_FALSE(object["attributes"].value("description", "").empty()) << path;
   }
   EXPECT_GT(datasets, 30u) << "body, haptics, timing and snapshot datasets";
+}
+
+// Phase times only when asked for (a GPU times them with events that cost ~10 us per step), with
+// the phase names every backend shares and one row per step.
+TEST_F(RunCommand, PhaseTimesAreLoggedOnlyWithPhaseTiming) {
+  const std::string plain = work("plain.h5");
+  const std::string timed = work("timed.h5");
+  ASSERT_EQ(mssph({"run", kScene, "--backend", "cpu", "--out", plain, "-q"}).exit_code, 0);
+  ASSERT_EQ(mssph({"run", kScene, "--backend", "cpu", "--out", timed, "-q", "--phase-timing"}).exit_code, 0);
+  EXPECT_FALSE(h5py_summary(plain)["objects"].contains("/timing/phases"));
+  const nlohmann::json objects = h5py_summary(timed)["objects"];
+  ASSERT_TRUE(objects.contains("/timing/phases"));
+  EXPECT_EQ(objects["/timing"]["attributes"]["phase_names"],
+            (nlohmann::json{"neighbours", "rotations", "densities", "forces", "integration"}));
+  const h5::Handle file = open_read_only(timed);
+  const std::vector<double> phases = read_doubles(file.id(), "/timing/phases");
+  EXPECT_EQ(phases.size(), 5 * steps_of(read_json(kScene)));
+  EXPECT_TRUE(std::all_of(phases.begin(), phases.end(), [](double s) { return std::isfinite(s) && s >= 0.0; }));
 }
 
 }  // namespace

@@ -51,7 +51,7 @@ struct Neighbourhood {
   double gradient_scale = 0.0;  // sum_j (|x_ij| + |X_ij|) |d_ij|
 
   kernels::ElasticParameters body{};
-  std::vector<std::uint32_t> body_of{0}, bond_start;
+  std::vector<std::uint32_t> body_of{0}, bond_count;
   std::vector<kernels::RestBond> bonds;
   std::vector<kernels::Vec4> position;
 
@@ -59,7 +59,7 @@ struct Neighbourhood {
     kernels::DeformableView v{};
     v.bodies = &body;
     v.body_of = body_of.data();
-    v.bond_start = bond_start.data();
+    v.bond_count = bond_count.data();
     v.bonds = bonds.data();
     v.position = position.data();
     v.count = 1;
@@ -74,7 +74,7 @@ Neighbourhood draw_neighbourhood(TwinDraws& draws, const Eigen::Matrix3d& rotati
   const Eigen::Vector3d x_i = draws.vector(1.0);
   n.positions.push_back(x_i);
   n.rest.neighbours.offsets = {0, static_cast<std::size_t>(bonds)};
-  n.bond_start = {0, static_cast<std::uint32_t>(bonds)};
+  n.bond_count = {static_cast<std::uint32_t>(bonds)};
   n.position.push_back(to_float4(x_i, 0.0f));
   for (int j = 1; j <= bonds; ++j) {
     RestBond bond;

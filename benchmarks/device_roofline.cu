@@ -1,0 +1,95 @@
+// The card's own limits, for the roofline estimates beside the step times (results/performance.md):
+// DRAM bandwidth (a streaming copy far larger than L2) and FP32 rate (independent FMA chains).
+// Both report what they achieve, not the datasheet's peak.
+#include <benchmark/benchmark.h>
+#include <cuda_runtime.h>
+
+
+namespace {
+
+bool cuda_ok(cudaError_t e, benchmark::State& state) {
+  if (e == cudaSuccess) return true;
+  state.SkipWithError(cudaGetErrorString(e));
+  return false;
+}
+
+__global__ void copy_kernel(const float4* __restrict__ in, float4* __restrict__ out, std::size_t n) {
+  for (std::size_t i = blockIdx.x * std::size_t{blockDim.x} + threadIdx.x; i < n; i += std::size_t{gridDim.x} * blockDim.x) {
+    out[i] = in[i];
+  }
+}
+
+// 8 independent chains of 2048 FMAs per thread: 2 flops each.
+constexpr int kChains = 8;
+constexpr int kFmaPerChain = 2048;
+
+__global__ void fma_kernel(float* out, float seed) {
+  float acc[kChains];
+  for (int c = 0; c < kChains; ++c) acc[c] = seed + static_cast<float>(threadIdx.x + c);
+  for (int k = 0; k < kFmaPerChain; ++k) {
+#pragma unroll
+    for (int c = 0; c < kChains; ++c) acc[c] = fmaf(acc[c], 0.999999f, 1e-7f);
+  }
+  float sum = 0.0f;
+  for (int c = 0; c < kChains; ++c) sum += acc[c];
+  if (sum == 12345.0f) out[0] = sum;  // keeps the chains alive; never true for these inputs
+}
+
+double elapsed_seconds(cudaEvent_t start, cudaEvent_t stop) {
+  float ms = 0.0f;
+  cudaEventElapsedTime(&ms, start, stop);
+  return 1e-3 * ms;
+}
+
+void BM_dram_copy(benchmark::State& state) {
+  const std::size_t bytes = std::size_t{1} << 30;  // 1 GiB each way, 20x the H100's L2
+  const std::size_t n = bytes / sizeof(float4);
+  float4 *in = nullptr, *out = nullptr;
+  if (!cuda_ok(cudaMalloc(&in, bytes), state) || !cuda_ok(cudaMalloc(&out, bytes), state)) return;
+  cudaMemset(in, 0, bytes);
+  cudaEvent_t start, stop;
+  cudaEventCreate(&start);
+  cudaEventCreate(&stop);
+  for (auto _ : state) {
+    cudaEventRecord(start);
+    copy_kernel<<<4096, 256>>>(in, out, n);
+    cudaEventRecord(stop);
+    cudaEventSynchronize(stop);
+    state.SetIterationTime(elapsed_seconds(start, stop));
+  }
+  state.counters["bytes_per_second"] =
+      benchmark::Counter(2.0 * static_cast<double>(bytes), benchmark::Counter::kIsIterationInvariantRate);
+  cudaFree(in);
+  cudaFree(out);
+  cudaEventDestroy(start);
+  cudaEventDestroy(stop);
+}
+
+void BM_fp32_fma(benchmark::State& state) {
+  int sms = 0;
+  cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, 0);
+  const unsigned blocks = static_cast<unsigned>(sms) * 16;
+  float* out = nullptr;
+  if (!cuda_ok(cudaMalloc(&out, sizeof(float)), state)) return;
+  cudaEvent_t start, stop;
+  cudaEventCreate(&start);
+  cudaEventCreate(&stop);
+  for (auto _ : state) {
+    cudaEventRecord(start);
+    fma_kernel<<<blocks, 256>>>(out, 1.0f);
+    cudaEventRecord(stop);
+    cudaEventSynchronize(stop);
+    state.SetIterationTime(elapsed_seconds(start, stop));
+  }
+  const double flops = 2.0 * kChains * kFmaPerChain * 256.0 * blocks;
+  state.counters["flops_per_second"] = benchmark::Counter(flops, benchmark::Counter::kIsIterationInvariantRate);
+  cudaFree(out);
+  cudaEventDestroy(start);
+  cudaEventDestroy(stop);
+}
+
+}  // namespace
+
+BENCHMARK(BM_dram_copy)->Name("device/dram_copy")->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_fp32_fma)->Name("device/fp32_fma")->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK_MAIN();
