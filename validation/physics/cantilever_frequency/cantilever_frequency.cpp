@@ -1,6 +1,6 @@
 #include "cantilever_frequency.hpp"
 
-#include "backend_factory.hpp"
+#include "backends/backend_factory.hpp"
 #include "physics/cantilever/cantilever.hpp"
 #include "scene/scene_builder.hpp"
 
