@@ -6,6 +6,7 @@
 #include "elasticity.hpp"
 #include "fluid_forces.hpp"
 #include "rigid_body_dynamics.hpp"
+#include "wall_exclusion.hpp"
 #include "zero_energy_control.hpp"
 #include "util/host_info.hpp"
 #include "util/phase_timer.hpp"
@@ -89,8 +90,8 @@ void ReferenceBackend::step() {
 }
 
 // Leap-frog with staggered velocities: v_{n+1/2} = v_{n-1/2} + a_n dt, x_{n+1} = x_n + v_{n+1/2} dt,
-// where a_n = f_n / m + g. Boundary and fixed particles do not move; rigid particles follow their
-// body.
+// where a_n = f_n / m + g, then kept out of the walls (wall_exclusion.hpp). Boundary and fixed
+// particles do not move; rigid particles follow their body.
 void ReferenceBackend::integrate() {
   const double dt = setup_.dt;
   const std::size_t n = setup_.size();
@@ -103,8 +104,10 @@ void ReferenceBackend::integrate() {
       continue;
     }
     const Eigen::Vector3d force = particles_.internal_force[i] + particles_.interaction_force[i];
+    const Eigen::Vector3d previous = particles_.position[i];
     particles_.velocity[i] += (force / setup_.mass[i] + setup_.gravity) * dt;
     particles_.position[i] += particles_.velocity[i] * dt;
+    keep_out_of_walls(setup_, neighbours_, i, particles_.position, previous, particles_.position[i], particles_.velocity[i]);
   }
   for (RigidBodyState& body : rigid_bodies_) {
     integrate_rigid_body(body, setup_.gravity, dt);

@@ -2,6 +2,7 @@
 
 #include "eigen_conversion.hpp"
 #include "model/deformable_rest_state.hpp"
+#include "model/wall_exclusion.hpp"
 #include "util/errors.hpp"
 
 #include <algorithm>
@@ -127,6 +128,7 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
   scene.step.gravity = to_vec3(setup.gravity);
   scene.step.inverse_rest_number_density = static_cast<float>(1.0 / setup.rest_number_density);
   scene.step.inverse_gradient_consistency = static_cast<float>(1.0 / setup.gradient_consistency);
+  scene.step.wall_exclusion_distance = static_cast<float>(kWallExclusionFraction * setup.spacing);
   scene.step.particle_count = static_cast<std::uint32_t>(setup.size());
 
   if (setup.size() > 0) {

@@ -31,6 +31,7 @@ struct StepParameters {
   Vec3 gravity;                 // [m/s^2]
   float inverse_rest_number_density;   // 1 / delta0 [m^3]
   float inverse_gradient_consistency;  // 1 / g, see model/lattice_calibration.hpp
+  float wall_exclusion_distance;       // d_wall: closest approach to a boundary particle [m], model/wall_exclusion.hpp
   std::uint32_t particle_count;
 };
 
