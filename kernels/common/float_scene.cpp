@@ -139,6 +139,8 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
     }
     scene.origin = 0.5 * (lo + hi);
   }
+  scene.step.domain_min = scene.to_kernel_frame(setup.domain.min);
+  scene.step.domain_max = scene.to_kernel_frame(setup.domain.max);
 
   for (const BodySetup& b : setup.bodies) {
     BodyParameters p{};
@@ -211,6 +213,7 @@ BodyState to_body_state(const FloatScene& scene, const BodySums& sums, const Rig
     s.min_volume_ratio = sums.min_volume_ratio;
     s.compressed_count = static_cast<std::size_t>(sums.compressed_count);
   }
+  s.left_domain_count = static_cast<std::size_t>(sums.left_domain_count);
   return s;
 }
 

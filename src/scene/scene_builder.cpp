@@ -1,6 +1,7 @@
 #include "scene/scene_builder.hpp"
 
 #include "scene/lattice.hpp"
+#include "scene/simulation_domain.hpp"
 #include "model/lattice_calibration.hpp"
 #include "util/errors.hpp"
 
@@ -152,6 +153,8 @@ ParticleSetup build_particles(const Scene& scene) {
     setup.bodies.push_back(body);
   }
   check_overlaps(scene, setup, lattice_site);
+  setup.domain = sim.domain ? *sim.domain : default_simulation_domain(setup.position, setup.smoothing_length);
+  setup.max_lost_mass_fraction = sim.max_lost_mass_fraction;
   return setup;
 }
 

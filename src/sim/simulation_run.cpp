@@ -2,6 +2,7 @@
 
 #include "haptics/haptics_run.hpp"
 #include "sim/compression_watch.hpp"
+#include "sim/lost_mass_watch.hpp"
 #include "sim/interrupt.hpp"
 #include "sim/progress.hpp"
 #include "util/errors.hpp"
@@ -117,6 +118,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
   }
 
   CompressionWatch compression(log, setup);
+  LostMassWatch lost_mass(log, setup);
   std::optional<HapticsRun> haptics;
   if (scene.proxy) haptics.emplace(scene, setup, log, options.record_device);
 
@@ -145,6 +147,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
       const bool log_now = step % log_every == 0 || step == total_steps;
       if (log_now || step % check_every == 0) {
         const std::vector<BodyState> states = backend.body_states();
+        lost_mass.check(states, backend.time());  // before the blow-up check: a lost particle is not one
         check_for_blow_up(states, setup, backend.time());
         if (force_body < states.size()) {
           summary.peak_force = std::max(summary.peak_force, states[force_body].interaction_force.norm());
@@ -152,6 +155,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
         if (log_now) {
           append_scalar(log, time_series, backend.time());
           compression.record(states, backend.time());
+          lost_mass.record(states);
           for (std::size_t b = 0; b < states.size(); ++b) {
             const BodyState& s = states[b];
             const BodySeries& series = body_series[b];
@@ -192,6 +196,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
     try {
       log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
       compression.finish();
+      lost_mass.finish();
     } catch (const std::exception&) {
     }
     if (haptics) {
@@ -214,6 +219,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
 
   summary.fraction_outside_valid_range = compression.finish();
   summary.outside_valid_range = compression.summary();
+  summary.left_domain = lost_mass.finish();
   log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
   log.set_attribute("/", "simulated_time", summary.simulated_time);
   log.set_attribute("/", "wall_time", summary.wall_seconds);
