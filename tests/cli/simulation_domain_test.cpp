@@ -4,6 +4,7 @@
 // x <= 0.075 m, crosses it after about (0.55 - 0.075) / 4 = 0.12 s: past the default 0.1 % of
 // its mass the run fails with its own reason; with the whole mass allowed it completes and
 // reports how many particles left.
+#include "backend_on_this_machine.hpp"
 #include "cli_fixture.hpp"
 
 namespace mssph::test {
@@ -14,6 +15,7 @@ const std::string kScene = data_file("fluid_fling.json");
 class SimulationDomain : public Cli, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(SimulationDomain, FluidThrownOutFailsPastTheLostMassFraction) {
+  if (!backend_runs_here(GetParam())) GTEST_SKIP() << "no " << GetParam() << " backend on this machine";
   const std::string out = work("fling.h5");
   const ProcessResult r = mssph({"run", kScene, "--backend", GetParam(), "--threads", "1", "--out", out, "-q"});
   EXPECT_EQ(r.exit_code, 3) << r.err;
@@ -30,6 +32,7 @@ TEST_P(SimulationDomain, FluidThrownOutFailsPastTheLostMassFraction) {
 }
 
 TEST_P(SimulationDomain, LostParticlesAreCountedAndReported) {
+  if (!backend_runs_here(GetParam())) GTEST_SKIP() << "no " << GetParam() << " backend on this machine";
   const std::string out = work("fling.h5");
   const ProcessResult r = mssph({"run", kScene, "--backend", GetParam(), "--threads", "1", "--out", out, "-q", "--set",
                                  "simulation/max_lost_mass_fraction=1"});
@@ -48,7 +51,7 @@ TEST_P(SimulationDomain, LostParticlesAreCountedAndReported) {
   EXPECT_FALSE(has_attribute(open_object(file.id(), "/bodies/ground").id(), "left_domain_count"));
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, SimulationDomain, ::testing::Values("cpu", "reference"));
+INSTANTIATE_TEST_SUITE_P(Backends, SimulationDomain, ::testing::Values("cpu", "reference", "cuda"));
 
 using SimulationDomainInput = Cli;
 
