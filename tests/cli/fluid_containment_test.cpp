@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdio>
 #include <limits>
+#include <ostream>
 
 namespace mssph::test {
 namespace {
@@ -21,6 +22,8 @@ struct ContainmentCase {
   std::string backend;
   double sphere_density;  // [kg/m^3]
 };
+
+void PrintTo(const ContainmentCase& c, std::ostream* out) { *out << c.backend << ", sphere " << c.sphere_density << " kg/m^3"; }
 
 std::string snapshot_path(long long step) {
   char name[64];
