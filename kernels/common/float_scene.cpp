@@ -176,7 +176,7 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
     scene.velocity.push_back(to_vec4(setup.velocity[i]));
     scene.rest_offset.push_back(to_vec4(setup.rest_offset[i]));
     scene.body.push_back(setup.body[i]);
-    scene.fixed.push_back(setup.fixed[i]);
+    scene.fixed.push_back(setup.fixed[i] ? kFixedRegion : kFree);
   }
   scene.grid = choose_grid_shape(scene.position, setup.smoothing_length);
   add_deformable_bodies(setup, scene);
