@@ -6,6 +6,7 @@
 #include "elasticity.hpp"
 #include "fluid_forces.hpp"
 #include "rigid_body_dynamics.hpp"
+#include "wall_exclusion.hpp"
 #include "zero_energy_control.hpp"
 #include "util/host_info.hpp"
 #include "util/phase_timer.hpp"
@@ -22,6 +23,7 @@ ReferenceBackend::ReferenceBackend(ParticleSetup setup)
   deformables_.resize(setup_.size());
   particles_.position = setup_.position;
   particles_.velocity = setup_.velocity;
+  left_domain_.assign(setup_.size(), 0);
   for (std::size_t b = 0; b < setup_.bodies.size(); ++b) {
     if (setup_.bodies[b].moves_as_rigid_body()) rigid_bodies_.push_back(make_rigid_body_state(setup_.bodies[b], b));
   }
@@ -89,8 +91,9 @@ void ReferenceBackend::step() {
 }
 
 // Leap-frog with staggered velocities: v_{n+1/2} = v_{n-1/2} + a_n dt, x_{n+1} = x_n + v_{n+1/2} dt,
-// where a_n = f_n / m + g. Boundary and fixed particles do not move; rigid particles follow their
-// body.
+// where a_n = f_n / m + g, then kept out of the walls (wall_exclusion.hpp) and deactivated once
+// outside the domain. Boundary, fixed and deactivated particles do not move; rigid particles
+// follow their body.
 void ReferenceBackend::integrate() {
   const double dt = setup_.dt;
   const std::size_t n = setup_.size();
@@ -98,18 +101,30 @@ void ReferenceBackend::integrate() {
   for (std::size_t i = 0; i < n; ++i) {
     const BodySetup& body = setup_.bodies[setup_.body[i]];
     if (body.kind != BodyKind::fluid && body.kind != BodyKind::deformable) continue;
-    if (setup_.fixed[i]) {
+    if (setup_.fixed[i] || left_domain_[i]) {
       particles_.velocity[i].setZero();
       continue;
     }
     const Eigen::Vector3d force = particles_.internal_force[i] + particles_.interaction_force[i];
+    const Eigen::Vector3d previous = particles_.position[i];
     particles_.velocity[i] += (force / setup_.mass[i] + setup_.gravity) * dt;
     particles_.position[i] += particles_.velocity[i] * dt;
+    keep_out_of_walls(setup_, neighbours_, i, particles_.position, previous, particles_.position[i], particles_.velocity[i]);
+    deactivate_outside_domain(i);
   }
   for (RigidBodyState& body : rigid_bodies_) {
     integrate_rigid_body(body, setup_.gravity, dt);
     place_rigid_particles(setup_, body, particles_);
   }
+}
+
+// A fluid or deformable particle that has just left the simulation domain is held from now on
+// where it left, with no velocity; it stays a neighbour of particles within h of that spot,
+// outside the domain and away from the scene's bodies (float twin: kernels::deactivate_outside_domain).
+void ReferenceBackend::deactivate_outside_domain(std::size_t i) {
+  if (setup_.domain.contains(particles_.position[i])) return;
+  left_domain_[i] = 1;
+  particles_.velocity[i].setZero();
 }
 
 ForceEvaluation ReferenceBackend::evaluate_forces() {
@@ -166,6 +181,7 @@ std::vector<BodyState> ReferenceBackend::body_states() {
     for (std::size_t i = body.first; i < body.first + body.count; ++i) {
       s.max_speed = std::max(s.max_speed, particles_.velocity[i].norm());
       s.interaction_force += particles_.interaction_force[i];
+      s.left_domain_count += left_domain_[i];
     }
     // Particle bodies (and static ones): mass-weighted sums with the SPH masses.
     for (std::size_t i = body.first; i < body.first + body.count; ++i) {

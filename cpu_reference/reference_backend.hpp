@@ -46,12 +46,14 @@ class ReferenceBackend final : public Backend {
  private:
   void add_deformable_forces();
   void integrate();
+  void deactivate_outside_domain(std::size_t i);
   RigidBodyState* rigid_body_of(std::size_t body);       // nullptr unless `body` moves as a rigid body
   RigidBodyState& movable_rigid_body(std::size_t body);  // throws std::invalid_argument unless it does
 
   ParticleSetup setup_;
   ParticleState particles_;
   std::vector<RigidBodyState> rigid_bodies_;  // movable rigid bodies only
+  std::vector<std::uint8_t> left_domain_;     // 1: deactivated after leaving the simulation domain
   DeformableRestState deformable_rest_;
   DeformableState deformables_;
   NeighbourLists neighbours_;

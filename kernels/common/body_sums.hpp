@@ -3,6 +3,7 @@
 // wrench), accumulated in double so that the shifts to the centre of mass do not cancel away
 // float32 precision. Host and device share the accumulation; the host turns sums into
 // mssph::BodyState.
+#include "particle_views.hpp"
 #include "vec_math.hpp"
 
 namespace mssph::kernels {
@@ -18,12 +19,13 @@ struct BodySums {
   double torque_origin[3];   // sum x x f_interaction
   double min_volume_ratio;   // deformable bodies: min det F (kNoVolumeRatio until a particle adds one)
   double compressed_count;   // deformable bodies: particles at or below the model's lowest valid det F
+  double left_domain_count;  // particles deactivated after leaving the simulation domain
 };
 
 constexpr double kNoVolumeRatio = 1e30;
 
 MSSPH_HD BodySums zero_body_sums() {
-  return BodySums{0, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, {0, 0, 0}, {0, 0, 0}, kNoVolumeRatio, 0};
+  return BodySums{0, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, {0, 0, 0}, {0, 0, 0}, kNoVolumeRatio, 0, 0};
 }
 
 // A deformable particle's volume ratio J = det F against its model's lowest valid one
@@ -31,6 +33,11 @@ MSSPH_HD BodySums zero_body_sums() {
 MSSPH_HD void add_volume_ratio(BodySums& s, float j, float lowest_valid) {
   s.min_volume_ratio = j < s.min_volume_ratio ? j : s.min_volume_ratio;
   if (j <= lowest_valid) s.compressed_count += 1.0;
+}
+
+// A particle's hold code (particle_views.hpp): counts those that left the domain.
+MSSPH_HD void add_domain_status(BodySums& s, std::uint8_t hold) {
+  if (hold == kLeftDomain) s.left_domain_count += 1.0;
 }
 
 MSSPH_HD void add_particle(BodySums& s, Vec3 x, Vec3 v, float m, Vec3 f) {
@@ -65,6 +72,7 @@ MSSPH_HD BodySums combine(const BodySums& a, const BodySums& b) {
   s.max_speed = a.max_speed > b.max_speed ? a.max_speed : b.max_speed;
   s.min_volume_ratio = a.min_volume_ratio < b.min_volume_ratio ? a.min_volume_ratio : b.min_volume_ratio;
   s.compressed_count = a.compressed_count + b.compressed_count;
+  s.left_domain_count = a.left_domain_count + b.left_domain_count;
   return s;
 }
 

@@ -2,6 +2,7 @@
 
 #include "eigen_conversion.hpp"
 #include "model/deformable_rest_state.hpp"
+#include "model/wall_exclusion.hpp"
 #include "util/errors.hpp"
 
 #include <algorithm>
@@ -136,6 +137,7 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
   scene.step.gravity = to_vec3(setup.gravity);
   scene.step.inverse_rest_number_density = static_cast<float>(1.0 / setup.rest_number_density);
   scene.step.inverse_gradient_consistency = static_cast<float>(1.0 / setup.gradient_consistency);
+  scene.step.wall_exclusion_distance = static_cast<float>(kWallExclusionFraction * setup.spacing);
   scene.step.particle_count = static_cast<std::uint32_t>(setup.size());
 
   if (setup.size() > 0) {
@@ -146,6 +148,8 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
     }
     scene.origin = 0.5 * (lo + hi);
   }
+  scene.step.domain_min = scene.to_kernel_frame(setup.domain.min);
+  scene.step.domain_max = scene.to_kernel_frame(setup.domain.max);
 
   for (const BodySetup& b : setup.bodies) {
     BodyParameters p{};
@@ -181,7 +185,7 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
     scene.velocity.push_back(to_vec4(setup.velocity[i]));
     scene.rest_offset.push_back(to_vec4(setup.rest_offset[i]));
     scene.body.push_back(setup.body[i]);
-    scene.fixed.push_back(setup.fixed[i]);
+    scene.fixed.push_back(setup.fixed[i] ? kFixedRegion : kFree);
   }
   scene.grid = choose_grid_shape(scene.position, setup.smoothing_length);
   add_deformable_bodies(setup, scene);
@@ -218,6 +222,7 @@ BodyState to_body_state(const FloatScene& scene, const BodySums& sums, const Rig
     s.min_volume_ratio = sums.min_volume_ratio;
     s.compressed_count = static_cast<std::size_t>(sums.compressed_count);
   }
+  s.left_domain_count = static_cast<std::size_t>(sums.left_domain_count);
   return s;
 }
 

@@ -14,6 +14,8 @@
 // with one lane (all candidates); a GPU gives each particle a small team and adds the lanes'
 // partial sums (same pair arithmetic, another summation order).
 #include "particle_views.hpp"
+#include "simulation_domain.hpp"
+#include "wall_exclusion.hpp"
 
 namespace mssph::kernels {
 
@@ -157,8 +159,10 @@ MSSPH_HD void leapfrog(Vec4& position, Vec4& velocity, Vec3 force, float mass, b
 }
 
 // Steps 3 and 4 joined for sorted particle s, given its force sum: records its interaction force
-// and, for fluid and deformable particles, adds its elastic force and advances its canonical
-// state. Writes only particle s's canonical entries, so all particles can run at once.
+// and, for fluid and deformable particles, adds its elastic force, advances its canonical state,
+// keeps it out of the walls (wall_exclusion.hpp) and deactivates it once it leaves the domain
+// (simulation_domain.hpp). Writes only particle s's canonical entries, so all particles can run
+// at once.
 MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, std::uint32_t s, const ForceSum& f) {
   const std::uint32_t i = v.id[s];
   c.interaction_force[i] = make_vec4(f.interaction, 0.0f);
@@ -166,7 +170,10 @@ MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, std::ui
   if (body.kind != kFluid && body.kind != kDeformable) return;
   Vec3 total = f.pressure + f.viscosity;
   if (c.elastic_force) total += xyz(c.elastic_force[i]);
+  const Vec3 previous = xyz(c.position[i]);
   leapfrog(c.position[i], c.velocity[i], total, body.sph_mass, c.fixed[i] != 0, v.step);
+  keep_out_of_walls(v, previous, c.position[i], c.velocity[i]);
+  deactivate_outside_domain(v.step, c.position[i], c.velocity[i], c.fixed[i]);
 }
 
 // ---- The grid's last stage: particles in cell order ----

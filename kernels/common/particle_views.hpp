@@ -31,6 +31,8 @@ struct StepParameters {
   Vec3 gravity;                 // [m/s^2]
   float inverse_rest_number_density;   // 1 / delta0 [m^3]
   float inverse_gradient_consistency;  // 1 / g, see model/lattice_calibration.hpp
+  float wall_exclusion_distance;       // d_wall: closest approach to a boundary particle [m], model/wall_exclusion.hpp
+  Vec3 domain_min, domain_max;         // the simulation domain, kernel frame [m] (simulation_domain.hpp)
   std::uint32_t particle_count;
 };
 
@@ -65,6 +67,10 @@ struct SortedView {
   const VolumePressure* volume_pressure;  // sorted, written by the density pass
 };
 
+// Why a particle is held in place (CanonicalState::fixed): never, by a deformable body's fixed
+// region (from the scene), or because it left the simulation domain (set by the step).
+enum HoldCode : std::uint8_t { kFree = 0, kFixedRegion = 1, kLeftDomain = 2 };
+
 // The evolving canonical state.
 struct CanonicalState {
   Vec4* position;                 // xyz [m]
@@ -72,7 +78,7 @@ struct CanonicalState {
   Vec4* interaction_force;        // xyz [N]: from other bodies, eq. 7
   const Vec4* elastic_force;      // xyz [N]: deformable particles, else zero (may be null)
   const std::uint32_t* body;      // body index
-  const std::uint8_t* fixed;      // 1: held in place
+  std::uint8_t* fixed;            // HoldCode: held by a fixed region, or since it left the domain
 };
 
 }  // namespace mssph::kernels

@@ -161,6 +161,7 @@ std::vector<BodyState> CpuBackend::body_states() {
     const float mass = scene_.bodies[b].sph_mass;
     for (std::size_t i = body.first; i < body.first + body.count; ++i) {
       add_particle(sums, xyz(scene_.position[i]), xyz(scene_.velocity[i]), mass, xyz(interaction_force_[i]));
+      add_domain_status(sums, scene_.fixed[i]);
     }
     for (const ElasticParameters& elastic : scene_.elastic_bodies) {
       if (elastic.first_particle != body.first || body.kind != BodyKind::deformable) continue;

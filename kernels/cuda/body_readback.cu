@@ -24,6 +24,7 @@ __global__ void body_sums_kernel(const BodyChunk* chunks, const BodyParameters* 
   BodySums acc = zero_body_sums();
   for (std::uint32_t i = chunk.first + threadIdx.x; i < chunk.first + chunk.count; i += blockDim.x) {
     add_particle(acc, xyz(state.position[i]), xyz(state.velocity[i]), mass, xyz(state.interaction_force[i]));
+    add_domain_status(acc, state.fixed[i]);
     if (chunk.first_deformable != kNotDeformable) {
       add_volume_ratio(acc, determinant(deformation[chunk.first_deformable + (i - chunk.first)]),
                        chunk.lowest_valid_volume_ratio);

@@ -48,6 +48,7 @@ void print_summary_line(const std::string& output, const RunSummary& summary, co
     std::printf(", compressed beyond the material model's valid range in %s of logged samples",
                 summary.outside_valid_range.c_str());
   }
+  if (!summary.left_domain.empty()) std::printf(", left the domain: %s", summary.left_domain.c_str());
   std::printf("\n");
   std::fflush(stdout);
 }

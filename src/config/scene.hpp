@@ -41,8 +41,8 @@ struct Material {
   bool kernel_gradient_correction = false;
 };
 
-// An axis-aligned region in world coordinates [m]; particles of a deformable body inside it are
-// held in place (e.g. a block glued to the ground).
+// An axis-aligned box in world coordinates [m]: a fixed region (particles of a deformable body
+// inside it are held in place, e.g. a block glued to the ground) or the simulation domain.
 struct Region {
   Eigen::Vector3d min = Eigen::Vector3d::Zero();
   Eigen::Vector3d max = Eigen::Vector3d::Zero();
@@ -74,6 +74,11 @@ struct SimulationConfig {
   std::uint64_t seed = 0;          // for the lattice jitter
   double jitter = 0.0;             // random lattice perturbation, fraction of dx
   double max_speed = 0.0;          // blow-up bound on any particle's speed [m/s]
+  // The simulation domain: a particle that leaves it is deactivated (sim/lost_mass_watch.hpp).
+  // Absent: the bounding box of all bodies' particles at the start plus a margin
+  // (scene/simulation_domain.hpp).
+  std::optional<Region> domain;
+  double max_lost_mass_fraction = 0.001;  // of a body's mass outside the domain before the run fails [-]
 };
 
 struct ProxyConfig {

@@ -95,7 +95,7 @@ std::map<std::string, MaterialEntry> read_materials(const JsonReader& root) {
 SimulationConfig read_simulation(const JsonReader& root) {
   const JsonReader s = root.child("simulation");
   s.allow_only({"dt", "duration", "gravity", "particle_spacing", "smoothing_length", "seed", "jitter",
-                "max_speed"});
+                "max_speed", "domain", "max_lost_mass_fraction"});
   SimulationConfig sim;
   sim.dt = s.number("dt", Interval::positive());
   sim.duration = s.number("duration", Interval::positive());
@@ -117,6 +117,13 @@ SimulationConfig read_simulation(const JsonReader& root) {
   sim.seed = static_cast<std::uint64_t>(s.integer_or("seed", 0, Interval::non_negative()));
   sim.jitter = s.number_or("jitter", 0.0, Interval{0.0, 0.25, false, false});
   sim.max_speed = s.number_or("max_speed", 50.0, Interval::positive());
+  if (const auto domain = s.optional_child("domain")) {
+    domain->allow_only({"min", "max"});
+    const Region box{domain->vec3("min"), domain->vec3("max")};
+    if ((box.min.array() >= box.max.array()).any()) domain->fail("max", "expected max > min in every axis");
+    sim.domain = box;
+  }
+  sim.max_lost_mass_fraction = s.number_or("max_lost_mass_fraction", 0.001, Interval{0.0, 1.0, false, false});
   return sim;
 }
 

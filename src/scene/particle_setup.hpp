@@ -41,6 +41,8 @@ struct ParticleSetup {
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   double dt = 0.0;
   double max_speed = 0.0;
+  Region domain;                       // particles leaving it are deactivated [m]
+  double max_lost_mass_fraction = 0.0;  // of a body's mass, before the run fails [-]
 
   std::vector<Eigen::Vector3d> position;   // [m]
   std::vector<Eigen::Vector3d> velocity;   // [m/s]

@@ -1,6 +1,7 @@
 #include "scene/scene_builder.hpp"
 
 #include "scene/lattice.hpp"
+#include "scene/simulation_domain.hpp"
 #include "model/lattice_calibration.hpp"
 #include "util/errors.hpp"
 
@@ -74,6 +75,23 @@ void check_overlaps(const Scene& scene, const ParticleSetup& setup, const std::v
         }
       }
     }
+  }
+}
+
+// A fluid or deformable particle outside a scene-set domain at the start would be deactivated by
+// the first step: the domain is a mistake, refused as bad input.
+void check_domain_holds_moving_particles(const Scene& scene, const ParticleSetup& setup) {
+  if (!scene.simulation.domain) return;
+  for (std::size_t i = 0; i < setup.size(); ++i) {
+    const BodySetup& body = setup.bodies[setup.body[i]];
+    if (body.kind != BodyKind::fluid && body.kind != BodyKind::deformable) continue;
+    if (setup.domain.contains(setup.position[i])) continue;
+    std::ostringstream message;
+    const Vector3d& x = setup.position[i];
+    message << scene.source_file << ": /simulation/domain: body \"" << body.name << "\" has a particle at [" << x.x()
+            << ", " << x.y() << ", " << x.z()
+            << "] m outside the domain at the start; the domain must hold every fluid and deformable particle";
+    throw InputError(message.str(), "/simulation/domain");
   }
 }
 
@@ -152,6 +170,9 @@ ParticleSetup build_particles(const Scene& scene) {
     setup.bodies.push_back(body);
   }
   check_overlaps(scene, setup, lattice_site);
+  setup.domain = sim.domain ? *sim.domain : default_simulation_domain(setup.position, setup.smoothing_length);
+  check_domain_holds_moving_particles(scene, setup);
+  setup.max_lost_mass_fraction = sim.max_lost_mass_fraction;
   return setup;
 }
 

@@ -38,6 +38,8 @@ struct BodyState {
   // negative inverted), from the last step's elastic forces. Other bodies keep 1 and 0.
   double min_volume_ratio = 1.0;      // smallest J over the body's particles [-]
   std::size_t compressed_count = 0;   // particles with J <= lowest_valid_volume_ratio(model) (config/elastic_model.hpp)
+  // Fluid and deformable bodies: particles deactivated since they left the simulation domain.
+  std::size_t left_domain_count = 0;
 };
 
 // Particle fields for snapshots, in particle order.

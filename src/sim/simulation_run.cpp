@@ -2,6 +2,7 @@
 
 #include "haptics/haptics_run.hpp"
 #include "sim/compression_watch.hpp"
+#include "sim/lost_mass_watch.hpp"
 #include "sim/interrupt.hpp"
 #include "sim/progress.hpp"
 #include "util/errors.hpp"
@@ -62,22 +63,50 @@ void append_vec3(RunLog& log, std::size_t series, const Eigen::Vector3d& v) {
 
 void append_scalar(RunLog& log, std::size_t series, double v) { log.append(series, std::span<const double>(&v, 1)); }
 
-void check_for_blow_up(const std::vector<BodyState>& states, const ParticleSetup& setup, double time) {
+// The particle of `body` that shows the blow-up in a snapshot: the first with a non-finite
+// position or velocity, else the fastest.
+std::size_t blow_up_particle(const ParticleSnapshot& snap, const BodySetup& body) {
+  std::size_t worst = body.first;
+  double worst_speed = -1.0;
+  for (std::size_t i = body.first; i < body.first + body.count; ++i) {
+    const Eigen::Vector3f x(&snap.position[3 * i]), v(&snap.velocity[3 * i]);
+    if (!x.allFinite() || !v.allFinite()) return i;
+    if (v.norm() > worst_speed) {
+      worst_speed = v.norm();
+      worst = i;
+    }
+  }
+  return worst;
+}
+
+// A blow-up names the step, body, particle, its position and velocity, and the CFL numbers of
+// that velocity against the time step: acoustic dt (c + |v|) / h (stable below 0.25, the bound the
+// start-up warnings use, DESIGN.md section 1) and advective dt |v| / h.
+void check_for_blow_up(const std::vector<BodyState>& states, const ParticleSetup& setup, Backend& backend,
+                       std::size_t step) {
   for (std::size_t b = 0; b < states.size(); ++b) {
     const BodyState& s = states[b];
     const bool finite = std::isfinite(s.max_speed) && s.centre_of_mass.allFinite() && s.interaction_force.allFinite();
-    if (!finite || s.max_speed > setup.max_speed) {
-      std::ostringstream message;
-      message << "blow-up at t = " << time << " s: body \"" << setup.bodies[b].name << "\" ";
-      if (!finite) {
-        message << "has non-finite state (NaN or infinity)";
-      } else {
-        message << "has a particle at " << s.max_speed << " m/s, beyond simulation/max_speed = " << setup.max_speed
-                << " m/s";
-      }
-      message << "; reduce dt or stiffness (see the start-up warnings)";
-      throw SimulationFailure(message.str());
+    if (finite && s.max_speed <= setup.max_speed) continue;
+    const BodySetup& body = setup.bodies[b];
+    const ParticleSnapshot snap = backend.snapshot();
+    const std::size_t i = blow_up_particle(snap, body);
+    const Eigen::Vector3f x(&snap.position[3 * i]), v(&snap.velocity[3 * i]);
+    const double speed = v.norm();
+    const double c = std::sqrt(body.material.pressure_stiffness);
+    std::ostringstream message;
+    message << "blow-up at step " << step << ", t = " << backend.time() << " s: body \"" << body.name << "\" ";
+    if (!finite) {
+      message << "has non-finite state (NaN or infinity)";
+    } else {
+      message << "has a particle at " << s.max_speed << " m/s, beyond simulation/max_speed = " << setup.max_speed
+              << " m/s";
     }
+    message << "; particle " << i << " at (" << x.x() << ", " << x.y() << ", " << x.z() << ") m, velocity ("
+            << v.x() << ", " << v.y() << ", " << v.z() << ") m/s; CFL numbers: acoustic dt (c + |v|) / h = "
+            << setup.dt * (c + speed) / setup.smoothing_length << " (stable below 0.25), advective dt |v| / h = "
+            << setup.dt * speed / setup.smoothing_length << "; reduce dt or stiffness (see the start-up warnings)";
+    throw SimulationFailure(message.str());
   }
 }
 
@@ -122,6 +151,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
   }
 
   CompressionWatch compression(log, setup);
+  LostMassWatch lost_mass(log, setup);
   std::optional<HapticsRun> haptics;
   if (scene.proxy) haptics.emplace(scene, setup, log, options.record_device);
 
@@ -150,13 +180,15 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
       const bool log_now = step % log_every == 0 || step == total_steps;
       if (log_now || step % check_every == 0) {
         const std::vector<BodyState> states = backend.body_states();
-        check_for_blow_up(states, setup, backend.time());
+        lost_mass.check(states, backend.time());  // before the blow-up check: a lost particle is not one
+        check_for_blow_up(states, setup, backend, step);
         if (force_body < states.size()) {
           summary.peak_force = std::max(summary.peak_force, states[force_body].interaction_force.norm());
         }
         if (log_now) {
           append_scalar(log, time_series, backend.time());
           compression.record(states, backend.time());
+          lost_mass.record(states);
           for (std::size_t b = 0; b < states.size(); ++b) {
             const BodyState& s = states[b];
             const BodySeries& series = body_series[b];
@@ -197,6 +229,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
     try {
       log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
       compression.finish();
+      lost_mass.finish();
     } catch (const std::exception&) {
     }
     if (haptics) {
@@ -219,6 +252,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
 
   summary.fraction_outside_valid_range = compression.finish();
   summary.outside_valid_range = compression.summary();
+  summary.left_domain = lost_mass.finish();
   log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
   log.set_attribute("/", "simulated_time", summary.simulated_time);
   log.set_attribute("/", "wall_time", summary.wall_seconds);

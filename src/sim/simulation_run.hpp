@@ -29,6 +29,9 @@ struct RunSummary {
   // the largest fraction of logged samples over the bodies [-], and "block 12.3 %, ..." ("" if none).
   double fraction_outside_valid_range = 0.0;
   std::string outside_valid_range;
+  // Bodies that lost particles out of the simulation domain (sim/lost_mass_watch.hpp):
+  // "block 2 particles (0.03 %), ..." ("" if none).
+  std::string left_domain;
 };
 
 // Runs to the end of the scene. On a blow-up the log is marked "failed: ..." and the
