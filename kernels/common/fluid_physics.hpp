@@ -109,9 +109,15 @@ struct ForceSum {
   Vec3 pressure;     // [N] from all neighbours
   Vec3 viscosity;    // [N] from all neighbours
   Vec3 interaction;  // [N] the part of both from other bodies (eq. 7)
+  // Boundary particles within h of i at the start of the step. A particle without one cannot end
+  // the step within the wall exclusion distance (0.8 dx) of a boundary particle as long as it
+  // moves less than h - 0.8 dx in a step (at least 0.2 dx, 1.2 dx at the default h = 2 dx; the
+  // CFL bound keeps a step's move far below), so only a particle with one needs the wall check
+  // after its leap-frog (keep_out_of_walls), which on a GPU one lane does alone.
+  std::uint32_t boundary_neighbours;
 };
 
-MSSPH_HD ForceSum zero_force_sum() { return {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}; }
+MSSPH_HD ForceSum zero_force_sum() { return {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, 0}; }
 
 MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const SortedView& v, std::uint32_t t) {
   if (t == i.s) return;
@@ -121,6 +127,7 @@ MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
   if (r2 >= v.step.kernels.h2) return;
   const std::uint32_t body_j = body_of(p_j);
   const bool same_body = body_j == i.body;
+  if (v.bodies[body_j].kind == kBoundary) ++sum.boundary_neighbours;
   if (same_body && i.parameters.kind != kFluid) return;  // rigid, deformable: no pressure among themselves
   const VolumePressure vp_j = v.volume_pressure[t];
   const Vec3 u_j = xyz(v.velocity[t]);
@@ -172,7 +179,7 @@ MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, std::ui
   if (c.elastic_force) total += xyz(c.elastic_force[i]);
   const Vec3 previous = xyz(c.position[i]);
   leapfrog(c.position[i], c.velocity[i], total, body.sph_mass, c.fixed[i] != 0, v.step);
-  keep_out_of_walls(v, previous, c.position[i], c.velocity[i]);
+  if (f.boundary_neighbours > 0) keep_out_of_walls(v, previous, c.position[i], c.velocity[i]);
   deactivate_outside_domain(v.step, c.position[i], c.velocity[i], c.fixed[i]);
 }
 

@@ -108,7 +108,10 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   // Zero at the start; the block that takes a body's last ticket sets it back to zero.
   visit("rigid_tickets", a.rigid_tickets, Filled<std::uint32_t>{scene.rigid_bodies.size(), 0u});
   visit("body_chunks", a.body_chunks, copy_of(chunks.body));
-  visit("readback", a.readback, Uninitialised{ReadbackLayout(chunks.body.size(), scene.rigid_bodies.size()).bytes});
+  // Zero at the start: it is read back whole, the padding between the sums and the rigid bodies
+  // included, which no kernel writes.
+  visit("readback", a.readback,
+        Filled<unsigned char>{ReadbackLayout(chunks.body.size(), scene.rigid_bodies.size()).bytes, 0});
 }
 
 // The size of one array, for counting before allocating.

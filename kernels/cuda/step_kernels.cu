@@ -27,6 +27,11 @@ __device__ float team_sum(float x) {
   return x;
 }
 template <unsigned Lanes>
+__device__ std::uint32_t team_sum(std::uint32_t x) {
+  for (unsigned offset = 1; offset < Lanes; offset *= 2) x += __shfl_xor_sync(0xffffffffu, x, offset);
+  return x;
+}
+template <unsigned Lanes>
 __device__ Vec3 team_sum(Vec3 v) {
   return {team_sum<Lanes>(v.x), team_sum<Lanes>(v.y), team_sum<Lanes>(v.z)};
 }
@@ -51,7 +56,8 @@ __global__ void forces_kernel(SortedView view, CanonicalState state) {
   const bool active = s < view.step.particle_count;
   ForceSum sum = zero_force_sum();
   if (active) sum = force_sum(view, load_force_particle(view, s), lane, Lanes);
-  sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction)};
+  sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction),
+         team_sum<Lanes>(sum.boundary_neighbours)};
   if (active && lane == 0) apply_forces(view, state, s, sum);
 }
 
