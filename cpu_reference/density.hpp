@@ -1,10 +1,12 @@
 #pragma once
 // Step 2 of the loop (paper 3.2): densities and pressures.
+#include "model/deformable_rest_state.hpp"
 #include "model/neighbour_search.hpp"
 #include "particle_state.hpp"
 #include "scene/particle_setup.hpp"
 
 #include <algorithm>
+#include <vector>
 
 namespace mssph::reference {
 
@@ -34,7 +36,11 @@ inline double equation_of_state(double pressure_stiffness, double density, doubl
   return std::max(0.0, pressure_stiffness * (density - rest_density));
 }
 
-// Densities, volumes V_i = m_i / rho_i and pressures of all particles.
-void compute_densities(const ParticleSetup& setup, const NeighbourLists& neighbours, ParticleState& state);
+// Densities, volumes V_i = m_i / rho_i and pressures of all particles. A deformable particle reads
+// the density of its contact layer (model/deformable_rest_state.hpp, reads_contact_layer_density):
+// its live sum skips its own body, whose share `own_rest_number_density` (DeformableRestState,
+// n entries) it takes at rest.
+void compute_densities(const ParticleSetup& setup, const std::vector<double>& own_rest_number_density,
+                       const NeighbourLists& neighbours, ParticleState& state);
 
 }  // namespace mssph::reference

@@ -56,7 +56,7 @@ void ReferenceBackend::compute_forces() {
   timed(phase_seconds_[kNeighbours], [&] { neighbours_ = find_neighbours(particles_.position, setup_.smoothing_length); });
   timed(phase_seconds_[kRotations], [&] { compute_rotations(setup_, deformable_rest_, particles_.position, deformables_); });
   timed(phase_seconds_[kDensities], [&] {
-    compute_densities(setup_, neighbours_, particles_);
+    compute_densities(setup_, deformable_rest_.own_rest_number_density, neighbours_, particles_);
     compute_elastic_stresses(setup_, deformable_rest_, particles_.position, deformables_);
   });
   timed(phase_seconds_[kForces], [&] {

@@ -40,13 +40,16 @@ double body_particle_mass(const ParticleSetup& setup, const BodySetup& body) {
   return m;
 }
 
-// The rest bonds, volumes, corrections and Lame parameters of deformable bodies, computed once in
+// The rest bonds, volumes, corrections, Lame parameters and contact layers' own-body number densities
+// of deformable bodies, computed once in
 // double by the model's rest-state builder, so every backend starts from the same rest configuration.
 void add_deformable_bodies(const ParticleSetup& setup, FloatScene& scene) {
   bool any = false;
   for (const BodySetup& b : setup.bodies) any = any || b.kind == BodyKind::deformable;
   if (!any) return;
   const DeformableRestState rest = build_deformable_rest_state(setup);
+  scene.own_rest_number_density.reserve(setup.size());
+  for (const double delta : rest.own_rest_number_density) scene.own_rest_number_density.push_back(static_cast<float>(delta));
   std::vector<std::vector<RestBond>> bonds_of;  // per deformable particle
   for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
     const BodySetup& body = setup.bodies[b];

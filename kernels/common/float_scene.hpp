@@ -40,6 +40,9 @@ struct FloatScene {
   std::vector<std::uint32_t> bond_count;
   std::vector<RestBond> bonds;
   std::vector<float> rest_volume;              // V0 [m^3]
+  // Canonical order, all n particles: the own-body number density at rest of a deformable
+  // particle's contact layer (model/deformable_rest_state.hpp), 0 for other kinds [1/m^3].
+  std::vector<float> own_rest_number_density;
 
   Vec3 to_kernel_frame(const Eigen::Vector3d& world) const {
     const Eigen::Vector3d local = world - origin;

@@ -29,16 +29,35 @@ MSSPH_HD void add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, s
   sum.delta += v.step.kernels.spiky(norm(x_i - xyz(v.position[t])));
 }
 
-// Lane `lane` of `lanes`' share of particle s's density sum.
+// A deformable particle reads the density of its contact layer: its own body's neighbours are not
+// summed live but taken at rest (density_from). model/deformable_rest_state.hpp
+// (reads_contact_layer_density) says why; reference: compute_densities.
+MSSPH_HD bool reads_contact_layer_density(const BodyParameters& body) { return body.kind == kDeformable; }
+
+// Lane `lane` of `lanes`' share of particle s's live density sum.
 MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes) {
-  const Vec3 x_i = xyz(v.position[s]);
+  const Vec4 p_i = v.position[s];
+  const Vec3 x_i = xyz(p_i);
+  const std::uint32_t body_i = body_of(p_i);
+  const bool contact_layer = reads_contact_layer_density(v.bodies[body_i]);
   DensitySum sum{0.0f};
-  v.grid.for_each_candidate(x_i, lane, lanes, [&](std::uint32_t t) { add_density_pair(sum, v, x_i, t); });
+  v.grid.for_each_candidate(x_i, lane, lanes, [&](std::uint32_t t) {
+    if (contact_layer && body_of(v.position[t]) == body_i) return;  // its own body: at rest, in density_from
+    add_density_pair(sum, v, x_i, t);
+  });
   return sum;
 }
 
+// The number density behind particle s's pressure from its live sum: a deformable particle adds its
+// own body's share at rest, every other particle reads its sum as it is.
+MSSPH_HD float number_density_of(const DensitySum& sum, const SortedView& v, std::uint32_t s) {
+  if (!reads_contact_layer_density(v.bodies[body_of(v.position[s])])) return sum.delta;
+  return sum.delta + v.own_rest_number_density[v.id[s]];
+}
+
 // Paper eq. 1 read as a number density (Solenthaler and Pajarola 2008): rho_i = rho0 delta_i / delta0
-// with delta_i = sum_j W(x_i - x_j) over all bodies (reference: density, which divides by delta0).
+// with delta_i = sum_j W(x_i - x_j) over all bodies, a deformable body's own taken at rest
+// (reference: density, which divides by delta0).
 MSSPH_HD float density(float rest_density, float number_density, float inverse_rest_number_density) {
   return rest_density * number_density * inverse_rest_number_density;
 }
@@ -56,7 +75,7 @@ struct DensityResult {
 
 MSSPH_HD DensityResult density_from(const DensitySum& sum, const SortedView& v, std::uint32_t s) {
   const BodyParameters& body = v.bodies[body_of(v.position[s])];
-  const float rho = density(body.rest_density, sum.delta, v.step.inverse_rest_number_density);
+  const float rho = density(body.rest_density, number_density_of(sum, v, s), v.step.inverse_rest_number_density);
   return {rho, {body.sph_mass / rho, equation_of_state(body.pressure_stiffness, rho, body.rest_density)}};
 }
 

@@ -65,6 +65,9 @@ struct SortedView {
   const Vec4* velocity;                  // sorted: xyz [m/s]
   const std::uint32_t* id;               // sorted -> canonical index
   const VolumePressure* volume_pressure;  // sorted, written by the density pass
+  // Canonical: a deformable particle's own-body number density at rest [1/m^3], the frozen part of
+  // its contact layer's density (fluid_physics.hpp, density_from); null without deformable bodies.
+  const float* own_rest_number_density;
 };
 
 // Why a particle is held in place (CanonicalState::fixed): never, by a deformable body's fixed

@@ -38,7 +38,8 @@ SortedView CpuBackend::sorted_view() const {
   return SortedView{scene_.step,           scene_.bodies.data(),
                     CellRanges{scene_.grid, cell_start_.data()},
                     sorted_position_.data(), sorted_velocity_.data(),
-                    sorted_id_.data(),       volume_pressure_.data()};
+                    sorted_id_.data(),       volume_pressure_.data(),
+                    scene_.own_rest_number_density.empty() ? nullptr : scene_.own_rest_number_density.data()};
 }
 
 // Counting sort of the particles by cell key (stable: equal keys keep canonical order), then the

@@ -50,6 +50,7 @@ struct DeviceArrays {
   Array<std::uint32_t> deformable_body, bond_count;
   Array<RestBond> bonds;
   Array<float> rest_volume;
+  Array<float> own_rest_number_density;  // canonical, n entries
   Array<Quat> rotation;
   Array<Mat3> stress_action, deformation;
   // Bodies, the rigid-body chunk reductions and the logged sums' read-back.
@@ -84,6 +85,7 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
     visit("bond_count", a.bond_count, copy_of(scene.bond_count));
     visit("bonds", a.bonds, copy_of(scene.bonds));
     visit("rest_volume", a.rest_volume, copy_of(scene.rest_volume));
+    visit("own_rest_number_density", a.own_rest_number_density, copy_of(scene.own_rest_number_density));
     visit("rotation", a.rotation, Filled<Quat>{deformables, Quat{0, 0, 0, 1}});
     visit("stress_action", a.stress_action, Uninitialised{deformables});
     // Identity until the first step: the logged volume ratio of the rest state is 1.

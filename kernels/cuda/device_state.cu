@@ -66,7 +66,8 @@ SortedView sorted_view(const FloatScene& scene, const DeviceState& state) {
                     state.sorted_position.data(),
                     state.sorted_velocity.data(),
                     state.sorted_id.data(),
-                    state.volume_pressure.data()};
+                    state.volume_pressure.data(),
+                    state.own_rest_number_density.data()};  // empty, so null, without deformable bodies
 }
 
 // elastic_force is empty, so null, without deformable bodies.

@@ -30,6 +30,7 @@ DeformableRestState build_deformable_rest_state(const ParticleSetup& setup) {
   rest.volume.assign(n, 0.0);
   rest.correction.assign(n, Eigen::Matrix3d::Identity());
   rest.lame.assign(n, LameParameters{});
+  rest.own_rest_number_density.assign(n, 0.0);
 
   // Same-body pairs of deformable particles within h, self excluded.
   const NeighbourLists all = find_neighbours(setup.position, h);
@@ -53,6 +54,17 @@ DeformableRestState build_deformable_rest_state(const ParticleSetup& setup) {
       mass_density += setup.mass[*j] * w((setup.position[*j] - setup.position[i]).squaredNorm());
     }
     rest.volume[i] = setup.mass[i] / mass_density;
+  }
+
+  // The contact layer's frozen own-body number density, with the density pass's spiky kernel.
+  const SpikyKernel w_density(h);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!reads_contact_layer_density(setup.bodies[setup.body[i]].kind)) continue;
+    double delta = w_density(0.0);
+    for (const std::size_t* j = rest.neighbours.begin(i); j != rest.neighbours.end(i); ++j) {
+      delta += w_density((setup.position[*j] - setup.position[i]).norm());
+    }
+    rest.own_rest_number_density[i] = delta;
   }
 
   for (std::size_t i = 0; i < n; ++i) {

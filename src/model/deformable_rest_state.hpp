@@ -41,7 +41,24 @@ struct DeformableRestState {
   // L_i = (sum_j V0_j grad W(X_i - X_j) (x) X_ij)^-1 with kernel-gradient correction, else I.
   std::vector<Eigen::Matrix3d> correction;
   std::vector<LameParameters> lame;  // per particle, the material law of its body (material_law.hpp)
+  // The own body's share of the number density behind a deformable particle's pressure, frozen at
+  // rest: delta0_own,i = W(0) + sum_j W(|X_ij|), j over the rest neighbours, W the spiky smoothing
+  // kernel of the density pass [1/m^3]; 0 for particles of other kinds. See contact_layer below.
+  std::vector<double> own_rest_number_density;
 };
+
+// The density of a solid's contact layer. A deformable particle's pressure acts on other bodies
+// only (eq. 7: the pressure pairs within a deformable body are skipped; elasticity holds the body
+// together), so the number density behind it counts the other bodies' neighbours live and its own
+// body's at rest: delta_i = sum_{j not in body(i)} W(|x_i - x_j|) + delta0_own,i. Then the
+// interface pressure is the gradient of one potential, and the body's elastic compression, whose
+// restoring force is elasticity's, cannot push on its neighbours a second time through pressure
+// (with the own body's neighbours counted live it did, through a force that was no potential's
+// gradient and fed energy into a body pressed against it: results/squeeze-chatter.md). The same
+// spirit as the frozen number density of boundary particles in Akinci et al. 2012 ("Versatile
+// rigid-fluid coupling for incompressible SPH"). Rigid and boundary bodies need no special case:
+// their own neighbourhoods never change, so their live own-body sum is already their rest share.
+inline bool reads_contact_layer_density(BodyKind kind) { return kind == BodyKind::deformable; }
 
 inline bool is_deformable(const ParticleSetup& setup, std::size_t i) {
   return setup.bodies[setup.body[i]].kind == BodyKind::deformable;

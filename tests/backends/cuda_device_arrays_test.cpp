@@ -106,6 +106,7 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   EXPECT_EQ(bytes_of(listed, "sorted_id"), n * 4);
   EXPECT_EQ(bytes_of(listed, "cell_start"), (cells + 1) * 4);
   EXPECT_EQ(bytes_of(listed, "elastic_force"), n * 16);
+  EXPECT_EQ(bytes_of(listed, "own_rest_number_density"), n * 4);
   EXPECT_EQ(bytes_of(listed, "rotation"), deformables * sizeof(kernels::Quat));
   EXPECT_EQ(bytes_of(listed, "bond_count"), deformables * 4);
   EXPECT_EQ(bytes_of(listed, "bonds"), scene.bonds.size() * sizeof(kernels::RestBond));
@@ -128,10 +129,12 @@ TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
   without.bond_count.clear();
   without.bonds.clear();
   without.rest_volume.clear();
+  without.own_rest_number_density.clear();
   const std::size_t n = setup.size();
   const std::size_t d = scene.deformable_body.size();
   const std::size_t deformable_bytes =
       n * sizeof(kernels::Vec4) +                                           // elastic_force
+      n * sizeof(float) +                                                   // own_rest_number_density
       scene.elastic_bodies.size() * sizeof(kernels::ElasticParameters) +    // elastic_bodies
       d * (sizeof(std::uint32_t) + sizeof(float) + sizeof(kernels::Quat)) + // deformable_body, rest_volume, rotation
       d * 2 * sizeof(kernels::Mat3) +                                       // stress_action, deformation
