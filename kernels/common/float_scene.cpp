@@ -135,7 +135,7 @@ GridShape choose_grid_shape(const std::vector<Vec4>& positions, double h) {
 
 FloatScene make_float_scene(const ParticleSetup& setup) {
   FloatScene scene;
-  scene.step.kernels = SmoothingKernels::for_support(setup.smoothing_length);
+  scene.step.smoothing = SmoothingKernels::for_support(setup.smoothing_length);
   scene.step.dt = static_cast<float>(setup.dt);
   scene.step.gravity = to_vec3(setup.gravity);
   scene.step.inverse_rest_number_density = static_cast<float>(1.0 / setup.rest_number_density);

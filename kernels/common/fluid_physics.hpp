@@ -26,7 +26,7 @@ struct DensitySum {
 };
 
 MSSPH_HD void add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, std::uint32_t t) {
-  sum.delta += v.step.kernels.spiky(norm(x_i - xyz(v.position[t])));
+  sum.delta += v.step.smoothing.spiky(norm(x_i - xyz(v.position[t])));
 }
 
 // A deformable particle reads the density of its contact layer: its own body's neighbours are not
@@ -143,7 +143,7 @@ MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
   const Vec4 p_j = v.position[t];
   const Vec3 r_ij = i.x - xyz(p_j);
   const float r2 = squared_norm(r_ij);
-  if (r2 >= v.step.kernels.h2) return;
+  if (r2 >= v.step.smoothing.h2) return;
   const std::uint32_t body_j = body_of(p_j);
   const bool same_body = body_j == i.body;
   if (v.bodies[body_j].kind == kBoundary) ++sum.boundary_neighbours;
@@ -152,9 +152,9 @@ MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
   const Vec3 u_j = xyz(v.velocity[t]);
   const float r = std::sqrt(r2);
   const Vec3 pressure = pressure_force_pair(i.vp, vp_j, v.step.inverse_gradient_consistency,
-                                            v.step.kernels.spiky_gradient(r_ij, r));
+                                            v.step.smoothing.spiky_gradient(r_ij, r));
   const float mu = same_body ? i.parameters.viscosity : interface_viscosity(i.parameters.viscosity, v.bodies[body_j].viscosity);
-  const Vec3 viscosity = viscosity_force_pair(mu, i.vp.volume, vp_j.volume, v.step.kernels.viscosity_laplacian(r), i.u, u_j);
+  const Vec3 viscosity = viscosity_force_pair(mu, i.vp.volume, vp_j.volume, v.step.smoothing.viscosity_laplacian(r), i.u, u_j);
   sum.pressure += pressure;
   sum.viscosity += viscosity;
   if (!same_body) sum.interaction += interaction_force(pressure, viscosity);

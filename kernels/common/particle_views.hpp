@@ -26,7 +26,7 @@ struct BodyParameters {
 };
 
 struct StepParameters {
-  SmoothingKernels kernels;
+  SmoothingKernels smoothing;
   float dt;                     // [s]
   Vec3 gravity;                 // [m/s^2]
   float inverse_rest_number_density;   // 1 / delta0 [m^3]
