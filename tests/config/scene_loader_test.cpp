@@ -203,8 +203,8 @@ TEST(SetOverride, MayAddAKeyWhichIsThenValidatedLikeTheFile) {
   EXPECT_EQ(scene.find_body("anvil")->velocity, Eigen::Vector3d(1.0, 0.0, 0.0));
   EXPECT_EQ(input_error_of([&] { load_scene(kBase, {"simulation/time_step=0.001"}); }),
             kBase + ": /simulation/time_step: unknown key 'time_step'; allowed keys: dt duration gravity "
-                    "particle_spacing smoothing_length seed jitter max_speed (this value comes from --set "
-                    "simulation/time_step=0.001)");
+                    "particle_spacing smoothing_length seed jitter max_speed domain max_lost_mass_fraction (this "
+                    "value comes from --set simulation/time_step=0.001)");
   EXPECT_EQ(input_error_of([&] { load_scene(kBase, {"simulation/dt=fast"}); }),
             kBase + ": /simulation/dt: expected a number > 0, got string \"fast\" (this value comes from --set "
                     "simulation/dt=fast)");
