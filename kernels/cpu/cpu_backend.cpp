@@ -2,10 +2,13 @@
 
 #include "../common/eigen_conversion.hpp"
 #include "../common/elastic_physics.hpp"
+#include "../common/float_state.hpp"
 #include "../common/fluid_physics.hpp"
 #include "../common/read_back.hpp"
 #include "util/host_info.hpp"
 #include "util/phase_timer.hpp"
+
+#include <cmath>
 
 namespace mssph::kernels {
 
@@ -152,6 +155,21 @@ void CpuBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& posi
     const std::uint32_t kind = scene_.bodies[scene_.body[i]].kind;
     if (kind == kFluid || kind == kDeformable) scene_.position[i] = make_vec4(scene_.to_kernel_frame(positions[i]), 0.0f);
   }
+}
+
+StateArrays CpuBackend::save_state() {
+  return save_float_state({scene_.position, scene_.velocity, scene_.fixed, scene_.rigid_bodies, rotation_, time_,
+                           static_cast<std::uint64_t>(std::llround(time_ / setup_.dt))});
+}
+
+void CpuBackend::restore_state(const StateArrays& state) {
+  FloatRunState restored = restore_float_state(state, scene_);
+  scene_.position = std::move(restored.position);
+  scene_.velocity = std::move(restored.velocity);
+  scene_.fixed = std::move(restored.fixed);
+  scene_.rigid_bodies = std::move(restored.rigid_bodies);
+  rotation_ = std::move(restored.rotation);
+  time_ = restored.time;
 }
 
 std::vector<BodyState> CpuBackend::body_states() {

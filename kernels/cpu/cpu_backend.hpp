@@ -23,6 +23,8 @@ class CpuBackend final : public Backend {
   std::vector<double> last_phase_seconds() const override;
   ForceEvaluation evaluate_forces() override;
   void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) override;
+  StateArrays save_state() override;
+  void restore_state(const StateArrays& state) override;
 
  private:
   void build_grid();

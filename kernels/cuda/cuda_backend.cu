@@ -5,6 +5,7 @@
 #include "cuda_backend.hpp"
 
 #include "../common/eigen_conversion.hpp"
+#include "../common/float_state.hpp"
 #include "../common/read_back.hpp"
 #include "body_readback.cuh"
 #include "cuda_device.cuh"
@@ -42,6 +43,8 @@ class CudaBackend final : public Backend {
   void synchronize() override { cuda_check(cudaStreamSynchronize(stream_), "synchronise"); }
   ForceEvaluation evaluate_forces() override;
   void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) override;
+  StateArrays save_state() override;
+  void restore_state(const StateArrays& state) override;
 
  private:
   // One step's kernels, captured once and replayed: one launch per step instead of one per kernel.
@@ -151,6 +154,27 @@ void CudaBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& pos
     }
   }
   state_.position.upload(current);
+}
+
+StateArrays CudaBackend::save_state() {
+  cuda_check(cudaStreamSynchronize(stream_), "checkpoint");
+  return save_float_state({state_.position.download(), state_.velocity.download(), state_.fixed.download(),
+                           state_.rigid_bodies.download(), state_.rotation.download(), time_, steps_});
+}
+
+void CudaBackend::restore_state(const StateArrays& saved) {
+  const FloatRunState restored = restore_float_state(saved, scene_);
+  cuda_check(cudaStreamSynchronize(stream_), "restore a checkpoint");
+  state_.position.upload(restored.position);
+  state_.velocity.upload(restored.velocity);
+  state_.fixed.upload(restored.fixed);
+  state_.rigid_bodies.upload(restored.rigid_bodies);
+  if (!restored.rotation.empty()) state_.rotation.upload(restored.rotation);
+  for (std::size_t b = 0; b < restored.rigid_bodies.size(); ++b) {
+    external_wrench_[b] = {restored.rigid_bodies[b].external_force, restored.rigid_bodies[b].external_torque};
+  }
+  time_ = restored.time;
+  steps_ = restored.steps;
 }
 
 void CudaBackend::step() {

@@ -13,9 +13,15 @@ namespace mssph::cli {
 void add_run_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<SceneRunRequest>();
   CLI::App* cmd = app.add_subcommand("run", "Simulate a scene and write its HDF5 run log");
-  cmd->add_option("scene", args->scene_path, "Scene file (JSON; keys and units in configs/README.md)")
-      ->required()
+  cmd->add_option("scene", args->scene_path, "Scene file (JSON; keys and units in configs/README.md); none with --restart")
       ->check(CLI::ExistingFile);
+  cmd->add_option("--restart", args->restart,
+                  "Continue the unfinished run whose log is LOG (<out>.partial, or <out>) from its latest checkpoint, "
+                  "appending to it; the scene, backend and options come from the log");
+  cmd->add_option("--checkpoint-interval", args->checkpoint_interval,
+                  "Write a checkpoint into the log every SECONDS of wall-clock time, for --restart (SIGINT, SIGTERM "
+                  "and SIGHUP write one anyway)")
+      ->check(CLI::PositiveNumber);
   std::string built;
   for (const std::string& name : available_backends()) built += (built.empty() ? "" : ", ") + name;
   cmd->add_option("--backend", args->backend,
@@ -74,6 +80,13 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "or SIGHUP stops the run after the current step; its log is marked \"interrupted: <signal> ...\".\n"
       "A closed stdout (a pipe into `head`) does not make a completed run fail.\n"
       "\n"
+      "Checkpoints: the log holds the run's whole state after a signal, and every --checkpoint-interval\n"
+      "seconds when given (two slots, /checkpoint/a and /checkpoint/b, written in turn). `mssph run\n"
+      "--restart <file>.partial` continues an interrupted, failed or killed run from its latest\n"
+      "checkpoint in the same log: rows and snapshots after it are dropped, the run goes on with the\n"
+      "scene (after --set), backend and options it started with, and ends as the uninterrupted run\n"
+      "would have, bit for bit, on the same backend and machine (root attribute `restarts` lists each).\n"
+      "\n"
       "Exit codes: 0 completed (or --dry-run); 1 other error (disk full or another I/O failure: the\n"
       "log is kept as <file>.partial, marked \"failed: ...\" where the disk allowed it); 2 bad input\n"
       "(scene file, --set, --backend, --out, --record-device, a run too large for this machine): no\n"
@@ -81,7 +94,12 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "...\"; 130, 143, 129 interrupted by SIGINT, SIGTERM, SIGHUP: <file>.partial is kept, marked\n"
       "\"interrupted: ...\".");
   cmd->callback([args, &exit_code] {
-    guarded(exit_code, [&] { return run_scene(*args).exit_code; });
+    guarded(exit_code, [&] {
+      if (args->scene_path.empty() && args->restart.empty()) {
+        throw InputError("run: a scene file is required (or --restart LOG to continue an unfinished run)");
+      }
+      return run_scene(*args).exit_code;
+    });
   });
 }
 

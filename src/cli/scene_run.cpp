@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -160,9 +161,113 @@ void print_plan(const Scene& scene, const std::string& backend, const RunEstimat
 // writing <file>" when the file system said ENOSPC).
 std::string write_failure(const std::exception& e) { return e.what(); }
 
+// Runs a set-up run into its log and reports how it ended, as `mssph run` prints it.
+SceneRunResult run_with_log(const Scene& scene, const ParticleSetup& setup, Backend& backend, RunLog& log,
+                            const RunOptions& options, SceneRunResult result) {
+  result.output = log.path();
+  try {
+    result.summary = run_simulation(scene, setup, backend, log, options);
+    result.output = log.path();
+    result.exit_code = kExitOk;
+    print_summary_line(result.output, result.summary, result.backend);
+  } catch (const InputError&) {
+    throw;  // a restart whose checkpoint does not fit the scene: the log stays as it was
+  } catch (const SimulationFailure& e) {
+    std::cerr << "error: " << e.what() << "\n  the log is kept, marked failed: " << log.path() << "\n";
+    result.exit_code = kExitSimulationFailure;
+    result.error = e.what();
+  } catch (const RunInterrupted& e) {
+    std::cerr << "interrupted: " << e.what() << "\n  the log is kept, marked interrupted: " << log.path() << "\n";
+    result.exit_code = e.exit_code();
+    result.error = std::string("interrupted: ") + e.what();
+  } catch (const std::exception& e) {
+    // A write failure (disk full), or a failure setting up the series or the haptic session: the
+    // log ends with its reason, as far as the disk allows, at its partial name.
+    if (!log.finished()) log.finish_failed(write_failure(e));
+    std::cerr << "error: " << write_failure(e) << "\n  the log is kept at " << log.path()
+              << " (status \"failed: ...\" where the disk allowed writing it)\n";
+    result.exit_code = kExitOther;
+    result.error = write_failure(e);
+  }
+  result.output = log.path();
+  return result;
+}
+
+// Options that would change a restarted run: it takes them from its log.
+void check_restart_request(const SceneRunRequest& request) {
+  const std::vector<std::pair<bool, const char*>> refused{
+      {!request.scene_path.empty(), "a scene file"}, {!request.overrides.empty(), "--set"},
+      {request.backend != "auto", "--backend"},      {!request.output.empty(), "--out"},
+      {!request.record_device.empty(), "--record-device"}, {!request.tags.empty(), "--tag"},
+      {request.phase_timing, "--phase-timing"},      {request.force, "--force"},
+      {request.dry_run, "--dry-run"}};
+  for (const auto& [given, what] : refused) {
+    if (given) {
+      throw InputError(std::string("--restart ") + request.restart + ": " + what +
+                       " cannot be given with --restart; the run continues with the scene, backend and options "
+                       "recorded in its log");
+    }
+  }
+}
+
+// `mssph run --restart LOG`: the run of LOG continued from its latest checkpoint, in the same
+// log, with the same scene, backend and options.
+SceneRunResult continue_run(const SceneRunRequest& request) {
+  install_interrupt_handlers();
+  check_restart_request(request);
+  const std::string partial_suffix = ".partial";
+  const bool names_partial = request.restart.size() > partial_suffix.size() &&
+                             request.restart.compare(request.restart.size() - partial_suffix.size(), partial_suffix.size(),
+                                                     partial_suffix) == 0;
+  const std::string output =
+      names_partial ? request.restart.substr(0, request.restart.size() - partial_suffix.size()) : request.restart;
+  const std::string partial = output + partial_suffix;
+  if (!std::filesystem::exists(partial) && std::filesystem::exists(output)) {
+    throw InputError("--restart " + request.restart + ": the run completed (its log is " + output +
+                     "); there is nothing to continue");
+  }
+  // The lock first: a run still writing the log is refused before anything reads it.
+  OutputClaim claim = OutputClaim::resume(output);
+  const RunLogHeader header = read_run_log_header(partial);
+  const Scene scene = parse_scene_text(header.config, header.config_path);
+  const std::string backend_name = resolve_backend_name(header.backend);
+  const RunEstimate estimate = estimate_run(scene, backend_name);
+  check_run_fits(scene, backend_name, estimate, available_host_memory(), device_memory_for(backend_name));
+  const int threads = request.threads > 0 ? request.threads : default_thread_count();
+  set_thread_count(threads);
+  const ParticleSetup setup = build_particles(scene);
+  std::unique_ptr<Backend> backend = make_backend(backend_name, setup);
+
+  SceneRunResult result;
+  result.backend = backend->info();
+  if (const int signal = interrupt_signal()) {
+    std::cerr << "error: " << signal_name(signal) << " before the run continued; " << partial << " is unchanged\n";
+    result.exit_code = 128 + signal;
+    result.error = "interrupted: " + signal_name(signal) + " before the run continued";
+    return result;
+  }
+  RunLog log(std::move(claim), RunLog::Restart{command_line_of(request)});
+  const double checkpoint_interval = request.checkpoint_interval > 0.0 ? request.checkpoint_interval : header.checkpoint_interval;
+  log.set_attribute("/", "threads", static_cast<long long>(threads));
+  log.set_attribute("/", "checkpoint_interval", checkpoint_interval);
+  if (!request.quiet) {
+    std::cerr << "mssph: " << scene.name << ": continuing " << partial << " from step " << log.restart_point()->step
+              << " of " << std::llround(estimate.steps) << " on " << backend_name << ", " << threads << " threads\n";
+  }
+  return run_with_log(scene, setup, *backend, log,
+                      RunOptions{request.quiet, header.record_device, header.phase_timing, checkpoint_interval},
+                      std::move(result));
+}
+
 }  // namespace
 
 std::string command_line_of(const SceneRunRequest& request) {
+  if (!request.restart.empty()) {
+    std::string line = "mssph run --restart " + request.restart;
+    if (request.threads > 0) line += " --threads " + std::to_string(request.threads);
+    if (request.checkpoint_interval > 0.0) line += " --checkpoint-interval " + std::to_string(request.checkpoint_interval);
+    return line;
+  }
   std::string line = "mssph run " + request.scene_path + " --backend " + request.backend;
   if (!request.output.empty()) line += " --out " + request.output;
   for (const std::string& o : request.overrides) line += " --set " + o;
@@ -170,11 +275,13 @@ std::string command_line_of(const SceneRunRequest& request) {
   for (const std::string& t : request.tags) line += " --tag " + t;
   if (request.threads > 0) line += " --threads " + std::to_string(request.threads);
   if (request.phase_timing) line += " --phase-timing";
+  if (request.checkpoint_interval > 0.0) line += " --checkpoint-interval " + std::to_string(request.checkpoint_interval);
   if (request.force) line += " --force";
   return line;
 }
 
 SceneRunResult run_scene(const SceneRunRequest& request) {
+  if (!request.restart.empty()) return continue_run(request);
   // Signals are caught from the start, so that one arriving during set-up ends the run cleanly
   // too (nothing is written then).
   install_interrupt_handlers();
@@ -243,6 +350,10 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
     for (const std::string& w : warnings) joined_warnings += w + "\n";
     log->set_attribute("/", "warnings", joined_warnings);
     log->set_attribute("/", "threads", static_cast<long long>(threads));
+    // What a restart (--restart) takes from the log besides the scene and backend.
+    log->set_attribute("/", "record_device", request.record_device);
+    log->set_attribute("/", "phase_timing", static_cast<long long>(request.phase_timing));
+    log->set_attribute("/", "checkpoint_interval", request.checkpoint_interval);
     write_tags(*log, tags);
   } catch (const InputError&) {
     throw;
@@ -254,32 +365,9 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
     return result;
   }
 
-  result.output = log->path();
-  try {
-    result.summary = run_simulation(scene, setup_for_log, *backend, *log,
-                                    RunOptions{request.quiet, request.record_device, request.phase_timing});
-    result.output = log->path();
-    result.exit_code = kExitOk;
-    print_summary_line(result.output, result.summary, result.backend);
-  } catch (const SimulationFailure& e) {
-    std::cerr << "error: " << e.what() << "\n  the log is kept, marked failed: " << log->path() << "\n";
-    result.exit_code = kExitSimulationFailure;
-    result.error = e.what();
-  } catch (const RunInterrupted& e) {
-    std::cerr << "interrupted: " << e.what() << "\n  the log is kept, marked interrupted: " << log->path() << "\n";
-    result.exit_code = e.exit_code();
-    result.error = std::string("interrupted: ") + e.what();
-  } catch (const std::exception& e) {
-    // A write failure (disk full), or a failure setting up the series or the haptic session: the
-    // log ends with its reason, as far as the disk allows, at its partial name.
-    if (!log->finished()) log->finish_failed(write_failure(e));
-    std::cerr << "error: " << write_failure(e) << "\n  the log is kept at " << log->path()
-              << " (status \"failed: ...\" where the disk allowed writing it)\n";
-    result.exit_code = kExitOther;
-    result.error = write_failure(e);
-  }
-  result.output = log->path();
-  return result;
+  return run_with_log(scene, setup_for_log, *backend, *log,
+                      RunOptions{request.quiet, request.record_device, request.phase_timing, request.checkpoint_interval},
+                      std::move(result));
 }
 
 }  // namespace mssph::cli

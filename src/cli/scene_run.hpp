@@ -26,6 +26,11 @@ struct SceneRunRequest {
   bool dry_run = false;  // print the plan (particles, memory, dt bounds, steps) and write nothing
   int threads = 0;       // host threads of the OpenMP loops; 0 for default_thread_count()
   bool phase_timing = false;  // log each step's phase times (/timing/phases)
+  double checkpoint_interval = 0.0;  // wall-clock seconds between checkpoints; 0 for none
+  // Continue the unfinished run whose log is here (<out>.partial, or <out> naming it) from its
+  // latest checkpoint: scene, backend and options come from the log, so scene_path, overrides,
+  // output, record_device, tags, backend and phase_timing stay unset.
+  std::string restart;
 };
 
 struct SceneRunResult {
@@ -43,8 +48,8 @@ struct SceneRunResult {
 // The command line that reproduces a request, recorded in the log.
 std::string command_line_of(const SceneRunRequest& request);
 
-// Bad input (scene, --set, --out, --record-device, trajectory, a run the machine cannot hold)
-// throws InputError before any output exists.
+// Bad input (scene, --set, --out, --record-device, trajectory, a run the machine cannot hold, a
+// log that cannot be continued) throws InputError before any output exists or changes.
 // A run that starts ends in its log's status and the returned exit code; the one-line summary and
 // errors are printed as `mssph run` prints them.
 SceneRunResult run_scene(const SceneRunRequest& request);

@@ -2,6 +2,7 @@
 // Run-level figures of the haptic loop, accumulated tick by tick: what the summary attributes of
 // /haptics report.
 #include "haptics/haptic_sample.hpp"
+#include "sim/state_arrays.hpp"
 
 #include <cstddef>
 
@@ -10,6 +11,9 @@ namespace mssph {
 class HapticMetrics final : public HapticSink {
  public:
   void record(const HapticSample& sample) override;
+  // Checkpoints: the figures so far.
+  StateArrays save_state() const;
+  void restore_state(const StateArrays& state);
 
   std::size_t ticks = 0;
   std::size_t saturated_ticks = 0;  // any of force clamp, torque clamp, workspace stop

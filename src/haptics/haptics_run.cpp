@@ -63,4 +63,18 @@ void HapticsRun::finish_failed(std::size_t steps, double wall_seconds) noexcept 
   }
 }
 
+StateArrays HapticsRun::save_state() const {
+  StateArrays state;
+  state.add_part("session", session_.save_state());
+  state.add_part("metrics", metrics_.save_state());
+  if (!record_device_.empty()) state.add_part("recording", recorder_.save_state());
+  return state;
+}
+
+void HapticsRun::restore_state(const StateArrays& state) {
+  session_.restore_state(state.part("session"));
+  metrics_.restore_state(state.part("metrics"));
+  if (!record_device_.empty()) recorder_.restore_state(state.part("recording"));
+}
+
 }  // namespace mssph

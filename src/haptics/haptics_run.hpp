@@ -42,6 +42,10 @@ class HapticsRun {
 
   double peak_rendered_force() const { return metrics_.peak_rendered_force; }
 
+  // Checkpoints: the session, the run's figures and the recording so far.
+  StateArrays save_state() const;
+  void restore_state(const StateArrays& state);
+
  private:
   void write_results(std::size_t steps, double wall_seconds);
 

@@ -73,14 +73,13 @@ void HapticsSession::finish(Backend& backend, std::size_t steps) {
   }
 }
 
-void HapticsSession::start(const ProxyState& proxy) {
+void HapticsSession::set_up_frames(const Eigen::Vector3d& origin) {
+  origin_ = origin;
   const WorkspaceConfig& w = config_.device.workspace;
-  workspace_.emplace(w.scale, w.offset.value_or(proxy.pose.position), w.rotation);
+  workspace_.emplace(w.scale, w.offset.value_or(origin), w.rotation);
   const TrajectoryConfig& trajectory = config_.trajectory;
   switch (trajectory.source) {
     case TrajectorySource::free:
-      // The handle starts where the proxy is, moving with it: no initial coupling force.
-      device_state_ = DeviceState{workspace_->to_device(proxy.pose), workspace_->to_device(proxy.twist)};
       break;
     case TrajectorySource::scripted: {
       std::vector<double> times;
@@ -90,7 +89,6 @@ void HapticsSession::start(const ProxyState& proxy) {
         poses.push_back(k.pose);
       }
       track_.emplace(std::move(times), std::move(poses));
-      device_state_ = DeviceState{track_->at(0.0).pose, Twist{}};  // held at rest at the first target
       break;
     }
     case TrajectorySource::recorded: {
@@ -99,6 +97,22 @@ void HapticsSession::start(const ProxyState& proxy) {
       const double first = times.front();
       for (double& t : times) t -= first;
       track_.emplace(std::move(times), trajectory.recording.pose);
+      break;
+    }
+  }
+}
+
+void HapticsSession::start(const ProxyState& proxy) {
+  set_up_frames(proxy.pose.position);
+  switch (config_.trajectory.source) {
+    case TrajectorySource::free:
+      // The handle starts where the proxy is, moving with it: no initial coupling force.
+      device_state_ = DeviceState{workspace_->to_device(proxy.pose), workspace_->to_device(proxy.twist)};
+      break;
+    case TrajectorySource::scripted:
+      device_state_ = DeviceState{track_->at(0.0).pose, Twist{}};  // held at rest at the first target
+      break;
+    case TrajectorySource::recorded: {
       const PoseTrack::Sample sample = track_->at(0.0);
       device_state_ = DeviceState{sample.pose, sample.twist};
       break;

@@ -18,6 +18,7 @@
 #include "haptics/pose_track.hpp"
 #include "haptics/proxy_predictor.hpp"
 #include "haptics/workspace_transform.hpp"
+#include "sim/state_arrays.hpp"
 
 #include <cstddef>
 #include <optional>
@@ -40,6 +41,12 @@ class HapticsSession {
   // After the last of `steps` steps: the tick at the end time, if one falls there.
   void finish(Backend& backend, std::size_t steps);
 
+  // Checkpoints (haptics_session_state.cpp): everything the next tick reads that earlier ticks
+  // wrote. The proxy predictor is not part of it: every step that holds a tick resets it from the
+  // simulation before using it.
+  StateArrays save_state() const;
+  void restore_state(const StateArrays& state);
+
   std::size_t ticks() const { return next_tick_; }
   std::size_t state_queries() const { return state_queries_; }
   double period() const { return period_; }
@@ -48,6 +55,9 @@ class HapticsSession {
   double tick_time(std::size_t n) const { return static_cast<double>(n) * period_; }
   ProxyState query_proxy(Backend& backend, double time);
   void start(const ProxyState& proxy);
+  // The workspace and the trajectory's track, fixed at the first tick (`origin`: the proxy's
+  // starting position, the workspace offset when the scene gives none).
+  void set_up_frames(const Eigen::Vector3d& origin);
   void advance_device(double t);
   void tick(double t, const ProxyState& proxy);
   void apply(Backend& backend, const Wrench& wrench);
@@ -60,6 +70,7 @@ class HapticsSession {
   DeviceModel device_;
   ProxyPredictor predictor_;
   std::optional<WorkspaceTransform> workspace_;  // fixed at the first tick (its offset may be the proxy's start)
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  // the proxy's position at the first tick
   std::optional<PoseTrack> track_;               // scripted: the hand's target; recorded: the handle itself
   std::vector<HapticSink*> sinks_;
 

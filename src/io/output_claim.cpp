@@ -120,6 +120,25 @@ OutputClaim::OutputClaim(const std::string& path, bool replace) : path_(path), r
   }
 }
 
+OutputClaim OutputClaim::resume(const std::string& path) {
+  OutputClaim claim;
+  claim.path_ = path;
+  const std::string partial = claim.partial_path();
+  struct stat st {};
+  if (lstat(partial.c_str(), &st) != 0) throw InputError("--restart " + partial + ": no such file");
+  if (!S_ISREG(st.st_mode)) throw InputError("--restart " + partial + ": is " + what_is(st));
+  if (lstat(path.c_str(), &st) == 0) {
+    throw InputError("--restart " + partial + ": " + path + " exists, where the finished log would go; move it away");
+  }
+  claim.fd_ = open(partial.c_str(), O_RDWR | O_NOFOLLOW | O_CLOEXEC);
+  if (claim.fd_ < 0) throw InputError("--restart " + partial + ": cannot open: " + std::strerror(errno));
+  claim.keep_partial_ = true;
+  if (flock(claim.fd_, LOCK_EX | LOCK_NB) != 0) {
+    throw InputError("--restart " + partial + ": another run is writing it");
+  }
+  return claim;
+}
+
 OutputClaim::~OutputClaim() { release(); }
 
 OutputClaim::OutputClaim(OutputClaim&& other) noexcept

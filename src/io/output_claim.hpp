@@ -17,6 +17,11 @@ class OutputClaim {
   // Claims `path`: checks what is there now, creates and locks <path>.partial (emptied), and
   // creates missing parent directories. Throws InputError saying what is in the way.
   OutputClaim(const std::string& path, bool replace);
+  // Claims `path` to continue the unfinished log at <path>.partial (`mssph run --restart`): locks
+  // it as it is, keeping its contents, and keeps it when the claim ends unpublished. Throws
+  // InputError when there is no such regular file, another run holds it, or a log already lies
+  // at `path`.
+  static OutputClaim resume(const std::string& path);
   ~OutputClaim();
   OutputClaim(OutputClaim&& other) noexcept;
   OutputClaim& operator=(OutputClaim&& other) noexcept;

@@ -1,5 +1,7 @@
 #include "io/run_log.hpp"
 
+#include "util/errors.hpp"
+
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -66,7 +68,34 @@ void write_float_dataset(hid_t file, const std::string& path, std::span<const fl
   h5::write_attribute(set.id(), "description", description);
 }
 
+// The claim's flock(2) on the partial file is the lock; HDF5's own lock on it would conflict.
+h5::Handle unlocked_file_access() {
+  h5::Handle access = h5::property_list(H5Pcreate(H5P_FILE_ACCESS), "file access properties");
+  h5::check(H5Pset_file_locking(access.id(), false, true), "turn off HDF5 file locking");
+  return access;
+}
+
 }  // namespace
+
+RunLogHeader read_run_log_header(const std::string& path) {
+  h5::silence_error_printing();
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, unlocked_file_access().id());
+  if (file < 0) throw InputError("--restart " + path + ": not an HDF5 file this build can open");
+  const h5::Handle owner = h5::file(file, "open " + path);
+  for (const char* name : {"config", "config_path", "backend", "record_device", "phase_timing", "checkpoint_interval"}) {
+    if (H5Aexists(file, name) <= 0) {
+      throw InputError("--restart " + path + ": not a run log this version can continue (no root attribute " + name + ")");
+    }
+  }
+  RunLogHeader header;
+  header.config = h5::read_string_attribute(file, "config");
+  header.config_path = h5::read_string_attribute(file, "config_path");
+  header.backend = h5::read_string_attribute(file, "backend");
+  header.record_device = h5::read_string_attribute(file, "record_device");
+  header.phase_timing = h5::read_double_attribute(file, "phase_timing") != 0.0;
+  header.checkpoint_interval = h5::read_double_attribute(file, "checkpoint_interval");
+  return header;
+}
 
 RunLog::RunLog(const std::string& path, const RunMetadata& metadata, bool replace)
     : RunLog(OutputClaim(path, replace), metadata) {}
@@ -74,13 +103,9 @@ RunLog::RunLog(const std::string& path, const RunMetadata& metadata, bool replac
 RunLog::RunLog(OutputClaim claim, const RunMetadata& metadata)
     : claim_(std::move(claim)), path_(claim_.partial_path()) {
   h5::silence_error_printing();
-  // The claim's flock(2) on the partial file is the lock; HDF5's own lock on it would conflict.
-  // The default (oldest compatible) file format matters too: it has no "open for writing" flag,
-  // which newer formats leave set in a killed run's file, making readers refuse it until h5clear
-  // is run.
-  h5::Handle access = h5::property_list(H5Pcreate(H5P_FILE_ACCESS), "file access properties");
-  h5::check(H5Pset_file_locking(access.id(), false, true), "turn off HDF5 file locking");
-  file_ = h5::file(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.id()), "create " + path_);
+  // The default (oldest compatible) file format matters: it has no "open for writing" flag, which
+  // newer formats leave set in a killed run's file, making readers refuse it until h5clear is run.
+  file_ = h5::file(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, unlocked_file_access().id()), "create " + path_);
   const hid_t root = file_.id();
   h5::write_attribute(root, "mssph_version", metadata.version);
   h5::write_attribute(root, "git_commit", metadata.git_commit);
@@ -99,6 +124,55 @@ RunLog::RunLog(OutputClaim claim, const RunMetadata& metadata)
   flush();
   // From here on the partial file is a readable log worth keeping, whatever happens to the run.
   claim_.keep_partial();
+}
+
+RunLog::RunLog(OutputClaim claim, const Restart& restart) : claim_(std::move(claim)), path_(claim_.partial_path()) {
+  h5::silence_error_printing();
+  const std::string head = "--restart " + path_ + ": ";
+  const hid_t file = H5Fopen(path_.c_str(), H5F_ACC_RDWR, unlocked_file_access().id());
+  if (file < 0) throw InputError(head + "not an HDF5 file this build can open");
+  file_ = h5::file(file, "open " + path_);
+  if (H5Aexists(file, "status") <= 0 || H5Aexists(file, "config") <= 0) throw InputError(head + "not an mssph run log");
+  if (h5::read_string_attribute(file, "status") == "completed") throw InputError(head + "the run completed");
+  restart_ = read_latest_checkpoint(file);
+  if (!restart_) {
+    throw InputError(head + "holds no checkpoint to continue from (runs write one with --checkpoint-interval, and on "
+                     "SIGINT, SIGTERM or SIGHUP)");
+  }
+  std::string restarts = H5Aexists(file, "restarts") > 0 ? h5::read_string_attribute(file, "restarts") : "";
+  restarts += "step " + std::to_string(restart_->step) + " at " + utc_now() + ": " + restart.command_line + "\n";
+  h5::write_attribute(file, "restarts", restarts);
+  set_status("running");
+  keep_snapshots_up_to(restart_->step);
+  ensure_space(0);
+  flush();
+}
+
+void RunLog::keep_snapshots_up_to(long long step) {
+  if (!h5::object_exists(file_.id(), "/snapshots")) return;
+  h5::Handle group = h5::group(H5Gopen2(file_.id(), "/snapshots", H5P_DEFAULT), "open /snapshots");
+  std::vector<std::string> names;
+  const auto collect = [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
+    static_cast<std::vector<std::string>*>(data)->push_back(name);
+    return 0;
+  };
+  h5::check(H5Literate(group.id(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names), "list /snapshots");
+  for (const std::string& name : names) {
+    const std::string path = "/snapshots/" + name;
+    h5::Handle snapshot = h5::group(H5Gopen2(file_.id(), path.c_str(), H5P_DEFAULT), "open " + path);
+    const auto snapshot_step = static_cast<long long>(h5::read_double_attribute(snapshot.id(), "step"));
+    if (snapshot_step > step) {
+      snapshot.reset();
+      h5::check(H5Ldelete(file_.id(), path.c_str(), H5P_DEFAULT), "remove " + path);
+      continue;
+    }
+    const std::size_t n = h5::dataset_shape(file_.id(), path + "/density").front();
+    const bool with_body = h5::object_exists(file_.id(), kBodyPath) &&
+                           h5::dataset_shape(file_.id(), kBodyPath) == std::vector<hsize_t>{n};
+    snapshots_.push_back({snapshot_step, h5::read_double_attribute(snapshot.id(), "time"), n, with_body});
+  }
+  structure_changed_ = true;
+  if (!snapshots_.empty()) write_xdmf(path_);
 }
 
 RunLog::~RunLog() {
@@ -125,6 +199,21 @@ std::size_t RunLog::add_series(const std::string& dataset_path, std::size_t colu
   Series series;
   series.path = dataset_path;
   series.columns = columns;
+  if (restart_ && h5::object_exists(file_.id(), dataset_path)) {
+    // A restarted run's series: cut back to its rows at the checkpoint, appended from there.
+    const auto rows = restart_->series_rows.find(dataset_path);
+    if (rows == restart_->series_rows.end() || h5::dataset_shape(file_.id(), dataset_path).size() != static_cast<std::size_t>(rank) ||
+        (rank == 2 && h5::dataset_shape(file_.id(), dataset_path)[1] != columns)) {
+      throw InputError("--restart " + path_ + ": " + dataset_path + " does not match the checkpoint or the scene");
+    }
+    series.dataset = h5::dataset(H5Dopen2(file_.id(), dataset_path.c_str(), H5P_DEFAULT), "open " + dataset_path);
+    series.rows_written = rows->second;
+    const hsize_t size[2] = {rows->second, columns};
+    h5::check(H5Dset_extent(series.dataset.id(), size), "cut back " + dataset_path);
+    series_.push_back(std::move(series));
+    structure_changed_ = true;
+    return series_.size() - 1;
+  }
   series.dataset = h5::dataset(H5Dcreate2(file_.id(), dataset_path.c_str(), H5T_IEEE_F64LE, space.id(), H5P_DEFAULT,
                                           properties.id(), H5P_DEFAULT),
                                "create " + dataset_path);
@@ -172,6 +261,13 @@ void RunLog::write_array(const std::string& dataset_path, std::span<const int> v
                          const std::string& description) {
   h5::open_or_create_group(file_.id(), parent_path(dataset_path));
   const hsize_t dims[1] = {values.size()};
+  if (restart_ && h5::object_exists(file_.id(), dataset_path)) {
+    // A restarted run writes the same array again: it must be the one already there.
+    if (h5::dataset_shape(file_.id(), dataset_path) != std::vector<hsize_t>{values.size()}) {
+      throw InputError("--restart " + path_ + ": " + dataset_path + " does not match the scene");
+    }
+    return;
+  }
   h5::Handle space = h5::dataspace(H5Screate_simple(1, dims, nullptr), "array space " + dataset_path);
   h5::Handle set = h5::dataset(H5Dcreate2(file_.id(), dataset_path.c_str(), H5T_STD_I32LE, space.id(), H5P_DEFAULT,
                                           H5P_DEFAULT, H5P_DEFAULT),
@@ -288,6 +384,14 @@ void RunLog::flush() {
   for (Series& s : series_) write_pending(s);
   h5::check(H5Fflush(file_.id(), H5F_SCOPE_GLOBAL), "flush " + path_);
   structure_changed_ = false;
+}
+
+void RunLog::write_checkpoint(long long step, double time, const StateArrays& state) {
+  flush();
+  ensure_space(state_bytes(state));
+  Checkpoint checkpoint{step, time, state, {}};
+  for (const Series& s : series_) checkpoint.series_rows[s.path] = s.rows_written;
+  mssph::write_checkpoint(file_.id(), checkpoint);
 }
 
 void RunLog::set_status(const std::string& status) { h5::write_attribute(file_.id(), "status", status); }

@@ -12,9 +12,16 @@
 // seconds and whenever a buffer fills), and a change of the file's structure (a new series,
 // array or attribute) is flushed before the next row is buffered. Rows appended since the last
 // flush are what such a kill loses.
+//
+// Checkpoints (io/checkpoint_io.hpp) make such a log continuable: write_checkpoint() stores the
+// run's whole state, and a RunLog reopened for a restart cuts every series back to its rows at
+// the latest checkpoint as the driver registers it again (add_series), removes the snapshots
+// taken after it, and appends from there.
 #include "util/hdf5_handle.hpp"
+#include "io/checkpoint_io.hpp"
 #include "io/output_claim.hpp"
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -43,6 +50,19 @@ struct SnapshotFields {
   std::span<const float> pressure;  // [Pa]
 };
 
+// What a restart takes from an earlier run's log (root attributes), so that it continues the
+// same run: the scene as it ran (after --set), the backend and the run's options.
+struct RunLogHeader {
+  std::string config;       // the scene document (JSON)
+  std::string config_path;  // the scene file it came from (locates a recorded trajectory)
+  std::string backend;
+  std::string record_device;       // "" for none
+  bool phase_timing = false;
+  double checkpoint_interval = 0.0;  // [s] wall clock; 0 for none
+};
+// Throws InputError when `path` is no mssph run log.
+RunLogHeader read_run_log_header(const std::string& path);
+
 class RunLog {
  public:
   // Rows each series buffers before a full buffer flushes the file.
@@ -55,6 +75,13 @@ class RunLog {
   RunLog(OutputClaim claim, const RunMetadata& metadata);
   // Claims `path` first (replacing an existing regular file only when `replace`).
   RunLog(const std::string& path, const RunMetadata& metadata, bool replace = false);
+  // Reopens the claimed partial file (OutputClaim::resume) to continue the run from its latest
+  // checkpoint: status "running" again, `restart_command` added to the root's `restarts`. Throws
+  // InputError when the file is no run log, is completed, or holds no checkpoint.
+  struct Restart {
+    std::string command_line;
+  };
+  RunLog(OutputClaim claim, const Restart& restart);
   ~RunLog();
   RunLog(const RunLog&) = delete;
   RunLog& operator=(const RunLog&) = delete;
@@ -88,6 +115,12 @@ class RunLog {
   // Writes buffered rows and asks HDF5 to flush the file to disk.
   void flush();
 
+  // Stores the run's state after `step` steps (simulated time `time`) with every series' rows so
+  // far; a restart continues from the latest.
+  void write_checkpoint(long long step, double time, const StateArrays& state);
+  // The checkpoint a reopened log continues from; nullptr for a new log.
+  const Checkpoint* restart_point() const { return restart_ ? &*restart_ : nullptr; }
+
   // Final status; "completed" only for a run that reached its end. finish_completed() closes the
   // file and moves it (and its sidecar) to final_path(); it throws when that fails, leaving the
   // file at its partial name.
@@ -119,12 +152,16 @@ class RunLog {
   // Throws h5::Error "disk full writing <file>" when `bytes` (plus the reserve) would not fit.
   void ensure_space(long long bytes);
   void finish_unpublished(const std::string& status) noexcept;
+  // After a restart: the snapshots up to the checkpoint are kept (and listed for the sidecar),
+  // later ones removed.
+  void keep_snapshots_up_to(long long step);
 
   OutputClaim claim_;  // declared before file_: the lock outlives the open file
   std::string path_;
   h5::Handle file_;
   std::vector<Series> series_;
   std::vector<SnapshotRecord> snapshots_;
+  std::optional<Checkpoint> restart_;  // what a reopened log continues from
   bool structure_changed_ = false;  // since the last flush
   bool finished_ = false;
 };

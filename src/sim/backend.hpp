@@ -2,6 +2,7 @@
 // What every backend (reference, cpu, cuda) offers the simulation driver: one step of the
 // paper's loop (section 3.2), body-level state for logs and haptics, and particle snapshots.
 #include "scene/particle_setup.hpp"
+#include "sim/state_arrays.hpp"
 
 #include <Eigen/Geometry>
 
@@ -88,6 +89,14 @@ class Backend {
   // other particles keep theirs).
   virtual ForceEvaluation evaluate_forces() = 0;
   virtual void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) = 0;
+
+  // Checkpoints: everything a later step reads that earlier steps wrote (positions, velocities,
+  // rigid bodies, deactivated particles, the time, and what an iteration starts from, such as the
+  // float backends' last rotations), so that a backend of the same setup restored from its own
+  // save steps on bit-identically. restore_state throws InputError naming a missing or mis-sized
+  // array.
+  virtual StateArrays save_state() = 0;
+  virtual void restore_state(const StateArrays& state) = 0;
 
   // Blocks until queued work is done: a GPU backend returns from step() before the step has run.
   virtual void synchronize() {}

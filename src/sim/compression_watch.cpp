@@ -73,4 +73,30 @@ std::string CompressionWatch::summary() const {
   return out.str();
 }
 
+StateArrays CompressionWatch::save_state() const {
+  std::vector<std::int64_t> samples, outside;
+  std::vector<std::uint8_t> warned;
+  for (const Watched& w : watched_) {
+    samples.push_back(static_cast<std::int64_t>(w.samples));
+    outside.push_back(static_cast<std::int64_t>(w.samples_outside));
+    warned.push_back(w.warned);
+  }
+  StateArrays state;
+  state.put("samples", std::move(samples));
+  state.put("samples_outside", std::move(outside));
+  state.put("warned", std::move(warned));
+  return state;
+}
+
+void CompressionWatch::restore_state(const StateArrays& state) {
+  const std::vector<std::int64_t>& samples = state.get<std::int64_t>("samples", watched_.size());
+  const std::vector<std::int64_t>& outside = state.get<std::int64_t>("samples_outside", watched_.size());
+  const std::vector<std::uint8_t>& warned = state.get<std::uint8_t>("warned", watched_.size());
+  for (std::size_t k = 0; k < watched_.size(); ++k) {
+    watched_[k].samples = static_cast<std::size_t>(samples[k]);
+    watched_[k].samples_outside = static_cast<std::size_t>(outside[k]);
+    watched_[k].warned = warned[k] != 0;
+  }
+}
+
 }  // namespace mssph

@@ -5,6 +5,7 @@
 // once per body (body, time, value) on stderr, and at the end writes, per body, the fraction of
 // logged samples that had any particle outside the valid range.
 #include "io/run_log.hpp"
+#include "sim/state_arrays.hpp"
 #include "scene/particle_setup.hpp"
 #include "sim/backend.hpp"
 
@@ -27,6 +28,10 @@ class CompressionWatch {
 
   // "block 12.3 %, jelly 0.4 %" for the bodies that left their valid range; "" when none did.
   std::string summary() const;
+
+  // Checkpoints: each body's sample counts and whether it was warned about.
+  StateArrays save_state() const;
+  void restore_state(const StateArrays& state);
 
  private:
   struct Watched {

@@ -61,4 +61,17 @@ std::string LostMassWatch::finish() {
   return out.str();
 }
 
+StateArrays LostMassWatch::save_state() const {
+  std::vector<std::int64_t> left;
+  for (const Watched& w : watched_) left.push_back(static_cast<std::int64_t>(w.left));
+  StateArrays state;
+  state.put("left", std::move(left));
+  return state;
+}
+
+void LostMassWatch::restore_state(const StateArrays& state) {
+  const std::vector<std::int64_t>& left = state.get<std::int64_t>("left", watched_.size());
+  for (std::size_t k = 0; k < watched_.size(); ++k) watched_[k].left = static_cast<std::size_t>(left[k]);
+}
+
 }  // namespace mssph

@@ -6,6 +6,7 @@
 // carry more than simulation/max_lost_mass_fraction of the body's mass. The particles of a fluid
 // or deformable body all have the same mass (rho0 dx^3), so the mass fraction is the count's.
 #include "io/run_log.hpp"
+#include "sim/state_arrays.hpp"
 #include "scene/particle_setup.hpp"
 #include "sim/backend.hpp"
 
@@ -27,6 +28,10 @@ class LostMassWatch {
   // Writes the per-body totals as attributes; "block 2 particles (0.03 %)" for the bodies that
   // lost any, "" when none did.
   std::string finish();
+
+  // Checkpoints: each body's count at the last check.
+  StateArrays save_state() const;
+  void restore_state(const StateArrays& state);
 
  private:
   struct Watched {

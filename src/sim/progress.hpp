@@ -8,12 +8,14 @@ namespace mssph {
 
 class ProgressReporter {
  public:
-  ProgressReporter(std::size_t total_steps, double dt, bool quiet);
+  // `first_step`: the steps already done when this process started (a restarted run's).
+  ProgressReporter(std::size_t total_steps, double dt, bool quiet, std::size_t first_step = 0);
   void update(std::size_t steps_done);
 
  private:
   using Clock = std::chrono::steady_clock;
   std::size_t total_steps_;
+  std::size_t first_step_;
   double dt_;
   bool quiet_;
   Clock::time_point start_;

@@ -1,6 +1,7 @@
 #include "sim/simulation_run.hpp"
 
 #include "haptics/haptics_run.hpp"
+#include "io/checkpoint_io.hpp"
 #include "sim/compression_watch.hpp"
 #include "sim/lost_mass_watch.hpp"
 #include "sim/interrupt.hpp"
@@ -157,9 +158,42 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
 
   RunSummary summary;
   summary.force_body = force_body < setup.bodies.size() ? setup.bodies[force_body].name : "";
-  ProgressReporter progress(total_steps, dt, options.quiet);
-  auto last_flush = std::chrono::steady_clock::now();
+
+  // The stepping loop's wall-clock time, over every process that ran it (a restarted run's
+  // checkpoint carries its earlier processes').
+  double earlier_wall_seconds = 0.0;
   const auto start = std::chrono::steady_clock::now();
+  const auto wall_seconds = [&] {
+    return earlier_wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+
+  // Checkpoints: every part of the run that carries state from one step to the next.
+  const auto save_state = [&] {
+    StateArrays state;
+    state.add_part("backend", backend.save_state());
+    if (haptics) state.add_part("haptics", haptics->save_state());
+    state.add_part("compression", compression.save_state());
+    state.add_part("lost_mass", lost_mass.save_state());
+    state.put_scalar("run/peak_force", summary.peak_force);
+    state.put_scalar("run/wall_seconds", wall_seconds());
+    return state;
+  };
+  std::size_t first_step = 1;
+  if (const Checkpoint* restart = log.restart_point()) {
+    backend.restore_state(restart->state.part("backend"));
+    if (haptics) haptics->restore_state(restart->state.part("haptics"));
+    compression.restore_state(restart->state.part("compression"));
+    lost_mass.restore_state(restart->state.part("lost_mass"));
+    summary.peak_force = restart->state.scalar("run/peak_force");
+    earlier_wall_seconds = restart->state.scalar("run/wall_seconds");
+    summary.steps = static_cast<std::size_t>(restart->step);
+    first_step = summary.steps + 1;
+  }
+  std::size_t checkpoint_step = summary.steps;  // the latest checkpoint's
+
+  ProgressReporter progress(total_steps, dt, options.quiet, summary.steps);
+  auto last_flush = std::chrono::steady_clock::now();
+  auto last_checkpoint = last_flush;
 
   const auto write_snapshot = [&](std::size_t step) {
     const ParticleSnapshot snap = backend.snapshot();
@@ -168,8 +202,8 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
   };
 
   try {
-    if (snapshot_every > 0) write_snapshot(0);
-    for (std::size_t step = 1; step <= total_steps; ++step) {
+    if (snapshot_every > 0 && first_step == 1) write_snapshot(0);
+    for (std::size_t step = first_step; step <= total_steps; ++step) {
       const auto step_start = std::chrono::steady_clock::now();
       if (haptics) haptics->before_step(backend, step - 1);  // ticks of this step, and its coupling wrench
       backend.step();
@@ -216,10 +250,19 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
       }
       summary.steps = step;
       progress.update(step);
-      if (const int signal = interrupt_signal()) {
+      const int signal = interrupt_signal();
+      const bool checkpoint_due = options.checkpoint_interval > 0.0 && step < total_steps &&
+                                  std::chrono::duration<double>(now - last_checkpoint).count() >= options.checkpoint_interval;
+      if (signal || checkpoint_due) {
+        log.write_checkpoint(static_cast<long long>(step), backend.time(), save_state());
+        checkpoint_step = step;
+        last_checkpoint = std::chrono::steady_clock::now();
+      }
+      if (signal) {
         std::ostringstream reason;
         reason << signal_name(signal) << " after step " << step << " of " << total_steps << ", t = " << backend.time()
                << " s";
+        if (checkpoint_step == step) reason << "; checkpoint written: continue with mssph run --restart";
         throw RunInterrupted(reason.str(), signal);
       }
     }
@@ -233,8 +276,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
     } catch (const std::exception&) {
     }
     if (haptics) {
-      haptics->finish_failed(summary.steps,
-                             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      haptics->finish_failed(summary.steps, wall_seconds());
     }
     if (dynamic_cast<const RunInterrupted*>(&failure)) {
       log.finish_interrupted(failure.what());
@@ -243,7 +285,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
     }
     throw;
   }
-  summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary.wall_seconds = wall_seconds();
   summary.simulated_time = backend.time();
   if (haptics) {
     haptics->finish(backend, summary.steps, summary.wall_seconds);

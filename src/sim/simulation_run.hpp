@@ -16,6 +16,9 @@ struct RunOptions {
   bool quiet = false;
   std::string record_device;  // write the haptic device's trajectory here (.csv or .h5); "" for none
   bool phase_timing = false;  // log /timing/phases (Backend::set_phase_timing)
+  // Wall-clock seconds between checkpoints (RunLog::write_checkpoint); 0 for none. SIGINT,
+  // SIGTERM and SIGHUP write one either way before the run stops.
+  double checkpoint_interval = 0.0;
 };
 
 struct RunSummary {
@@ -35,7 +38,8 @@ struct RunSummary {
 };
 
 // Runs to the end of the scene. On a blow-up the log is marked "failed: ..." and the
-// SimulationFailure propagates.
+// SimulationFailure propagates. A log reopened for a restart (RunLog::restart_point) continues
+// from its checkpoint: `backend` must be fresh, of the setup and backend kind that wrote it.
 RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backend& backend, RunLog& log,
                           const RunOptions& options);
 

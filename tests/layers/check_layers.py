@@ -20,7 +20,7 @@ COMPONENTS = [
     ("foundation/util", 0, ["src/util/"]),
     ("foundation/config", 1, ["src/config/"]),
     ("model", 2, ["src/scene/", "src/model/"]),
-    ("backend interface", 3, ["src/sim/backend.hpp"]),
+    ("backend interface", 3, ["src/sim/backend.hpp", "src/sim/state_arrays.hpp"]),
     ("float physics (kernels/common)", 4, ["kernels/common/"]),
     ("backend reference", 5, ["cpu_reference/"]),
     ("backend cpu", 5, ["kernels/cpu/"]),

@@ -63,6 +63,28 @@ class RigidBodyDouble final : public Backend {
   ForceEvaluation evaluate_forces() override { return {}; }  // no particles
   void set_particle_positions(const std::vector<Eigen::Vector3d>&) override {}
 
+  StateArrays save_state() override {
+    StateArrays state;
+    const Eigen::Quaterniond& q = pose.orientation;
+    state.put("motion", std::vector<double>{pose.position.x(), pose.position.y(), pose.position.z(), q.x(), q.y(), q.z(),
+                                            q.w(), twist.linear.x(), twist.linear.y(), twist.linear.z(),
+                                            twist.angular.x(), twist.angular.y(), twist.angular.z()});
+    state.put("external", std::vector<double>{external_.force.x(), external_.force.y(), external_.force.z(),
+                                              external_.torque.x(), external_.torque.y(), external_.torque.z()});
+    state.put_count("steps", static_cast<std::int64_t>(steps_));
+    return state;
+  }
+  void restore_state(const StateArrays& state) override {
+    const std::vector<double>& m = state.get<double>("motion", 13);
+    pose.position = Eigen::Vector3d(&m[0]);
+    pose.orientation = Eigen::Quaterniond(m[6], m[3], m[4], m[5]);
+    twist.linear = Eigen::Vector3d(&m[7]);
+    twist.angular = Eigen::Vector3d(&m[10]);
+    const std::vector<double>& e = state.get<double>("external", 6);
+    external_ = Wrench{Eigen::Vector3d(&e[0]), Eigen::Vector3d(&e[3])};
+    steps_ = static_cast<std::size_t>(state.count("steps"));
+  }
+
  private:
   Wrench contact() const {
     Wrench w;

@@ -1,0 +1,193 @@
+// Checkpoints and `mssph run --restart`, through the real command line: a run stopped by SIGTERM
+// (which writes a checkpoint) or killed by SIGKILL after a periodic checkpoint, then continued
+// with --restart, ends with a log whose every dataset outside /timing (wall-clock times) and
+// /checkpoint is bit-identical to the same run left alone; and a log that cannot be continued is
+// refused with exit 2 and left as it was.
+#include "backend_on_this_machine.hpp"
+#include "cli_fixture.hpp"
+
+#include <csignal>
+#include <cstring>
+#include <map>
+#include <thread>
+
+namespace mssph::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+const std::string kScene = data_file("tiny_drop.json");
+
+template <typename Condition>
+bool wait_for(Condition ready, std::chrono::milliseconds limit) {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  while (!ready()) {
+    if (std::chrono::steady_clock::now() > deadline) return false;
+    std::this_thread::sleep_for(5ms);
+  }
+  return true;
+}
+
+// Every dataset of a log but those under /timing and /checkpoint, as doubles (exact for the
+// float32, float64 and integer datasets a log holds), by path.
+std::map<std::string, std::vector<double>> logged_data(const std::string& path) {
+  const h5::Handle file = open_read_only(path);
+  std::vector<std::string> names;
+  const auto collect = [](hid_t group, const char* name, const H5L_info_t*, void* data) -> herr_t {
+    const h5::Handle object(H5Oopen(group, name, H5P_DEFAULT), H5Oclose, name);
+    if (H5Iget_type(object.id()) == H5I_DATASET) static_cast<std::vector<std::string>*>(data)->push_back(name);
+    return 0;
+  };
+  h5::check(H5Lvisit(file.id(), H5_INDEX_NAME, H5_ITER_INC, collect, &names), "list " + path);
+  std::map<std::string, std::vector<double>> out;
+  for (const std::string& name : names) {
+    if (name.rfind("timing/", 0) == 0 || name.rfind("checkpoint/", 0) == 0) continue;
+    out["/" + name] = read_doubles(file.id(), "/" + name);
+  }
+  return out;
+}
+
+// The same datasets, the same shapes, the same bits (NaN included).
+void expect_bit_identical(const std::string& expected_log, const std::string& actual_log) {
+  const auto expected = logged_data(expected_log);
+  const auto actual = logged_data(actual_log);
+  ASSERT_GT(expected.size(), 20u) << "the comparison covers the body, haptic and snapshot datasets";
+  ASSERT_EQ(actual.size(), expected.size());
+  for (const auto& [name, values] : expected) {
+    const auto it = actual.find(name);
+    ASSERT_NE(it, actual.end()) << name << " missing after the restart";
+    ASSERT_EQ(it->second.size(), values.size()) << name;
+    EXPECT_EQ(std::memcmp(it->second.data(), values.data(), values.size() * sizeof(double)), 0) << name << " differs";
+  }
+}
+
+// Every kind of state a checkpoint carries: fluid, a deformable body (whose rotations seed the
+// next step's), a fixed and a driven rigid body, the scripted haptic loop touching them all. At
+// 5 cm spacing (426 particles) its 4.8 s take one to three seconds on each backend, so a signal
+// sent a moment after the start lands mid-run.
+const std::string kMixedScene = MSSPH_SOURCE_DIR "/configs/tap_squeeze_stir.json";
+
+class Restart : public Cli, public ::testing::WithParamInterface<std::string> {
+ protected:
+  void SetUp() override {
+    if (!backend_runs_here(GetParam())) GTEST_SKIP() << "no " << GetParam() << " backend here";
+  }
+
+  // With snapshots (so that those after the checkpoint must go) and a recording of the device
+  // (whose earlier ticks live only in the checkpoint).
+  std::vector<std::string> run_args(const std::string& out, const std::string& recording) const {
+    return {"run",   kMixedScene, "--backend", GetParam(), "--out", out, "--threads", "1",
+            "--set", "simulation/particle_spacing=0.05", "--set", "output/snapshot_interval=0.5",
+            "--record-device", recording};
+  }
+
+  void run_uninterrupted() {
+    const ProcessResult whole = mssph(run_args(work("whole.h5"), work("whole.csv")));
+    ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  }
+
+  // Starts the run to be stopped and waits until it is stepping.
+  std::unique_ptr<ChildProcess> start_stopped_run(const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> args = run_args(work("stopped.h5"), work("stopped.csv"));
+    args.insert(args.end(), extra.begin(), extra.end());
+    auto run = start(args);
+    // The start-up line comes before the backend is built; a few tenths of a second later the run
+    // is logging (output/flush_interval 0.1 s) and far from its end.
+    EXPECT_TRUE(wait_for([&] { return run->stderr_so_far().find(" particles (") != std::string::npos; }, 60s))
+        << run->stderr_so_far();
+    std::this_thread::sleep_for(300ms);
+    return run;
+  }
+
+  void restart_and_compare() {
+    const ProcessResult continued = mssph({"run", "--restart", work("stopped.h5.partial"), "-q"});
+    ASSERT_EQ(continued.exit_code, 0) << continued.err;
+    EXPECT_EQ(status_of(work("stopped.h5")), "completed");
+    EXPECT_FALSE(std::filesystem::exists(work("stopped.h5.partial")));
+    const h5::Handle log = open_read_only(work("stopped.h5"));
+    EXPECT_NE(h5::read_string_attribute(log.id(), "restarts").find("mssph run --restart"), std::string::npos);
+    expect_bit_identical(work("whole.h5"), work("stopped.h5"));
+    EXPECT_EQ(read_file(work("stopped.csv")), read_file(work("whole.csv"))) << "the device recording";
+  }
+};
+
+TEST_P(Restart, AfterSigtermEndsBitIdenticalToTheUninterruptedRun) {
+  run_uninterrupted();
+  auto run = start_stopped_run();
+  run->send(SIGTERM);
+  const ProcessResult stopped = run->wait();
+  ASSERT_EQ(stopped.exit_code, 143) << "the run ended before the signal?\n" << stopped.err;
+  const std::string status = status_of(work("stopped.h5.partial"));
+  EXPECT_NE(status.find("checkpoint written"), std::string::npos) << status;
+  restart_and_compare();
+}
+
+TEST_P(Restart, AfterSigkillContinuesFromTheLastPeriodicCheckpoint) {
+  run_uninterrupted();
+  auto run = start_stopped_run({"--checkpoint-interval", "0.05"});
+  run->send(SIGKILL);
+  ASSERT_EQ(run->wait().signal, SIGKILL);
+  EXPECT_EQ(status_of(work("stopped.h5.partial")), "running");
+  restart_and_compare();
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, Restart,
+                         ::testing::Values("cpu", "reference", "cuda"), [](const auto& test) { return test.param; });
+
+// Logs that cannot be continued: refused with exit 2, the file left as it was.
+class RestartRefusal : public Cli {};
+
+TEST_F(RestartRefusal, ACompletedRun) {
+  ASSERT_EQ(mssph({"run", kScene, "--backend", "cpu", "--out", work("done.h5"), "-q"}).exit_code, 0);
+  const ProcessResult r = mssph({"run", "--restart", work("done.h5")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("completed"), std::string::npos) << r.err;
+}
+
+TEST_F(RestartRefusal, ALogWithoutACheckpoint) {
+  // A run killed before any checkpoint: no --checkpoint-interval, and SIGKILL writes none.
+  auto run = start({"run", kScene, "--backend", "cpu", "--out", work("killed.h5"), "--set", "simulation/duration=1000"});
+  ASSERT_TRUE(wait_for([&] { return run->stderr_so_far().find(" particles (") != std::string::npos; }, 60s));
+  std::this_thread::sleep_for(300ms);
+  run->send(SIGKILL);
+  run->wait();
+  const ProcessResult r = mssph({"run", "--restart", work("killed.h5.partial")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("holds no checkpoint"), std::string::npos) << r.err;
+  EXPECT_EQ(status_of(work("killed.h5.partial")), "running");
+}
+
+TEST_F(RestartRefusal, OptionsThatWouldChangeTheRun) {
+  for (const std::vector<std::string>& extra :
+       {std::vector<std::string>{"--set", "simulation/dt=1e-4"}, {"--backend", "reference"}, {"--out", "x.h5"},
+        {kScene}}) {
+    std::vector<std::string> args{"run", "--restart", work("any.h5.partial")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const ProcessResult r = mssph(args);
+    EXPECT_EQ(r.exit_code, 2) << extra.front();
+    EXPECT_NE(r.err.find("cannot be given with --restart"), std::string::npos) << r.err;
+  }
+}
+
+TEST_F(RestartRefusal, AFileThatIsNoRunLog) {
+  std::filesystem::copy_file(kScene, work("scene.h5.partial"));
+  const ProcessResult r = mssph({"run", "--restart", work("scene.h5.partial")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("not an HDF5 file"), std::string::npos) << r.err;
+  EXPECT_EQ(read_file(work("scene.h5.partial")), read_file(kScene)) << "left as it was";
+}
+
+TEST_F(RestartRefusal, ARunStillWritingItsLog) {
+  auto run = start({"run", kScene, "--backend", "cpu", "--out", work("live.h5"), "--set", "simulation/duration=1000",
+                    "--checkpoint-interval", "0.05"});
+  ASSERT_TRUE(wait_for([&] { return run->stderr_so_far().find(" particles (") != std::string::npos; }, 60s));
+  std::this_thread::sleep_for(300ms);
+  const ProcessResult r = mssph({"run", "--restart", work("live.h5.partial")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("another run is writing it"), std::string::npos) << r.err;
+  run->send(SIGKILL);
+  run->wait();
+}
+
+}  // namespace
+}  // namespace mssph::test
