@@ -43,6 +43,7 @@ struct SweepArgs {
   std::string gpus;
   std::string shard;
   bool retry_failed = false;
+  double checkpoint_interval = 0.0;  // passed to every point's run
   bool dry_run = false;
   bool emit_slurm = false;
   std::size_t shards = 0;
@@ -148,13 +149,22 @@ std::string point_label(const SweepPoint& p, std::size_t total) {
   return "point " + std::to_string(p.index + 1) + "/" + std::to_string(total) + " (" + p.describe() + ")";
 }
 
+// `continuable`: the point's partial log holds a checkpoint, and the run continues from it with
+// the scene, options and tags recorded there.
 PointTask make_task(const SweepPoint& point, std::size_t total, const SweepFile& sweep, const SweepArgs& args,
-                    const std::string& program, const std::string& directory) {
+                    const std::string& program, const std::string& directory, bool continuable) {
   const std::string folder = directory + "/" + kPointsFolder;
   PointTask task;
   task.label = point_label(point, total);
   task.log_path = folder + "/" + point.log_name();
   task.output_path = folder + "/point-" + point.hash + ".out";
+  if (continuable) {
+    task.argv = {program, "run", "--restart", task.log_path + ".partial"};
+    if (args.checkpoint_interval > 0.0) {
+      task.argv.insert(task.argv.end(), {"--checkpoint-interval", std::to_string(args.checkpoint_interval)});
+    }
+    return task;
+  }
   // --force: a point runs only when it is not completed, and then replaces what an earlier try
   // left (a failed or interrupted run's <log>.partial).
   task.argv = {program, "run", fs::absolute(sweep.scene_path).lexically_normal().string(), "--backend", args.backend,
@@ -164,6 +174,9 @@ PointTask make_task(const SweepPoint& point, std::size_t total, const SweepFile&
     task.argv.push_back(o);
   }
   task.argv.insert(task.argv.end(), {"--tag", "sweep=" + sweep.name, "--tag", "point=" + point.hash});
+  if (args.checkpoint_interval > 0.0) {
+    task.argv.insert(task.argv.end(), {"--checkpoint-interval", std::to_string(args.checkpoint_interval)});
+  }
   for (const auto& [name, value] : point.parameters) {
     task.argv.push_back("--tag");
     task.argv.push_back(name + "=" + (value.is_string() ? value.get<std::string>() : value.dump()));
@@ -223,7 +236,7 @@ int run_sweep(const SweepArgs& args) {
   if (args.emit_slurm) return emit_slurm(args, sweep, points, directory);
 
   // What is left to do: resume skips completed points, and failed ones unless asked.
-  std::vector<const SweepPoint*> to_run;
+  std::vector<std::pair<const SweepPoint*, bool>> to_run;  // with whether it continues from a checkpoint
   SweepCounts counts;
   std::vector<std::string> skipped_failures;
   for (const SweepPoint& p : points) {
@@ -236,7 +249,7 @@ int run_sweep(const SweepArgs& args) {
       ++counts.failed;
       skipped_failures.push_back(point_label(p, points.size()) + ": " + status.status);
     } else {
-      to_run.push_back(&p);
+      to_run.emplace_back(&p, status.continuable);
     }
   }
   const std::vector<RunSlot> slots = make_slots(args);
@@ -250,7 +263,9 @@ int run_sweep(const SweepArgs& args) {
 
   const std::string program = point_program();
   std::vector<PointTask> tasks;
-  for (const SweepPoint* p : to_run) tasks.push_back(make_task(*p, points.size(), sweep, args, program, directory));
+  for (const auto& [p, continuable] : to_run) {
+    tasks.push_back(make_task(*p, points.size(), sweep, args, program, directory, continuable));
+  }
   fs::create_directories(directory + "/" + kPointsFolder);
   const RunnerReport report = run_point_tasks(tasks, slots, progress);
 
@@ -260,7 +275,8 @@ int run_sweep(const SweepArgs& args) {
   }
   if (report.stopped_by_signal) {
     std::cerr << "sweep " << sweep.name << ": interrupted; " << report.interrupted
-              << " point(s) in flight were stopped and run again when the same command is repeated\n";
+              << " point(s) in flight were stopped (with a checkpoint) and continue from it when the same command is "
+                 "repeated\n";
     return kExitOther;
   }
   const SweepCounts& final_counts = progress.counts();
@@ -314,6 +330,10 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
                   "Run only shard K of N (points whose index i has i % N == K); inside a Slurm array job the shard "
                   "comes from SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT (or _MIN/_MAX)");
   cmd->add_flag("--retry-failed", args->retry_failed, "Rerun points whose log says \"failed: ...\" (skipped by default)");
+  cmd->add_option("--checkpoint-interval", args->checkpoint_interval,
+                  "Each point's run writes a checkpoint every SECONDS of wall-clock time (as mssph run; a signal writes "
+                  "one anyway), so a point killed with its node loses at most that much")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--dry-run", args->dry_run, "Validate every point and list them with their logs' state; run nothing");
   cmd->add_flag("--emit-slurm", args->emit_slurm,
                 "Write Slurm scripts to DIR/slurm (an sbatch --array job and a dependent merge job) instead of running");
@@ -336,8 +356,9 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       "\n"
       "Resume: the same command again skips points whose log says \"completed\"; points whose log says\n"
       "\"failed: ...\" are listed and rerun only with --retry-failed; anything else (no log, a log still\n"
-      "\"running\" from a killed run, an interrupted one) runs again. SIGINT or SIGTERM stops the sweep:\n"
-      "no new point starts and the running ones are stopped (their logs say interrupted).\n"
+      "\"running\" from a killed run, an interrupted one) runs again, from its log's latest checkpoint\n"
+      "when it has one (mssph run --restart). SIGINT or SIGTERM stops the sweep: no new point starts\n"
+      "and the running ones are stopped with a checkpoint (their logs say interrupted).\n"
       "\n"
       "Without --shard (and outside a Slurm array) a sweep ends by writing DIR/summary.h5 and\n"
       "DIR/summary.csv, as `mssph sweep merge DIR` does.\n"

@@ -128,6 +128,8 @@ void write_checkpoint(hid_t file, const Checkpoint& checkpoint) {
   h5::check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush a checkpoint");
 }
 
+long long latest_checkpoint_step(hid_t file) { return std::max(slot_step(file, kSlots[0]), slot_step(file, kSlots[1])); }
+
 std::optional<Checkpoint> read_latest_checkpoint(hid_t file) {
   const long long steps[2] = {slot_step(file, kSlots[0]), slot_step(file, kSlots[1])};
   const int latest = steps[1] > steps[0] ? 1 : 0;

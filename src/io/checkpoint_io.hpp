@@ -27,6 +27,8 @@ void write_checkpoint(hid_t file, const Checkpoint& checkpoint);
 
 // The latest whole checkpoint of the file, if any.
 std::optional<Checkpoint> read_latest_checkpoint(hid_t file);
+// Its step alone (reading no arrays), -1 when the file holds none.
+long long latest_checkpoint_step(hid_t file);
 
 // Bytes the arrays of `state` take, to reserve disk space before writing them.
 long long state_bytes(const StateArrays& state);

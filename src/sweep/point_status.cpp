@@ -1,5 +1,6 @@
 #include "sweep/point_status.hpp"
 
+#include "io/checkpoint_io.hpp"
 #include "util/hdf5_handle.hpp"
 
 #include <filesystem>
@@ -27,7 +28,9 @@ PointStatus read_point_status(const std::string& log_path) {
   try {
     const h5::Handle file = h5::file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open " + path);
     const std::string status = h5::read_string_attribute(file.id(), "status");
-    return {classify_status(status), status};
+    const PointState state = classify_status(status);
+    const bool unfinished = state == PointState::interrupted || state == PointState::incomplete;
+    return {state, status, !published && unfinished && latest_checkpoint_step(file.id()) >= 0};
   } catch (const h5::Error& e) {
     return {PointState::incomplete, std::string("unreadable (") + e.what() + ")"};
   }

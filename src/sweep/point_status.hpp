@@ -16,6 +16,9 @@ enum class PointState {
 struct PointStatus {
   PointState state = PointState::missing;
   std::string status;  // the attribute's text, or why the file could not be read
+  // An interrupted or incomplete point whose partial log holds a checkpoint: it continues from
+  // there (`mssph run --restart`) instead of starting over.
+  bool continuable = false;
 };
 
 // Only a log whose status says "completed" counts as done: a partial log never does.

@@ -78,12 +78,15 @@ TEST_F(SweepInterrupt, SigtermStopsTheSweepAndItsRunningPoint) {
   const ProcessResult r = sweep->wait(60s);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_THAT(r.err, HasSubstr("interrupted: passing the signal on to 1 running point(s)"));
-  EXPECT_THAT(r.err, HasSubstr("run again when the same command is repeated"));
+  EXPECT_THAT(r.err, HasSubstr("continue from it when the same command is repeated"));
   const std::vector<std::size_t> unfinished = unfinished_logs();
   ASSERT_EQ(unfinished.size(), 1u) << "only the point in flight is lost\n" << r.err;
   EXPECT_THAT(status_of(log_on_disk(unfinished[0])), HasSubstr("interrupted"));
   EXPECT_FALSE(std::filesystem::exists(out() + "/summary.h5")) << "an interrupted sweep writes no summary";
   expect_resume_finishes(completed_logs());
+  // The stopped point wrote a checkpoint and continued from it rather than starting over.
+  const h5::Handle log = open_read_only(log_of(unfinished[0]));
+  EXPECT_THAT(h5::read_string_attribute(log.id(), "restarts"), HasSubstr("mssph run --restart"));
 }
 
 TEST_F(SweepInterrupt, SigkillLosesOnlyThePointInFlight) {
