@@ -196,8 +196,8 @@ struct Advance {
   Vec4 velocity;       // v_{n+1/2} [m/s]
 };
 
-// The total force on s (its pressure and viscosity sums and, for a deformable particle, its elastic
-// force) through the leap-frog.
+// Advances s by the leap-frog under its total force: its pressure and viscosity sums and, for a
+// deformable particle, its elastic force.
 MSSPH_HD Advance advance_particle(const SortedView& v, const CanonicalState& c, std::uint32_t s, const ForceSum& f) {
   Advance a{v.id[s], false, false, {0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
   const BodyParameters& body = v.bodies[c.body[a.i]];
