@@ -132,7 +132,7 @@ struct ForceSum {
   // the step within the wall exclusion distance (0.8 dx) of a boundary particle as long as it
   // moves less than h - 0.8 dx in a step (at least 0.2 dx, 1.2 dx at the default h = 2 dx; the
   // CFL bound keeps a step's move far below), so only a particle with one needs the wall check
-  // after its leap-frog (keep_out_of_walls), which on a GPU one lane does alone.
+  // after its leap-frog (wall_exclusion.hpp).
   std::uint32_t boundary_neighbours;
 };
 
@@ -184,22 +184,61 @@ MSSPH_HD void leapfrog(Vec4& position, Vec4& velocity, Vec3 force, float mass, b
   position = make_vec4(xyz(position) + step.dt * v, 0.0f);
 }
 
-// Steps 3 and 4 joined for sorted particle s, given its force sum: records its interaction force
-// and, for fluid and deformable particles, adds its elastic force, advances its canonical state,
-// keeps it out of the walls (wall_exclusion.hpp) and deactivates it once it leaves the domain
-// (simulation_domain.hpp). Writes only particle s's canonical entries, so all particles can run
-// at once.
-MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, std::uint32_t s, const ForceSum& f) {
-  const std::uint32_t i = v.id[s];
-  c.interaction_force[i] = make_vec4(f.interaction, 0.0f);
-  const BodyParameters& body = v.bodies[c.body[i]];
-  if (body.kind != kFluid && body.kind != kDeformable) return;
+// Step 4 of sorted particle s before its wall check, in registers: nothing is written, so every
+// lane of a GPU team, holding the same force sum, computes the same bits.
+struct Advance {
+  std::uint32_t i;     // canonical index
+  bool integrates;     // fluid or deformable: advanced by the leap-frog; the others only record
+                       // their interaction force
+  bool may_hit_wall;   // integrates and has a boundary neighbour (ForceSum::boundary_neighbours)
+  Vec3 previous;       // x_n [m]
+  Vec4 position;       // x_{n+1} [m]
+  Vec4 velocity;       // v_{n+1/2} [m/s]
+};
+
+// Advances s by the leap-frog under its total force: its pressure and viscosity sums and, for a
+// deformable particle, its elastic force.
+MSSPH_HD Advance advance_particle(const SortedView& v, const CanonicalState& c, std::uint32_t s, const ForceSum& f) {
+  Advance a{v.id[s], false, false, {0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
+  const BodyParameters& body = v.bodies[c.body[a.i]];
+  if (body.kind != kFluid && body.kind != kDeformable) return a;
   Vec3 total = f.pressure + f.viscosity;
-  if (c.elastic_force) total += xyz(c.elastic_force[i]);
-  const Vec3 previous = xyz(c.position[i]);
-  leapfrog(c.position[i], c.velocity[i], total, body.sph_mass, c.fixed[i] != 0, v.step);
-  if (f.boundary_neighbours > 0) keep_out_of_walls(v, previous, c.position[i], c.velocity[i]);
-  deactivate_outside_domain(v.step, c.position[i], c.velocity[i], c.fixed[i]);
+  if (c.elastic_force) total += xyz(c.elastic_force[a.i]);
+  a.integrates = true;
+  a.may_hit_wall = f.boundary_neighbours > 0;
+  a.position = c.position[a.i];
+  a.velocity = c.velocity[a.i];
+  a.previous = xyz(a.position);
+  leapfrog(a.position, a.velocity, total, body.sph_mass, c.fixed[a.i] != 0, v.step);
+  return a;
+}
+
+// Lane `lane` of `lanes`' share of the wall check: whether the advanced move is rejected by one of
+// its share of the candidates (touches_wall). The move is rejected iff some lane's share is.
+MSSPH_HD bool wall_check_share(const SortedView& v, const Advance& a, std::uint32_t lane, std::uint32_t lanes) {
+  return a.may_hit_wall && touches_wall(v, a.previous, xyz(a.position), lane, lanes);
+}
+
+// The rest of steps 3 and 4, in one lane, given whether the wall check rejected the move:
+// records s's interaction force and, for fluid and deformable particles, keeps a rejected move out
+// of the walls (keep_out_of_walls), deactivates the particle once it leaves the domain
+// (simulation_domain.hpp) and stores its canonical state. Writes only particle s's canonical
+// entries, so all particles can run at once.
+MSSPH_HD void store_advance(const SortedView& v, const CanonicalState& c, const ForceSum& f, Advance a,
+                            bool move_rejected) {
+  c.interaction_force[a.i] = make_vec4(f.interaction, 0.0f);
+  if (!a.integrates) return;
+  if (move_rejected) keep_out_of_walls(v, a.previous, a.position, a.velocity);
+  deactivate_outside_domain(v.step, a.position, a.velocity, c.fixed[a.i]);
+  c.position[a.i] = a.position;
+  c.velocity[a.i] = a.velocity;
+}
+
+// Steps 3 and 4 joined for sorted particle s in one lane (the host), given its force sum: the
+// parts above, the wall check over all of its candidates.
+MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, std::uint32_t s, const ForceSum& f) {
+  const Advance a = advance_particle(v, c, s, f);
+  store_advance(v, c, f, a, wall_check_share(v, a, 0, 1));
 }
 
 // ---- The grid's last stage: particles in cell order ----

@@ -20,7 +20,9 @@ __global__ void elastic_force_kernel(DeformableView view) {
 
 // The neighbour sums give each particle a team of Lanes consecutive lanes of a warp (1 to 8,
 // see choose_team_lanes): the lanes split its candidates (CellRanges::for_each_candidate) and add
-// their partial sums by shuffles in a fixed order, so a sum's order depends only on Lanes.
+// their partial sums by shuffles in a fixed order, so a sum's order depends only on Lanes. Every
+// lane ends with the same bits: at each xor stage the two partners add the same two values, in
+// swapped order, and float addition is commutative.
 template <unsigned Lanes>
 __device__ float team_sum(float x) {
   for (unsigned offset = 1; offset < Lanes; offset *= 2) x += __shfl_xor_sync(0xffffffffu, x, offset);
@@ -58,7 +60,18 @@ __global__ void forces_kernel(SortedView view, CanonicalState state) {
   if (active) sum = force_sum(view, load_force_particle(view, s), lane, Lanes);
   sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction),
          team_sum<Lanes>(sum.boundary_neighbours)};
-  if (active && lane == 0) apply_forces(view, state, s, sum);
+  // apply_forces split over the team: every lane advances the particle from the same team sum
+  // (same bits), tests its share of the candidates for a wall, and the team counts the lanes
+  // that found one; lane 0 then rejects the move if any did (its one-lane velocity projection,
+  // rare) and stores.
+  Advance advance{};
+  std::uint32_t lanes_touching_wall = 0;
+  if (active) {
+    advance = advance_particle(view, state, s, sum);
+    lanes_touching_wall = wall_check_share(view, advance, lane, Lanes) ? 1u : 0u;
+  }
+  lanes_touching_wall = team_sum<Lanes>(lanes_touching_wall);
+  if (active && lane == 0) store_advance(view, state, sum, advance, lanes_touching_wall > 0);
 }
 
 // Calls launch(std::integral_constant<unsigned, L>) for the team size L = lanes, so each launch
