@@ -37,7 +37,12 @@ __global__ void body_sums_kernel(const BodyChunk* chunks, const BodyParameters* 
 }  // namespace
 
 BodyReadback::BodyReadback(const FloatScene& scene, const std::vector<BodySetup>& bodies, const ChunkTables& chunks)
-    : scene_(scene), bodies_(bodies), chunks_(chunks.body), layout_(chunks.body.size(), scene.rigid_bodies.size()) {
+    : scene_(scene),
+      bodies_(bodies),
+      chunks_(chunks.body),
+      layout_(chunks.body.size(), scene.rigid_bodies.size()),
+      readback_host_(layout_.bytes),
+      tick_host_(1) {
   for (const RigidBody& r : scene.rigid_bodies) {
     float reach = 0.0f;
     for (std::uint32_t i = r.first; i < r.first + r.count; ++i) reach = std::max(reach, norm(xyz(scene.rest_offset[i])));
@@ -57,14 +62,15 @@ std::vector<BodyState> BodyReadback::body_states(DeviceState& state, std::uint64
                                state.rigid_bodies.bytes(), cudaMemcpyDeviceToDevice, stream),
                "gather rigid bodies");
   }
-  std::vector<unsigned char> bytes(state.readback.bytes());
-  cuda_check(cudaMemcpyAsync(bytes.data(), state.readback.data(), bytes.size(), cudaMemcpyDeviceToHost, stream),
+  const unsigned char* bytes = readback_host_.data();
+  cuda_check(cudaMemcpyAsync(readback_host_.data(), state.readback.data(), readback_host_.bytes(), cudaMemcpyDeviceToHost,
+                             stream),
              "download body states");
   cuda_check(cudaStreamSynchronize(stream), "body states");
   std::vector<BodySums> partial(chunks_.size());
-  std::memcpy(partial.data(), bytes.data(), partial.size() * sizeof(BodySums));
+  std::memcpy(partial.data(), bytes, partial.size() * sizeof(BodySums));
   rigid_host_.resize(scene_.rigid_bodies.size());
-  std::memcpy(rigid_host_.data(), bytes.data() + layout_.rigid_offset, rigid_host_.size() * sizeof(RigidBody));
+  std::memcpy(rigid_host_.data(), bytes + layout_.rigid_offset, rigid_host_.size() * sizeof(RigidBody));
   rigid_host_step_ = steps;
   std::vector<BodySums> sums(bodies_.size(), zero_body_sums());
   for (std::size_t c = 0; c < partial.size(); ++c) sums[chunks_[c].body] = combine(sums[chunks_[c].body], partial[c]);
@@ -85,9 +91,11 @@ BodyState BodyReadback::rigid_body_state(const DeviceState& state, std::size_t b
   if (rigid_host_step_ == steps) {
     copy = rigid_host_[rigid];
   } else {
-    cuda_check(cudaMemcpyAsync(&copy, state.rigid_bodies.data() + rigid, sizeof copy, cudaMemcpyDeviceToHost, stream),
+    cuda_check(cudaMemcpyAsync(tick_host_.data(), state.rigid_bodies.data() + rigid, sizeof copy,
+                               cudaMemcpyDeviceToHost, stream),
                "download rigid body");
     cuda_check(cudaStreamSynchronize(stream), "download rigid body");
+    copy = *tick_host_.data();
   }
   BodySums sums = zero_body_sums();
   const double bound = norm(copy.velocity) + norm(angular_velocity(copy)) * rigid_reach_[rigid];

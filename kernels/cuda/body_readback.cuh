@@ -3,6 +3,7 @@
 // sample (one kernel, one copy), and one rigid body's state for a haptic tick, from the copy a
 // logged sample left when no step has run since.
 #include "device_state.cuh"
+#include "pinned_buffer.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -28,6 +29,8 @@ class BodyReadback {
   std::vector<float> rigid_reach_;  // per movable rigid body: max |r0| over its particles [m]
   std::vector<RigidBody> rigid_host_;     // the rigid bodies as last read back...
   std::uint64_t rigid_host_step_ = ~0ull;  // ...after this many steps
+  PinnedBuffer<unsigned char> readback_host_;  // where the read-back buffer lands
+  PinnedBuffer<RigidBody> tick_host_;          // where a haptic tick's rigid body lands
 };
 
 }  // namespace mssph::kernels
