@@ -293,13 +293,23 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   const std::string output =
       request.output.empty() ? default_output_path(scene.name, backend_name) : request.output;
   check_outputs(request, scene, output);
-  const RunEstimate estimate = estimate_run(scene, backend_name);
-  check_run_fits(scene, backend_name, estimate, available_host_memory(), device_memory_for(backend_name));
+  // Checks of what the scene builds, after loading: a rejected value may still come from --set.
+  const auto noting_overrides = [&](auto&& check) {
+    try {
+      return check();
+    } catch (const InputError& e) {
+      throw noting_override(e, request.overrides);
+    }
+  };
+  const RunEstimate estimate = noting_overrides([&] { return estimate_run(scene, backend_name); });
+  noting_overrides([&] {
+    check_run_fits(scene, backend_name, estimate, available_host_memory(), device_memory_for(backend_name));
+  });
   const int threads = request.threads > 0 ? request.threads : default_thread_count();
   set_thread_count(threads);
 
   SceneRunResult result;
-  ParticleSetup setup = build_particles(scene);
+  ParticleSetup setup = noting_overrides([&] { return build_particles(scene); });
   if (request.dry_run) {
     print_plan(scene, backend_name, estimate, setup, output, threads);
     return result;

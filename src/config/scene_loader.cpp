@@ -497,18 +497,22 @@ Scene parse_scene_text(const std::string& text, const std::string& path, const s
   try {
     return parse_scene(document, path);
   } catch (const InputError& e) {
-    // A rejected value the user typed on the command line is not in the file they will open.
-    const std::string& rejected = e.json_pointer();
-    for (auto o = overrides.rbegin(); o != overrides.rend() && !rejected.empty(); ++o) {
-      std::string set_path = o->substr(0, o->find('='));
-      if (set_path.empty() || set_path.front() != '/') set_path = "/" + set_path;
-      // The value itself, inside it, or the object holding it (a rule over several keys).
-      const bool inside = rejected == set_path || rejected.rfind(set_path + "/", 0) == 0 ||
-                          set_path.rfind(rejected + "/", 0) == 0;
-      if (inside) throw InputError(std::string(e.what()) + " (this value comes from --set " + *o + ")", rejected);
-    }
-    throw;
+    throw noting_override(e, overrides);
   }
+}
+
+InputError noting_override(const InputError& e, const std::vector<std::string>& overrides) {
+  // A rejected value the user typed on the command line is not in the file they will open.
+  const std::string& rejected = e.json_pointer();
+  for (auto o = overrides.rbegin(); o != overrides.rend() && !rejected.empty(); ++o) {
+    std::string set_path = o->substr(0, o->find('='));
+    if (set_path.empty() || set_path.front() != '/') set_path = "/" + set_path;
+    // The value itself, inside it, or the object holding it (a rule over several keys).
+    const bool inside = rejected == set_path || rejected.rfind(set_path + "/", 0) == 0 ||
+                        set_path.rfind(rejected + "/", 0) == 0;
+    if (inside) return InputError(std::string(e.what()) + " (this value comes from --set " + *o + ")", rejected);
+  }
+  return e;
 }
 
 }  // namespace mssph

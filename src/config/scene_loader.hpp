@@ -3,6 +3,7 @@
 // output exists. Every failure is an InputError naming the file, the JSON path and what was
 // expected.
 #include "config/scene.hpp"
+#include "util/errors.hpp"
 
 #include <string>
 #include <vector>
@@ -19,6 +20,10 @@ Scene parse_scene(const nlohmann::json& document, const std::string& file);
 
 // Reads `path`, applies the overrides in order and validates the result.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// `e` with a note naming the --set override that gave the rejected value (its JSON pointer), if
+// one did: for checks made after loading, e.g. of the particles a scene builds.
+InputError noting_override(const InputError& e, const std::vector<std::string>& overrides);
 
 // The same for a scene file's text (`path` names it in messages and locates a recorded
 // trajectory): strict JSON (no duplicate keys, no number beyond a double), then as above.

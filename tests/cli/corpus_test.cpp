@@ -33,10 +33,15 @@ std::vector<CorpusCase> load_cases() {
   return cases;
 }
 
-// The test's name: the file's stem, and the arguments when the file is the valid base scene.
+// The test's name: the file's stem, and the arguments when the file is the valid base scene;
+// another file run with arguments too gets "_with_set".
 std::string case_name(const ::testing::TestParamInfo<CorpusCase>& info) {
   std::string name = std::filesystem::path(info.param.file).stem().string();
-  if (name == "ok_base") name = "set_" + std::to_string(info.index);
+  if (name == "ok_base") {
+    name = "set_" + std::to_string(info.index);
+  } else if (!info.param.args.empty()) {
+    name += "_with_set";
+  }
   for (char& c : name) {
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   }
