@@ -7,12 +7,14 @@
 // green_saint_venant_strain, isotropic_stress) and stress_action, eq. 6 elastic_force_pair,
 // plus zero_energy_force_pair and damping_force. Conventions and derivations are the
 // reference's (cpu_reference/elasticity.hpp): (grad u)_ab = du_a/dX_b, d_ij = V0_j L_i grad W(X_i - X_j),
-// K_i = V0_i R_i P_i, f_i = sum_j (K_i d_ij - K_j d_ji). The rest bonds (neighbours, offsets,
-// weights, d_ij, d_ji) come precomputed from the reference's rest state, converted to float.
+// K_i = V0_i R_i P_i, f_i = sum_j (K_i d_ij - K_j d_ji). The rest state (positions, volumes,
+// corrections L_i, neighbours) comes from the reference's rest-state builder, converted to float;
+// each bond's offset, weights and d's are derived from it as the passes read them (rest_bond).
 // The material models (scene key `model`, src/config/elastic_model.hpp) are those of the
 // reference's elastic_response(), with the equations and sources given there.
 #include "config/elastic_model.hpp"
 #include "particle_views.hpp"
+#include "smoothing_kernels.hpp"
 
 #include <cmath>
 
@@ -34,21 +36,14 @@ struct ElasticParameters {
   float lowest_valid_volume_ratio; // det F at or below which a particle is counted as past the model's range
 };
 
-// A rest neighbour j of deformable particle i, 48 bytes in three aligned loads.
-struct RestBond {
-  Vec4 offset_weight;  // X_ij = X_j - X_i [m], w: m_j W_poly6(|X_ij|) for the moment matrix
-  Vec4 d_ij_kernel;    // d_ij [1/m], w: W_poly6(|X_ij|) for the zero-energy control
-  Vec4 d_ji_neighbour; // d_ji [1/m], w: j's canonical index (bits)
-};
-
-MSSPH_HD std::uint32_t bond_neighbour(const RestBond& b) { return index_from_float_bits(b.d_ji_neighbour.w); }
-
 struct DeformableView {
   const ElasticParameters* bodies;   // per deformable body
   const std::uint32_t* body_of;      // per deformable particle: index into bodies
   const std::uint32_t* bond_count;   // per deformable particle: its number of rest bonds
-  const RestBond* bonds;
-  const float* rest_volume;          // V0 per deformable particle [m^3]
+  const std::uint32_t* bond_neighbour;  // bond-major: the k-th rest neighbour (canonical index) of d at k * count + d
+  const Vec4* rest;                  // per deformable particle: X_i in the kernels' frame [m], w: V0_i [m^3]
+  const Mat3* correction;            // per deformable particle: L_i (model/deformable_rest_state.hpp)
+  SmoothingKernels smoothing;        // poly6 W (moment matrix, zero-energy weight), spiky grad W (d_ij)
   const Vec4* position;              // canonical positions (read)
   const Vec4* velocity;              // canonical velocities (read, damping)
   Quat* rotation;                    // R_i as a quaternion; read as the warm start, then written
@@ -58,6 +53,43 @@ struct DeformableView {
   Vec4* elastic_force;               // canonical order (non-deformable entries stay zero) [N]
   std::uint32_t count;               // deformable particles
 };
+
+// The rest-configuration kernel gradient d_ij = V0_j L_i grad W(X_i - X_j) (reference:
+// rest_gradient, model/deformable_rest_state.hpp).
+MSSPH_HD Vec3 rest_gradient(float rest_volume_j, const Mat3& correction_i, Vec3 grad_w_rest) {
+  return rest_volume_j * (correction_i * grad_w_rest);
+}
+
+// Rest neighbour j (deformable index dj) of deformable particle i, derived from their rest positions,
+// volumes and corrections whenever a pass reads it: the bonds are the deformable passes' largest
+// read, and a 4-byte neighbour index per bond moves a twelfth of the 48-byte record of offset,
+// weights and both d's it replaces. The reference builds the same quantities once, in double
+// (build_deformable_rest_state).
+struct RestBond {
+  Vec3 offset;       // X_ij = X_j - X_i [m]
+  float kernel;      // W_poly6(|X_ij|) [1/m^3]
+  Vec3 grad_w;       // grad W_spiky(X_i - X_j) [1/m^4]
+  Vec3 d_ij;         // V0_j L_i grad W(X_i - X_j) [1/m]
+  float volume_j;    // V0_j [m^3]
+};
+
+MSSPH_HD RestBond rest_bond(const DeformableView& v, Vec4 rest_i, const Mat3& correction_i, std::uint32_t dj) {
+  const Vec4 rest_j = v.rest[dj];
+  const Vec3 offset = xyz(rest_j) - xyz(rest_i);
+  const float r2 = squared_norm(offset);
+  const Vec3 grad_w = v.smoothing.spiky_gradient(-1.0f * offset, std::sqrt(r2));
+  return {offset, v.smoothing.poly6(r2), grad_w, rest_gradient(rest_j.w, correction_i, grad_w), rest_j.w};
+}
+
+// d_ji = V0_i L_j grad W(X_j - X_i), from i's side of the bond: the spiky gradient is odd.
+MSSPH_HD Vec3 reverse_rest_gradient(const RestBond& bond, float rest_volume_i, const Mat3& correction_j) {
+  return rest_gradient(rest_volume_i, correction_j, -1.0f * bond.grad_w);
+}
+
+// Deformable index of canonical particle j of `body`.
+MSSPH_HD std::uint32_t deformable_index(const ElasticParameters& body, std::uint32_t j) {
+  return body.first_deformable + (j - body.first_particle);
+}
 
 // The rotational part of A by the iterative method of Mueller et al. 2016 ("A robust method to
 // extract the rotational part of deformations"): rotate q by omega = sum_c r_c x a_c /
@@ -90,16 +122,17 @@ struct BondSums {
   Mat3 rest_gradient;
 };
 
-MSSPH_HD BondSums bond_sums(const DeformableView& v, std::uint32_t d, Vec3 x_i) {
+MSSPH_HD BondSums bond_sums(const DeformableView& v, const ElasticParameters& body, std::uint32_t d, Vec3 x_i) {
   BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
+  const Vec4 rest_i = v.rest[d];
+  const Mat3 correction_i = v.correction[d];
   for (std::uint32_t k = 0; k < v.bond_count[d]; ++k) {
-    const RestBond bond = v.bonds[k * v.count + d];  // bond-major: FloatScene::bond_count
-    const Vec3 x_ij = xyz(v.position[bond_neighbour(bond)]) - x_i;
-    const Vec3 rest_offset = xyz(bond.offset_weight);
-    const Vec3 d_ij = xyz(bond.d_ij_kernel);
-    sums.moment = sums.moment + outer(bond.offset_weight.w * x_ij, rest_offset);
-    sums.current_gradient = sums.current_gradient + outer(x_ij, d_ij);
-    sums.rest_gradient = sums.rest_gradient + outer(rest_offset, d_ij);
+    const std::uint32_t j = v.bond_neighbour[k * v.count + d];  // bond-major: FloatScene::bond_count
+    const RestBond bond = rest_bond(v, rest_i, correction_i, deformable_index(body, j));
+    const Vec3 x_ij = xyz(v.position[j]) - x_i;
+    sums.moment = sums.moment + outer((body.particle_mass * bond.kernel) * x_ij, bond.offset);
+    sums.current_gradient = sums.current_gradient + outer(x_ij, bond.d_ij);
+    sums.rest_gradient = sums.rest_gradient + outer(bond.offset, bond.d_ij);
   }
   return sums;
 }
@@ -176,12 +209,12 @@ MSSPH_HD Mat3 world_deformation_gradient(const Mat3& rotation, const Mat3& grad_
 MSSPH_HD void rotation_and_stress(const DeformableView& v, std::uint32_t d) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const std::uint32_t i = body.first_particle + (d - body.first_deformable);
-  const BondSums sums = bond_sums(v, d, xyz(v.position[i]));
+  const BondSums sums = bond_sums(v, body, d, xyz(v.position[i]));
   const Quat q = extract_rotation(sums.moment, v.rotation[d]);
   const Mat3 rotation = rotation_matrix(q);
   const Mat3 grad_u = displacement_gradient(rotation, sums);
   v.rotation[d] = q;
-  v.stress_action[d] = stress_action(v.rest_volume[d], rotation, first_piola_kirchhoff(body, grad_u));
+  v.stress_action[d] = stress_action(v.rest[d].w, rotation, first_piola_kirchhoff(body, grad_u));
   v.deformation[d] = world_deformation_gradient(rotation, grad_u);
 }
 
@@ -219,18 +252,19 @@ MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) {
   const Vec3 x_i = xyz(v.position[i]);
   const Mat3 k_i = v.stress_action[d];
   const Mat3 f_i = v.deformation[d];
+  const Vec4 rest_i = v.rest[d];
+  const Mat3 correction_i = v.correction[d];
   Vec3 force{0, 0, 0};
   for (std::uint32_t k = 0; k < v.bond_count[d]; ++k) {
-    const RestBond bond = v.bonds[k * v.count + d];  // bond-major: FloatScene::bond_count
-    const std::uint32_t j = bond_neighbour(bond);
-    const std::uint32_t dj = body.first_deformable + (j - body.first_particle);
-    force += elastic_force_pair(k_i, xyz(bond.d_ij_kernel), v.stress_action[dj], xyz(bond.d_ji_neighbour));
+    const std::uint32_t j = v.bond_neighbour[k * v.count + d];  // bond-major: FloatScene::bond_count
+    const std::uint32_t dj = deformable_index(body, j);
+    const RestBond bond = rest_bond(v, rest_i, correction_i, dj);
+    force += elastic_force_pair(k_i, bond.d_ij, v.stress_action[dj], reverse_rest_gradient(bond, rest_i.w, v.correction[dj]));
     if (body.zero_energy_stiffness > 0.0f) {
       const Vec3 x_ij = xyz(v.position[j]) - x_i;
       if (norm(x_ij) > 0.0f) {
-        force += zero_energy_force_pair(f_i, v.deformation[dj], xyz(bond.offset_weight), x_ij, v.rest_volume[d],
-                                        v.rest_volume[dj], bond.d_ij_kernel.w, body.young_modulus,
-                                        body.zero_energy_stiffness);
+        force += zero_energy_force_pair(f_i, v.deformation[dj], bond.offset, x_ij, rest_i.w, bond.volume_j, bond.kernel,
+                                        body.young_modulus, body.zero_energy_stiffness);
       }
     }
   }

@@ -50,7 +50,7 @@ void add_deformable_bodies(const ParticleSetup& setup, FloatScene& scene) {
   const DeformableRestState rest = build_deformable_rest_state(setup);
   scene.own_rest_number_density.reserve(setup.size());
   for (const double delta : rest.own_rest_number_density) scene.own_rest_number_density.push_back(static_cast<float>(delta));
-  std::vector<std::vector<RestBond>> bonds_of;  // per deformable particle
+  std::vector<std::vector<std::uint32_t>> neighbours_of;  // per deformable particle
   for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
     const BodySetup& body = setup.bodies[b];
     if (body.kind != BodyKind::deformable) continue;
@@ -79,25 +79,22 @@ void add_deformable_bodies(const ParticleSetup& setup, FloatScene& scene) {
     scene.elastic_bodies.push_back(p);
     for (std::size_t i = body.first; i < body.first + body.count; ++i) {
       scene.deformable_body.push_back(index);
-      scene.rest_volume.push_back(static_cast<float>(rest.volume[i]));
-      std::vector<RestBond>& bonds = bonds_of.emplace_back();
+      scene.rest.push_back(make_vec4(scene.to_kernel_frame(rest.position[i]), static_cast<float>(rest.volume[i])));
+      scene.correction.push_back(to_mat3(rest.correction[i]));
+      std::vector<std::uint32_t>& neighbours = neighbours_of.emplace_back();
       for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
-        const mssph::RestBond& bond = rest.bonds[k];
-        const auto j = static_cast<std::uint32_t>(rest.neighbours.indices[k]);
-        bonds.push_back(RestBond{make_vec4(to_vec3(bond.offset), static_cast<float>(bond.moment_weight)),
-                                       make_vec4(to_vec3(bond.d_ij), static_cast<float>(bond.kernel)),
-                                       make_vec4(to_vec3(bond.d_ji), index_as_float_bits(j))});
+        neighbours.push_back(static_cast<std::uint32_t>(rest.neighbours.indices[k]));
       }
     }
   }
   // Bond-major (FloatScene::bond_count), each particle's bonds in the reference's order.
   std::size_t longest = 0;
-  for (const std::vector<RestBond>& bonds : bonds_of) longest = std::max(longest, bonds.size());
-  const std::size_t deformables = bonds_of.size();
-  scene.bonds.assign(longest * deformables, RestBond{});
+  for (const std::vector<std::uint32_t>& neighbours : neighbours_of) longest = std::max(longest, neighbours.size());
+  const std::size_t deformables = neighbours_of.size();
+  scene.bond_neighbour.assign(longest * deformables, 0u);
   for (std::size_t d = 0; d < deformables; ++d) {
-    scene.bond_count.push_back(static_cast<std::uint32_t>(bonds_of[d].size()));
-    for (std::size_t k = 0; k < bonds_of[d].size(); ++k) scene.bonds[k * deformables + d] = bonds_of[d][k];
+    scene.bond_count.push_back(static_cast<std::uint32_t>(neighbours_of[d].size()));
+    for (std::size_t k = 0; k < neighbours_of[d].size(); ++k) scene.bond_neighbour[k * deformables + d] = neighbours_of[d][k];
   }
 }
 

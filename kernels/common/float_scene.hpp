@@ -34,12 +34,15 @@ struct FloatScene {
   // canonical order, and the rest bonds of each.
   std::vector<ElasticParameters> elastic_bodies;
   std::vector<std::uint32_t> deformable_body;  // index into elastic_bodies
-  // Deformable particle d has bond_count[d] rest bonds; its k-th is bonds[k * D + d] for D deformable
-  // particles: bond-major, padded to the longest list, so that the threads of neighbouring particles
-  // read neighbouring records (one coalesced load per bond and warp instead of one per thread).
+  // Deformable particle d has bond_count[d] rest neighbours; its k-th is bond_neighbour[k * D + d] for
+  // D deformable particles: bond-major, padded to the longest list, so that the threads of
+  // neighbouring particles read neighbouring entries (one coalesced load per bond and warp instead
+  // of one per thread). What else a bond needs is derived from the rest state (elastic_physics.hpp,
+  // rest_bond).
   std::vector<std::uint32_t> bond_count;
-  std::vector<RestBond> bonds;
-  std::vector<float> rest_volume;              // V0 [m^3]
+  std::vector<std::uint32_t> bond_neighbour;  // canonical indices
+  std::vector<Vec4> rest;         // per deformable particle: X_i in the kernels' frame [m], w: V0_i [m^3]
+  std::vector<Mat3> correction;   // per deformable particle: L_i, the kernel-gradient correction
   // Canonical order, all n particles: the own-body number density at rest of a deformable
   // particle's contact layer (model/deformable_rest_state.hpp), 0 for other kinds [1/m^3].
   std::vector<float> own_rest_number_density;

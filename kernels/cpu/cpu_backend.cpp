@@ -68,10 +68,10 @@ void CpuBackend::build_grid() {
 
 DeformableView CpuBackend::deformable_view() {
   return DeformableView{scene_.elastic_bodies.data(), scene_.deformable_body.data(), scene_.bond_count.data(),
-                        scene_.bonds.data(),          scene_.rest_volume.data(),     scene_.position.data(),
-                        scene_.velocity.data(),       rotation_.data(),              stress_action_.data(),
-                        deformation_.data(),          elastic_force_.data(),
-                        static_cast<std::uint32_t>(scene_.deformable_body.size())};
+                        scene_.bond_neighbour.data(), scene_.rest.data(),             scene_.correction.data(),
+                        scene_.step.smoothing,        scene_.position.data(),         scene_.velocity.data(),
+                        rotation_.data(),             stress_action_.data(),          deformation_.data(),
+                        elastic_force_.data(),        static_cast<std::uint32_t>(scene_.deformable_body.size())};
 }
 
 // Step 1, R_i of deformable particles, with their stresses and elastic forces (step 3 of

@@ -124,7 +124,7 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
   mark(kNeighbours);
   launch_neighbour_grid(state_, scene_.grid, stream);
   mark(kRotations);
-  launch_elasticity(state_, stream);
+  launch_elasticity(scene_, state_, stream);
   mark(kDensities);
   launch_densities(scene_, state_, team_lanes_, stream);
   mark(kForces);
@@ -139,7 +139,7 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
 // order instead of being integrated.
 ForceEvaluation CudaBackend::evaluate_forces() {
   launch_neighbour_grid(state_, scene_.grid, stream_);
-  launch_elasticity(state_, stream_);
+  launch_elasticity(scene_, state_, stream_);
   launch_densities(scene_, state_, team_lanes_, stream_);
   return probe_forces(scene_, state_, stream_);
 }

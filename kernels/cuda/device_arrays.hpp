@@ -47,9 +47,9 @@ struct DeviceArrays {
   // Deformable bodies (empty without them).
   Array<Vec4> elastic_force;
   Array<ElasticParameters> elastic_bodies;
-  Array<std::uint32_t> deformable_body, bond_count;
-  Array<RestBond> bonds;
-  Array<float> rest_volume;
+  Array<std::uint32_t> deformable_body, bond_count, bond_neighbour;
+  Array<Vec4> rest;
+  Array<Mat3> correction;
   Array<float> own_rest_number_density;  // canonical, n entries
   Array<Quat> rotation;
   Array<Mat3> stress_action, deformation;
@@ -83,8 +83,9 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
     visit("elastic_bodies", a.elastic_bodies, copy_of(scene.elastic_bodies));
     visit("deformable_body", a.deformable_body, copy_of(scene.deformable_body));
     visit("bond_count", a.bond_count, copy_of(scene.bond_count));
-    visit("bonds", a.bonds, copy_of(scene.bonds));
-    visit("rest_volume", a.rest_volume, copy_of(scene.rest_volume));
+    visit("bond_neighbour", a.bond_neighbour, copy_of(scene.bond_neighbour));
+    visit("rest", a.rest, copy_of(scene.rest));
+    visit("correction", a.correction, copy_of(scene.correction));
     visit("own_rest_number_density", a.own_rest_number_density, copy_of(scene.own_rest_number_density));
     visit("rotation", a.rotation, Filled<Quat>{deformables, Quat{0, 0, 0, 1}});
     visit("stress_action", a.stress_action, Uninitialised{deformables});

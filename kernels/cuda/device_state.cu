@@ -76,12 +76,12 @@ CanonicalState canonical_state(DeviceState& state) {
                         state.elastic_force.data(), state.body.data(),     state.fixed.data()};
 }
 
-DeformableView deformable_view(DeviceState& state) {
+DeformableView deformable_view(const FloatScene& scene, DeviceState& state) {
   return DeformableView{state.elastic_bodies.data(), state.deformable_body.data(), state.bond_count.data(),
-                        state.bonds.data(),          state.rest_volume.data(),     state.position.data(),
-                        state.velocity.data(),       state.rotation.data(),        state.stress_action.data(),
-                        state.deformation.data(),    state.elastic_force.data(),
-                        static_cast<std::uint32_t>(state.deformable_body.size())};
+                        state.bond_neighbour.data(), state.rest.data(),               state.correction.data(),
+                        scene.step.smoothing,        state.position.data(),           state.velocity.data(),
+                        state.rotation.data(),       state.stress_action.data(),      state.deformation.data(),
+                        state.elastic_force.data(),  static_cast<std::uint32_t>(state.deformable_body.size())};
 }
 
 }  // namespace mssph::kernels

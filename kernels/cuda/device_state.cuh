@@ -19,6 +19,6 @@ DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& ch
 
 SortedView sorted_view(const FloatScene& scene, const DeviceState& state);
 CanonicalState canonical_state(DeviceState& state);
-DeformableView deformable_view(DeviceState& state);
+DeformableView deformable_view(const FloatScene& scene, DeviceState& state);
 
 }  // namespace mssph::kernels

@@ -96,8 +96,8 @@ unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads) 
   return lanes;
 }
 
-void launch_elasticity(DeviceState& state, cudaStream_t stream) {
-  const DeformableView view = deformable_view(state);
+void launch_elasticity(const FloatScene& scene, DeviceState& state, cudaStream_t stream) {
+  const DeformableView view = deformable_view(scene, state);
   if (view.count == 0) return;
   rotation_stress_kernel<<<blocks_for(view.count), kBlock, 0, stream>>>(view);
   elastic_force_kernel<<<blocks_for(view.count), kBlock, 0, stream>>>(view);

@@ -14,7 +14,7 @@ unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads);
 
 // Rotations and stresses of every deformable particle, then their elastic forces (nothing
 // without deformable bodies).
-void launch_elasticity(DeviceState& state, cudaStream_t stream);
+void launch_elasticity(const FloatScene& scene, DeviceState& state, cudaStream_t stream);
 // Volume and pressure of every sorted particle.
 void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream);
 // Pressure, viscosity and interaction forces of every sorted particle, integrated (leap-frog).

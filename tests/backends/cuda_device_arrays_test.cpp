@@ -109,7 +109,9 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   EXPECT_EQ(bytes_of(listed, "own_rest_number_density"), n * 4);
   EXPECT_EQ(bytes_of(listed, "rotation"), deformables * sizeof(kernels::Quat));
   EXPECT_EQ(bytes_of(listed, "bond_count"), deformables * 4);
-  EXPECT_EQ(bytes_of(listed, "bonds"), scene.bonds.size() * sizeof(kernels::RestBond));
+  EXPECT_EQ(bytes_of(listed, "bond_neighbour"), scene.bond_neighbour.size() * 4);
+  EXPECT_EQ(bytes_of(listed, "rest"), deformables * 16);
+  EXPECT_EQ(bytes_of(listed, "correction"), deformables * sizeof(kernels::Mat3));
   EXPECT_EQ(bytes_of(listed, "rigid_bodies"), rigid_bodies * sizeof(kernels::RigidBody));
   EXPECT_EQ(bytes_of(listed, "rigid_chunks"), rigid_chunks * sizeof(kernels::RigidChunk));
   EXPECT_EQ(bytes_of(listed, "chunk_wrench"), rigid_chunks * sizeof(kernels::Wrench));
@@ -127,8 +129,9 @@ TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
   without.elastic_bodies.clear();
   without.deformable_body.clear();
   without.bond_count.clear();
-  without.bonds.clear();
-  without.rest_volume.clear();
+  without.bond_neighbour.clear();
+  without.rest.clear();
+  without.correction.clear();
   without.own_rest_number_density.clear();
   const std::size_t n = setup.size();
   const std::size_t d = scene.deformable_body.size();
@@ -136,10 +139,10 @@ TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
       n * sizeof(kernels::Vec4) +                                           // elastic_force
       n * sizeof(float) +                                                   // own_rest_number_density
       scene.elastic_bodies.size() * sizeof(kernels::ElasticParameters) +    // elastic_bodies
-      d * (sizeof(std::uint32_t) + sizeof(float) + sizeof(kernels::Quat)) + // deformable_body, rest_volume, rotation
-      d * 2 * sizeof(kernels::Mat3) +                                       // stress_action, deformation
+      d * (sizeof(std::uint32_t) + sizeof(kernels::Vec4) + sizeof(kernels::Quat)) + // deformable_body, rest, rotation
+      d * 3 * sizeof(kernels::Mat3) +                                       // correction, stress_action, deformation
       d * sizeof(std::uint32_t) +                                           // bond_count
-      scene.bonds.size() * sizeof(kernels::RestBond);                       // bonds
+      scene.bond_neighbour.size() * sizeof(std::uint32_t);                  // bond_neighbour
   EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes).total_bytes -
                 kernels::device_array_sizes(without, chunks, kScanBytes).total_bytes,
             deformable_bytes);

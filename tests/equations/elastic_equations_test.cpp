@@ -9,8 +9,12 @@
 #include "elasticity.hpp"
 #include "zero_energy_control.hpp"
 #include "common/elastic_physics.hpp"
+#include "model/deformable_rest_state.hpp"
+#include "model/smoothing_kernels.hpp"
 #include "twin_support.hpp"
 
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace mssph::testing {
@@ -43,7 +47,9 @@ Eigen::Vector3d draw_rest_offset(TwinDraws& draws) {
 }
 
 // Deformable particle 0 and its rest bonds to particles 1..n, deformed by R (I + G) plus noise,
-// held in both precisions' data structures.
+// held in both precisions' data structures. The rest state (positions, volumes, corrections) is
+// drawn; the reference's bonds are built from it by build_deformable_rest_state's formulas, the
+// float code derives its own as it reads them (kernels::rest_bond).
 struct Neighbourhood {
   DeformableRestState rest;
   std::vector<Eigen::Vector3d> positions;
@@ -51,16 +57,19 @@ struct Neighbourhood {
   double gradient_scale = 0.0;  // sum_j (|x_ij| + |X_ij|) |d_ij|
 
   kernels::ElasticParameters body{};
-  std::vector<std::uint32_t> body_of{0}, bond_count;
-  std::vector<kernels::RestBond> bonds;
-  std::vector<kernels::Vec4> position;
+  std::vector<std::uint32_t> body_of, bond_count, bond_neighbour;
+  std::vector<kernels::Vec4> position, rest_float;
+  std::vector<kernels::Mat3> correction;
 
   kernels::DeformableView view() const {
     kernels::DeformableView v{};
     v.bodies = &body;
     v.body_of = body_of.data();
     v.bond_count = bond_count.data();
-    v.bonds = bonds.data();
+    v.bond_neighbour = bond_neighbour.data();  // one deformable particle with bonds: bond k at k
+    v.rest = rest_float.data();
+    v.correction = correction.data();
+    v.smoothing = kernels::SmoothingKernels::for_support(kSupport);
     v.position = position.data();
     v.count = 1;
     return v;
@@ -71,31 +80,77 @@ Neighbourhood draw_neighbourhood(TwinDraws& draws, const Eigen::Matrix3d& rotati
   Neighbourhood n;
   const int bonds = static_cast<int>(draws.uniform(8.0, 41.0));
   const Eigen::Matrix3d deformation = rotation * (Eigen::Matrix3d::Identity() + draws.matrix(0.5));
+  const double mass = TwinDraws::rounded(draws.uniform(1e-3, 1e-1));
+  n.body.particle_mass = static_cast<float>(mass);
+  const Eigen::Vector3d rest_i = TwinDraws::rounded(draws.vector(1.0));
   const Eigen::Vector3d x_i = draws.vector(1.0);
+  std::vector<Eigen::Vector3d> rest_positions{rest_i};
+  for (int j = 1; j <= bonds; ++j) rest_positions.push_back(TwinDraws::rounded(rest_i + draw_rest_offset(draws)));
+  // Volumes of a 2 cm lattice within a factor 2, corrections within 30 % of the identity.
+  for (int j = 0; j <= bonds; ++j) {
+    n.rest.volume.push_back(TwinDraws::rounded(draws.uniform(0.5, 2.0) * 8e-6));
+    n.rest.correction.push_back(TwinDraws::rounded(Eigen::Matrix3d(Eigen::Matrix3d::Identity() + draws.matrix(0.3))));
+    n.rest_float.push_back(to_float4(rest_positions[static_cast<std::size_t>(j)], static_cast<float>(n.rest.volume.back())));
+    n.correction.push_back(to_float(n.rest.correction.back()));
+    n.body_of.push_back(0);
+  }
+  const Poly6Kernel w(kSupport);
+  const SpikyGradient grad_w(kSupport);
   n.positions.push_back(x_i);
   n.rest.neighbours.offsets = {0, static_cast<std::size_t>(bonds)};
   n.bond_count = {static_cast<std::uint32_t>(bonds)};
   n.position.push_back(to_float4(x_i, 0.0f));
   for (int j = 1; j <= bonds; ++j) {
+    const auto uj = static_cast<std::size_t>(j);
     RestBond bond;
-    bond.offset = draw_rest_offset(draws);
-    bond.moment_weight = draws.uniform(0.1, 1.0);
-    bond.kernel = draws.uniform(0.1, 1.0);
-    bond.d_ij = draws.vector(2.0 / kSupport);
-    bond.d_ji = draws.vector(2.0 / kSupport);
+    bond.offset = rest_positions[uj] - rest_i;
+    bond.kernel = w(bond.offset.squaredNorm());
+    bond.moment_weight = mass * bond.kernel;
+    bond.d_ij = rest_gradient(n.rest.volume[uj], n.rest.correction[0], grad_w(-bond.offset));
+    bond.d_ji = rest_gradient(n.rest.volume[0], n.rest.correction[uj], grad_w(bond.offset));
     const Eigen::Vector3d x_j = TwinDraws::rounded(x_i + deformation * bond.offset + draws.vector(0.05 * kSupport));
     n.positions.push_back(x_j);
-    n.rest.neighbours.indices.push_back(static_cast<std::size_t>(j));
+    n.rest.neighbours.indices.push_back(uj);
     n.rest.bonds.push_back(bond);
     n.position.push_back(to_float4(x_j, 0.0f));
-    n.bonds.push_back({to_float4(bond.offset, static_cast<float>(bond.moment_weight)),
-                       to_float4(bond.d_ij, static_cast<float>(bond.kernel)),
-                       to_float4(bond.d_ji, kernels::index_as_float_bits(static_cast<std::uint32_t>(j)))});
+    n.bond_neighbour.push_back(static_cast<std::uint32_t>(j));
     const double x_ij = (x_j - x_i).norm();
     n.moment_scale += bond.moment_weight * x_ij * bond.offset.norm();
     n.gradient_scale += (x_ij + bond.offset.norm()) * bond.d_ij.norm();
   }
   return n;
+}
+
+// The rest bond the float code derives as it reads it (kernels::rest_bond: offset, W, d_ij, and
+// d_ji through reverse_rest_gradient) against the reference's, built once in double from the same
+// rest state (build_deformable_rest_state's formulas, rest_gradient of the same name).
+TEST(ElasticEquationTwins, RestBondFromTheRestState) {
+  TwinDraws draws("ElasticEquationTwins.RestBondFromTheRestState");
+  // The offsets fill the support uniformly, so about a third lie where W and grad W are below 1 %
+  // of their peaks (the "informative" bar): half the draws above it still let the check fail.
+  TwinComparison d_ij("d_ij = V0_j L_i grad W(X_i - X_j)", 0.5);
+  TwinComparison d_ji("d_ji = V0_i L_j grad W(X_j - X_i)", 0.5);
+  TwinComparison kernel("W_poly6(|X_ij|) of the moment matrix", 0.5);
+  // Scales: the kernel's peak W(0) and the largest d a bond can have, V0 |L| max |grad W| with
+  // max |grad W| = 45 / (pi h^4). Near the support's edge W and grad W vanish as (h - r)^2 and
+  // (h^2 - r^2)^3: the float code forms h^2 - r^2 from a float r^2, so relative to the vanishing
+  // value itself its error grows without bound while staying of float32 rounding against the
+  // values the sums add it to.
+  const double peak_w = Poly6Kernel(kSupport)(0.0);
+  const double peak_grad_w = 45.0 / (std::numbers::pi * std::pow(kSupport, 4));
+  for (int k = 0; k < kDraws; ++k) {
+    const Neighbourhood n = draw_neighbourhood(draws, Eigen::Matrix3d::Identity());
+    const kernels::DeformableView v = n.view();
+    for (std::size_t b = 0; b < n.rest.bonds.size(); ++b) {
+      const RestBond& expected = n.rest.bonds[b];
+      const std::uint32_t j = n.bond_neighbour[b];
+      const kernels::RestBond bond = kernels::rest_bond(v, v.rest[0], v.correction[0], j);
+      d_ij.add(to_double(bond.d_ij), expected.d_ij, n.rest.volume[j] * n.rest.correction[0].norm() * peak_grad_w);
+      d_ji.add(to_double(kernels::reverse_rest_gradient(bond, v.rest[0].w, v.correction[j])), expected.d_ji,
+               n.rest.volume[0] * n.rest.correction[j].norm() * peak_grad_w);
+      kernel.add(bond.kernel, expected.kernel, peak_w);
+    }
+  }
 }
 
 // Step 1's moment matrix and eq. 4: kernels::bond_sums gathers A_i and eq. 4's two halves in one
@@ -107,7 +162,7 @@ TEST(ElasticEquationTwins, MomentMatrixAndDisplacementGradient) {
   for (int k = 0; k < kDraws; ++k) {
     const Eigen::Matrix3d rotation = draws.rotation();
     const Neighbourhood n = draw_neighbourhood(draws, rotation);
-    const kernels::BondSums sums = kernels::bond_sums(n.view(), 0, kernels::xyz(n.position[0]));
+    const kernels::BondSums sums = kernels::bond_sums(n.view(), n.body, 0, kernels::xyz(n.position[0]));
     moment.add(to_double(sums.moment), reference::moment_matrix(n.rest, n.positions, 0), n.moment_scale);
     gradient.add(to_double(kernels::displacement_gradient(to_float(rotation), sums)),
                  reference::displacement_gradient(rotation, n.rest, n.positions, 0), n.gradient_scale);
