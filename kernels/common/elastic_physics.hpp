@@ -9,7 +9,8 @@
 // reference's (cpu_reference/elasticity.hpp): (grad u)_ab = du_a/dX_b, d_ij = V0_j L_i grad W(X_i - X_j),
 // K_i = V0_i R_i P_i, f_i = sum_j (K_i d_ij - K_j d_ji). The rest state (positions, volumes,
 // corrections L_i, neighbours) comes from the reference's rest-state builder, converted to float;
-// each bond's offset, weights and d's are derived from it as the passes read them (rest_bond).
+// each bond's offset, weight and kernel gradient are derived from it as the passes read them
+// (rest_bond), and L_i is applied once per particle.
 // The material models (scene key `model`, src/config/elastic_model.hpp) are those of the
 // reference's elastic_response(), with the equations and sources given there.
 #include "config/elastic_model.hpp"
@@ -47,43 +48,31 @@ struct DeformableView {
   const Vec4* position;              // canonical positions (read)
   const Vec4* velocity;              // canonical velocities (read, damping)
   Quat* rotation;                    // R_i as a quaternion; read as the warm start, then written
-  Mat3* stress_action;               // K_i = V0_i R_i P_i (world frame) [N m]
+  Mat3* corrected_stress_action;     // K_i L_i, K_i = V0_i R_i P_i (world frame) [N m] (elastic_force says why)
   Mat3* deformation;                 // world-frame F_i = R_i (I + grad u_i), for the zero-energy control and
                                      // the logged volume ratio det F_i
   Vec4* elastic_force;               // canonical order (non-deformable entries stay zero) [N]
   std::uint32_t count;               // deformable particles
 };
 
-// The rest-configuration kernel gradient d_ij = V0_j L_i grad W(X_i - X_j) (reference:
-// rest_gradient, model/deformable_rest_state.hpp).
-MSSPH_HD Vec3 rest_gradient(float rest_volume_j, const Mat3& correction_i, Vec3 grad_w_rest) {
-  return rest_volume_j * (correction_i * grad_w_rest);
-}
-
-// Rest neighbour j (deformable index dj) of deformable particle i, derived from their rest positions,
-// volumes and corrections whenever a pass reads it: the bonds are the deformable passes' largest
-// read, and a 4-byte neighbour index per bond moves a twelfth of the 48-byte record of offset,
-// weights and both d's it replaces. The reference builds the same quantities once, in double
-// (build_deformable_rest_state).
+// Rest neighbour j (deformable index dj) of deformable particle i, derived from their rest positions
+// and volumes whenever a pass reads it: the bonds are the deformable passes' largest read, and a
+// 4-byte neighbour index per bond moves a twelfth of the 48-byte record of offset, weights and
+// both d's it replaces. The reference builds the same quantities once, in double
+// (build_deformable_rest_state). The correction L_i of d_ij = V0_j L_i grad W(X_i - X_j) is not
+// applied per bond: each pass takes it out of its sum (bond_sums, elastic_force).
 struct RestBond {
-  Vec3 offset;       // X_ij = X_j - X_i [m]
-  float kernel;      // W_poly6(|X_ij|) [1/m^3]
-  Vec3 grad_w;       // grad W_spiky(X_i - X_j) [1/m^4]
-  Vec3 d_ij;         // V0_j L_i grad W(X_i - X_j) [1/m]
-  float volume_j;    // V0_j [m^3]
+  Vec3 offset;     // X_ij = X_j - X_i [m]
+  float kernel;    // W_poly6(|X_ij|) [1/m^3]
+  Vec3 grad_w;     // grad W_spiky(X_i - X_j) [1/m^4]
+  float volume_j;  // V0_j [m^3]
 };
 
-MSSPH_HD RestBond rest_bond(const DeformableView& v, Vec4 rest_i, const Mat3& correction_i, std::uint32_t dj) {
+MSSPH_HD RestBond rest_bond(const DeformableView& v, Vec4 rest_i, std::uint32_t dj) {
   const Vec4 rest_j = v.rest[dj];
   const Vec3 offset = xyz(rest_j) - xyz(rest_i);
   const float r2 = squared_norm(offset);
-  const Vec3 grad_w = v.smoothing.spiky_gradient(-1.0f * offset, std::sqrt(r2));
-  return {offset, v.smoothing.poly6(r2), grad_w, rest_gradient(rest_j.w, correction_i, grad_w), rest_j.w};
-}
-
-// d_ji = V0_i L_j grad W(X_j - X_i), from i's side of the bond: the spiky gradient is odd.
-MSSPH_HD Vec3 reverse_rest_gradient(const RestBond& bond, float rest_volume_i, const Mat3& correction_j) {
-  return rest_gradient(rest_volume_i, correction_j, -1.0f * bond.grad_w);
+  return {offset, v.smoothing.poly6(r2), v.smoothing.spiky_gradient(-1.0f * offset, std::sqrt(r2)), rest_j.w};
 }
 
 // Deformable index of canonical particle j of `body`.
@@ -113,7 +102,8 @@ MSSPH_HD Quat extract_rotation(const Mat3& a, Quat q) {
 
 // What step 1 and eq. 4 need of deformable particle d's rest bonds, gathered in one pass: the
 // moment matrix A = sum_j m_j W_ij x_ij X_ij^T and the two halves of eq. 4,
-// sum_j x_ij d_ij^T and sum_j X_ij d_ij^T. Each half sums terms of size |X_ij| |d_ij| as the
+// sum_j x_ij d_ij^T and sum_j X_ij d_ij^T, each as (sum_j x_ij (V0_j grad W_ij)^T) L_i^T since
+// d_ij = L_i V0_j grad W_ij: one product by L_i per particle instead of one per bond. Each half sums terms of size |X_ij| |d_ij| as the
 // per-bond form does, so float32 rounding is of the same order; the bonds, the step's largest
 // read, are read once instead of twice.
 struct BondSums {
@@ -125,15 +115,18 @@ struct BondSums {
 MSSPH_HD BondSums bond_sums(const DeformableView& v, const ElasticParameters& body, std::uint32_t d, Vec3 x_i) {
   BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
   const Vec4 rest_i = v.rest[d];
-  const Mat3 correction_i = v.correction[d];
   for (std::uint32_t k = 0; k < v.bond_count[d]; ++k) {
     const std::uint32_t j = v.bond_neighbour[k * v.count + d];  // bond-major: FloatScene::bond_count
-    const RestBond bond = rest_bond(v, rest_i, correction_i, deformable_index(body, j));
+    const RestBond bond = rest_bond(v, rest_i, deformable_index(body, j));
     const Vec3 x_ij = xyz(v.position[j]) - x_i;
+    const Vec3 weighted_gradient = bond.volume_j * bond.grad_w;
     sums.moment = sums.moment + outer((body.particle_mass * bond.kernel) * x_ij, bond.offset);
-    sums.current_gradient = sums.current_gradient + outer(x_ij, bond.d_ij);
-    sums.rest_gradient = sums.rest_gradient + outer(bond.offset, bond.d_ij);
+    sums.current_gradient = sums.current_gradient + outer(x_ij, weighted_gradient);
+    sums.rest_gradient = sums.rest_gradient + outer(bond.offset, weighted_gradient);
   }
+  const Mat3 correction_t = transpose(v.correction[d]);
+  sums.current_gradient = sums.current_gradient * correction_t;
+  sums.rest_gradient = sums.rest_gradient * correction_t;
   return sums;
 }
 
@@ -214,7 +207,7 @@ MSSPH_HD void rotation_and_stress(const DeformableView& v, std::uint32_t d) {
   const Mat3 rotation = rotation_matrix(q);
   const Mat3 grad_u = displacement_gradient(rotation, sums);
   v.rotation[d] = q;
-  v.stress_action[d] = stress_action(v.rest[d].w, rotation, first_piola_kirchhoff(body, grad_u));
+  v.corrected_stress_action[d] = stress_action(v.rest[d].w, rotation, first_piola_kirchhoff(body, grad_u)) * v.correction[d];
   v.deformation[d] = world_deformation_gradient(rotation, grad_u);
 }
 
@@ -245,21 +238,23 @@ MSSPH_HD Vec3 zero_energy_force_pair(const Mat3& world_f_i, const Mat3& world_f_
 MSSPH_HD Vec3 damping_force(float rate, float mass, Vec3 velocity) { return (-rate * mass) * velocity; }
 
 // Step 3 for deformable particle d: the elastic force of eq. 6, plus the zero-energy control and
-// the mass-proportional damping when its body has them.
+// the mass-proportional damping when its body has them. With d_ij = V0_j L_i g and
+// d_ji = -V0_i L_j g (g = grad W(X_i - X_j), the spiky gradient being odd), eq. 6's
+// K_i d_ij - K_j d_ji is (K_i L_i) (V0_j g) - (K_j L_j) (-V0_i g): the pair function reads the
+// stress actions with their corrections applied once per particle (rotation_and_stress).
 MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const std::uint32_t i = body.first_particle + (d - body.first_deformable);
   const Vec3 x_i = xyz(v.position[i]);
-  const Mat3 k_i = v.stress_action[d];
+  const Mat3 k_i = v.corrected_stress_action[d];
   const Mat3 f_i = v.deformation[d];
   const Vec4 rest_i = v.rest[d];
-  const Mat3 correction_i = v.correction[d];
   Vec3 force{0, 0, 0};
   for (std::uint32_t k = 0; k < v.bond_count[d]; ++k) {
     const std::uint32_t j = v.bond_neighbour[k * v.count + d];  // bond-major: FloatScene::bond_count
     const std::uint32_t dj = deformable_index(body, j);
-    const RestBond bond = rest_bond(v, rest_i, correction_i, dj);
-    force += elastic_force_pair(k_i, bond.d_ij, v.stress_action[dj], reverse_rest_gradient(bond, rest_i.w, v.correction[dj]));
+    const RestBond bond = rest_bond(v, rest_i, dj);
+    force += elastic_force_pair(k_i, bond.volume_j * bond.grad_w, v.corrected_stress_action[dj], -rest_i.w * bond.grad_w);
     if (body.zero_energy_stiffness > 0.0f) {
       const Vec3 x_ij = xyz(v.position[j]) - x_i;
       if (norm(x_ij) > 0.0f) {

@@ -23,7 +23,7 @@ CpuBackend::CpuBackend(ParticleSetup setup) : setup_(std::move(setup)), scene_(m
   elastic_force_.assign(n, Vec4{0, 0, 0, 0});
   const std::size_t deformables = scene_.deformable_body.size();
   rotation_.assign(deformables, Quat{0, 0, 0, 1});
-  stress_action_.assign(deformables, zero_mat3());
+  corrected_stress_action_.assign(deformables, zero_mat3());
   deformation_.assign(deformables, identity_mat3());
 }
 
@@ -70,7 +70,7 @@ DeformableView CpuBackend::deformable_view() {
   return DeformableView{scene_.elastic_bodies.data(), scene_.deformable_body.data(), scene_.bond_count.data(),
                         scene_.bond_neighbour.data(), scene_.rest.data(),             scene_.correction.data(),
                         scene_.step.smoothing,        scene_.position.data(),         scene_.velocity.data(),
-                        rotation_.data(),             stress_action_.data(),          deformation_.data(),
+                        rotation_.data(),             corrected_stress_action_.data(),          deformation_.data(),
                         elastic_force_.data(),        static_cast<std::uint32_t>(scene_.deformable_body.size())};
 }
 

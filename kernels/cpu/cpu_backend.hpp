@@ -48,7 +48,7 @@ class CpuBackend final : public Backend {
   std::vector<Vec4> elastic_force_;  // zero outside deformable bodies
   // Per deformable particle.
   std::vector<Quat> rotation_;
-  std::vector<Mat3> stress_action_, deformation_;
+  std::vector<Mat3> corrected_stress_action_, deformation_;
   double time_ = 0.0;
   std::array<double, kPhaseCount> phase_seconds_{};
 };

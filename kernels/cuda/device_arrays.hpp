@@ -52,7 +52,7 @@ struct DeviceArrays {
   Array<Mat3> correction;
   Array<float> own_rest_number_density;  // canonical, n entries
   Array<Quat> rotation;
-  Array<Mat3> stress_action, deformation;
+  Array<Mat3> corrected_stress_action, deformation;  // K_i L_i (elastic_physics.hpp), F_i
   // Bodies, the rigid-body chunk reductions and the logged sums' read-back.
   Array<BodyParameters> bodies;
   Array<RigidBody> rigid_bodies;
@@ -88,7 +88,7 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
     visit("correction", a.correction, copy_of(scene.correction));
     visit("own_rest_number_density", a.own_rest_number_density, copy_of(scene.own_rest_number_density));
     visit("rotation", a.rotation, Filled<Quat>{deformables, Quat{0, 0, 0, 1}});
-    visit("stress_action", a.stress_action, Uninitialised{deformables});
+    visit("corrected_stress_action", a.corrected_stress_action, Uninitialised{deformables});
     // Identity until the first step: the logged volume ratio of the rest state is 1.
     visit("deformation", a.deformation, Filled<Mat3>{deformables, identity_mat3()});
   }

@@ -140,7 +140,7 @@ TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
       n * sizeof(float) +                                                   // own_rest_number_density
       scene.elastic_bodies.size() * sizeof(kernels::ElasticParameters) +    // elastic_bodies
       d * (sizeof(std::uint32_t) + sizeof(kernels::Vec4) + sizeof(kernels::Quat)) + // deformable_body, rest, rotation
-      d * 3 * sizeof(kernels::Mat3) +                                       // correction, stress_action, deformation
+      d * 3 * sizeof(kernels::Mat3) +                                       // correction, corrected_stress_action, deformation
       d * sizeof(std::uint32_t) +                                           // bond_count
       scene.bond_neighbour.size() * sizeof(std::uint32_t);                  // bond_neighbour
   EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes).total_bytes -

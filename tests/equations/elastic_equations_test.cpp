@@ -121,9 +121,10 @@ Neighbourhood draw_neighbourhood(TwinDraws& draws, const Eigen::Matrix3d& rotati
   return n;
 }
 
-// The rest bond the float code derives as it reads it (kernels::rest_bond: offset, W, d_ij, and
-// d_ji through reverse_rest_gradient) against the reference's, built once in double from the same
-// rest state (build_deformable_rest_state's formulas, rest_gradient of the same name).
+// The rest bond the float code derives as it reads it (kernels::rest_bond: X_ij, W and the kernel
+// gradient g = grad W(X_i - X_j)) against the reference's, built once in double from the same rest
+// state (build_deformable_rest_state's formulas): d_ij = L_i (V0_j g) and d_ji = -L_j (V0_i g),
+// the forms the float passes use with L applied once per particle.
 TEST(ElasticEquationTwins, RestBondFromTheRestState) {
   TwinDraws draws("ElasticEquationTwins.RestBondFromTheRestState");
   // The offsets fill the support uniformly, so about a third lie where W and grad W are below 1 %
@@ -144,9 +145,11 @@ TEST(ElasticEquationTwins, RestBondFromTheRestState) {
     for (std::size_t b = 0; b < n.rest.bonds.size(); ++b) {
       const RestBond& expected = n.rest.bonds[b];
       const std::uint32_t j = n.bond_neighbour[b];
-      const kernels::RestBond bond = kernels::rest_bond(v, v.rest[0], v.correction[0], j);
-      d_ij.add(to_double(bond.d_ij), expected.d_ij, n.rest.volume[j] * n.rest.correction[0].norm() * peak_grad_w);
-      d_ji.add(to_double(kernels::reverse_rest_gradient(bond, v.rest[0].w, v.correction[j])), expected.d_ji,
+      const kernels::RestBond bond = kernels::rest_bond(v, v.rest[0], j);
+      const Eigen::Vector3d g = to_double(bond.grad_w);
+      d_ij.add(to_double(v.correction[0]) * (static_cast<double>(bond.volume_j) * g), expected.d_ij,
+               n.rest.volume[j] * n.rest.correction[0].norm() * peak_grad_w);
+      d_ji.add(-(to_double(v.correction[j]) * (static_cast<double>(v.rest[0].w) * g)), expected.d_ji,
                n.rest.volume[0] * n.rest.correction[j].norm() * peak_grad_w);
       kernel.add(bond.kernel, expected.kernel, peak_w);
     }
