@@ -6,8 +6,9 @@
 #
 # The set fits CI's 30 minutes beside the rest of scripts/test.sh: from an empty build-asan with
 # no compiler cache it used 1067 to 1133 s of CPU time, about 10 minutes on 2 idle cores
-# (results/reliability.md, "Fuzzing and sanitizers", has the measurement). Every program links the whole library stack,
-# which is most of the build; a program of its own adds a few seconds of compiling and linking.
+# (results/reliability.md, "Fuzzing and sanitizers", has the measurement). Every program links
+# the whole library stack, which is most of the build; a program of its own adds a few seconds
+# of compiling and linking.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
