@@ -6,6 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake git pkg-config   # compilers and build
+  ninja-build                            # the asan-ubsan preset's generator (scripts/asan_tests.sh)
   libeigen3-dev                          # double-precision reference maths
   libhdf5-dev hdf5-tools                 # run logs (C API) and h5dump
   libcli11-dev                           # command line

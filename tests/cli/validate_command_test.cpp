@@ -69,7 +69,11 @@ TEST_F(Validate, CudaWithoutAGpuIsSkippedWithTheReason) {
   EXPECT_THAT(r.out, HasSubstr("SKIPPED (" + why + ")"));
   EXPECT_THAT(r.out, ::testing::Not(HasSubstr("PASS")));
   EXPECT_THAT(r.out, HasSubstr("cases: 0 passed, 0 failed, 2 skipped"));
-  for (const auto& c : read_json(work("report/report.json"))["cases"]) EXPECT_EQ(c["status"], "SKIPPED");
+  // The report is held in a variable: a range-for over read_json(...)["cases"] would iterate an
+  // element of a temporary destroyed before the loop body runs (C++20 extends only the outer
+  // temporary's lifetime).
+  const nlohmann::json report = read_json(work("report/report.json"));
+  for (const auto& c : report["cases"]) EXPECT_EQ(c["status"], "SKIPPED");
 }
 
 TEST_F(Validate, BadArgumentsExit2AndWriteNothing) {
