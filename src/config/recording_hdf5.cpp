@@ -55,10 +55,8 @@ void write_dataset(hid_t file, const char* name, const std::vector<double>& valu
   h5::write_attribute(set.id(), "description", description);
 }
 
-}  // namespace
-
-RawRecording read_hdf5_recording(const std::string& path) {
-  h5::silence_error_printing();
+// The layout above, read from an open file; a failing HDF5 call throws h5::Error.
+RawRecording read_layout(const std::string& path) {
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0) throw InputError(path + ": cannot open as an HDF5 device recording");
   h5::Handle file = h5::file(id, "open " + path);
@@ -80,6 +78,10 @@ RawRecording read_hdf5_recording(const std::string& path) {
                      ", 7] (one x, y, z, qx, qy, qz, qw row per time in " + kTimePath + "), got " +
                      describe_shape(pose_shape));
   }
+  if (time_shape[0] > kMaxRecordingSamples) {
+    throw InputError(path + ": " + kTimePath + ": " + std::to_string(time_shape[0]) + " samples, more than the " +
+                     std::to_string(kMaxRecordingSamples) + " a device recording may hold");
+  }
   const std::size_t n = time_shape[0];
   RawRecording out;
   out.row_word = "/device row";
@@ -91,6 +93,19 @@ RawRecording read_hdf5_recording(const std::string& path) {
     out.row_number.push_back(i);
   }
   return out;
+}
+
+}  // namespace
+
+RawRecording read_hdf5_recording(const std::string& path) {
+  h5::silence_error_printing();
+  try {
+    return read_layout(path);
+  } catch (const h5::Error& e) {
+    // HDF5 opened the file but could not follow its structure (a cut or overwritten file), or
+    // the system failed to read it: either way the input is unusable, not mssph at fault.
+    throw InputError(path + ": cannot read the HDF5 device recording, damaged or unreadable (" + e.what() + ")");
+  }
 }
 
 void write_hdf5_recording(const std::string& path, const RawRecording& recording) {
