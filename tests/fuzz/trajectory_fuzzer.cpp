@@ -18,11 +18,18 @@
 
 namespace {
 
+// In memory where the system has a tmpfs at /dev/shm: rewriting a file on disk for every input
+// made the target ten times slower (150 inputs per second instead of 1,600).
+std::filesystem::path scratch_root() {
+  std::error_code error;
+  if (std::filesystem::is_directory("/dev/shm", error)) return "/dev/shm";
+  return std::filesystem::temp_directory_path();
+}
+
 // One folder per process (libFuzzer's -jobs and -fork run several), removed at exit.
 class ScratchFolder {
  public:
-  ScratchFolder()
-      : path_(std::filesystem::temp_directory_path() / ("mssph-trajectory-fuzz-" + std::to_string(getpid()))) {
+  ScratchFolder() : path_(scratch_root() / ("mssph-trajectory-fuzz-" + std::to_string(getpid()))) {
     std::filesystem::create_directories(path_);
   }
   ~ScratchFolder() {
