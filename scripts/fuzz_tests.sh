@@ -13,6 +13,9 @@ build=build-fuzz  # the preset's binaryDir
 cmake --preset fuzz -DMSSPH_FUZZ_SECONDS="$seconds"
 cmake --build --preset fuzz -j "$(nproc)"
 if ctest --preset fuzz -j 2; then
+  # How much fuzzing that was: libFuzzer's last line per target, from ctest's full log.
+  awk '/ Testing: / { test = $NF } /^Done [0-9]+ runs/ { print "fuzz: " test ": " $0 }' \
+    "$build"/Testing/Temporary/LastTest.log
   exit 0
 fi
 echo "fuzz: failed; the inputs that did it (reproduce with the target and the file as its argument):" >&2
