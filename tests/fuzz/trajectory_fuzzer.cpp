@@ -18,11 +18,10 @@
 
 namespace {
 
-// In memory where the system has a tmpfs at /dev/shm: rewriting a file on disk for every input
-// made the target ten times slower (150 inputs per second instead of 1,600).
+// In memory where the system lets us write to its tmpfs at /dev/shm: rewriting a file on disk
+// for every input made the target ten times slower (150 inputs per second instead of 1,600).
 std::filesystem::path scratch_root() {
-  std::error_code error;
-  if (std::filesystem::is_directory("/dev/shm", error)) return "/dev/shm";
+  if (access("/dev/shm", W_OK | X_OK) == 0) return "/dev/shm";
   return std::filesystem::temp_directory_path();
 }
 
