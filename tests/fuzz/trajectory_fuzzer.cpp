@@ -2,8 +2,9 @@
 // as a CSV file and once as an HDF5 file. The readers take a path, so the bytes are written to a
 // file of each extension first. Bad input must end in InputError (what `mssph run` reports with
 // exit code 2); any other exception, crash, leak or undefined behaviour (with the sanitizers this
-// target is built with) is a bug. HDF5 itself is the system's uninstrumented library: a crash
-// inside it is still caught, but not its memory errors, and libFuzzer sees no coverage in it.
+// target is built with) is a bug. HDF5 itself is the system's uninstrumented library, run in a
+// child process (recording_hdf5.cpp): a crash inside it is a refused input, its memory errors
+// go unseen, and libFuzzer sees no coverage in it.
 #include "config/device_recording.hpp"
 #include "config/haptics_config.hpp"
 #include "util/errors.hpp"
