@@ -13,6 +13,7 @@ packages=(
   nlohmann-json3-dev                     # scene files
   libgtest-dev libgmock-dev              # tests
   libbenchmark-dev                       # benchmarks
+  clang libclang-rt-14-dev               # fuzz targets (libFuzzer runtime: scripts/fuzz_tests.sh)
   python3 python3-h5py python3-matplotlib python3-numpy python3-jsonschema  # plots, schema check
   slurmctld slurmd slurm-client          # Slurm: the sweep test starts its own single-node cluster
 )

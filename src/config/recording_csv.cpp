@@ -80,6 +80,10 @@ RawRecording read_csv_recording(const std::string& path) {
   while (std::getline(in, line)) {
     ++line_number;
     if (trim(line).empty()) continue;
+    if (out.time.size() == kMaxRecordingSamples) {
+      throw InputError(where(path, line_number) + ": more than the " + std::to_string(kMaxRecordingSamples) +
+                       " samples a device recording may hold");
+    }
     const std::vector<std::string> fields = split_fields(line);
     if (fields.size() != header.size()) {
       throw InputError(where(path, line_number) + ": expected " + std::to_string(header.size()) +

@@ -19,6 +19,12 @@ struct RawRecording {
   std::string row_name(std::size_t i) const { return row_word + " " + std::to_string(row_number[i]); }
 };
 
+// The most samples a recording may hold: almost 3 hours of a 1 kHz device, 0.6 GB in memory
+// (twice that while an HDF5 file is read).
+// A file claiming more (an HDF5 dataset's shape is only a header field) is refused before
+// anything is allocated for it.
+inline constexpr std::size_t kMaxRecordingSamples = 10'000'000;
+
 // The CSV columns, in the order the writer uses.
 inline const std::array<const char*, 8> kRecordingColumns = {"t", "x", "y", "z", "qx", "qy", "qz", "qw"};
 

@@ -5,6 +5,16 @@
 #include "util/hdf5_handle.hpp"
 #include "util/errors.hpp"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
 namespace mssph {
 namespace {
 
@@ -55,10 +65,8 @@ void write_dataset(hid_t file, const char* name, const std::vector<double>& valu
   h5::write_attribute(set.id(), "description", description);
 }
 
-}  // namespace
-
-RawRecording read_hdf5_recording(const std::string& path) {
-  h5::silence_error_printing();
+// The layout above, read from an open file; a failing HDF5 call throws h5::Error.
+RawRecording read_layout(const std::string& path) {
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0) throw InputError(path + ": cannot open as an HDF5 device recording");
   h5::Handle file = h5::file(id, "open " + path);
@@ -80,6 +88,10 @@ RawRecording read_hdf5_recording(const std::string& path) {
                      ", 7] (one x, y, z, qx, qy, qz, qw row per time in " + kTimePath + "), got " +
                      describe_shape(pose_shape));
   }
+  if (time_shape[0] > kMaxRecordingSamples) {
+    throw InputError(path + ": " + kTimePath + ": " + std::to_string(time_shape[0]) + " samples, more than the " +
+                     std::to_string(kMaxRecordingSamples) + " a device recording may hold");
+  }
   const std::size_t n = time_shape[0];
   RawRecording out;
   out.row_word = "/device row";
@@ -91,6 +103,118 @@ RawRecording read_hdf5_recording(const std::string& path) {
     out.row_number.push_back(i);
   }
   return out;
+}
+
+// What the reading process sends back: a tag, then the recording or the error's message.
+enum class Reply : char { recording = 'r', input_error = 'i', hdf5_error = 'h', other_error = 'x' };
+
+std::string encode(const RawRecording& recording) {
+  const std::uint64_t n = recording.time.size();
+  std::string bytes(1, static_cast<char>(Reply::recording));
+  bytes.append(reinterpret_cast<const char*>(&n), sizeof n);
+  bytes.append(reinterpret_cast<const char*>(recording.time.data()), n * sizeof(double));
+  bytes.append(reinterpret_cast<const char*>(recording.pose.data()), n * sizeof(recording.pose[0]));
+  return bytes;
+}
+
+RawRecording decode(const std::string& bytes) {
+  std::uint64_t n = 0;
+  if (bytes.size() < 1 + sizeof n) throw std::runtime_error("reading an HDF5 recording: short reply");
+  std::memcpy(&n, bytes.data() + 1, sizeof n);
+  RawRecording out;
+  if (n > kMaxRecordingSamples || bytes.size() != 1 + sizeof n + n * 8 * sizeof(double)) {
+    throw std::runtime_error("reading an HDF5 recording: malformed reply");
+  }
+  out.row_word = "/device row";
+  out.time.resize(n);
+  out.pose.resize(n);
+  std::memcpy(out.time.data(), bytes.data() + 1 + sizeof n, n * sizeof(double));
+  std::memcpy(out.pose.data(), bytes.data() + 1 + sizeof n + n * sizeof(double), n * sizeof(out.pose[0]));
+  for (std::size_t i = 0; i < n; ++i) out.row_number.push_back(i);
+  return out;
+}
+
+// In the child process: reads the file, sends the outcome down `fd` and exits.
+[[noreturn]] void read_in_child(const std::string& path, int fd) {
+  // A crash in libhdf5 should end this process by its signal, without handlers of the parent's
+  // (a sanitizer's or libFuzzer's) reporting it as the parent's crash.
+  for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL}) std::signal(sig, SIG_DFL);
+  std::string reply;
+  try {
+    reply = encode(read_layout(path));
+  } catch (const InputError& e) {
+    reply = static_cast<char>(Reply::input_error) + std::string(e.what());
+  } catch (const h5::Error& e) {
+    reply = static_cast<char>(Reply::hdf5_error) + std::string(e.what());
+  } catch (const std::exception& e) {
+    reply = static_cast<char>(Reply::other_error) + std::string(e.what());
+  }
+  for (std::size_t sent = 0; sent < reply.size();) {
+    const ssize_t n = write(fd, reply.data() + sent, reply.size() - sent);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) _exit(1);
+    sent += static_cast<std::size_t>(n);
+  }
+  _exit(0);  // no atexit handlers, no flushing of the parent's buffered output
+}
+
+}  // namespace
+
+// libhdf5 (1.10.8, Debian 12) can crash on a damaged file: one the trajectory fuzzer found makes
+// H5Lexists read through a null pointer, and h5dump and h5py crash on it too. A bad input must
+// end in a message and exit code 2, so the file is read in a child process; its crash is
+// reported as a damaged file.
+RawRecording read_hdf5_recording(const std::string& path) {
+  h5::silence_error_printing();
+  // Looking for the signature reads no structure: a file without one needs no process.
+  if (H5Fis_hdf5(path.c_str()) <= 0) throw InputError(path + ": cannot open as an HDF5 device recording");
+  int fds[2];
+  if (pipe(fds) != 0) throw std::runtime_error("reading " + path + ": pipe: " + std::strerror(errno));
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(fds[0]);
+    close(fds[1]);
+    throw std::runtime_error("reading " + path + ": fork: " + std::strerror(errno));
+  }
+  if (pid == 0) {
+    close(fds[0]);
+    read_in_child(path, fds[1]);
+  }
+  close(fds[1]);
+  std::string reply;
+  char buffer[65536];
+  for (;;) {
+    const ssize_t n = read(fds[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    reply.append(buffer, static_cast<std::size_t>(n));
+  }
+  close(fds[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFSIGNALED(status)) {
+    throw InputError(path + ": cannot read the HDF5 device recording, damaged: the HDF5 library crashed on it (" +
+                     strsignal(WTERMSIG(status)) + ")");
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || reply.empty()) {
+    throw std::runtime_error("reading " + path + ": the reading process failed (exit status " +
+                             std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
+  }
+  const std::string message = reply.substr(1);
+  switch (static_cast<Reply>(reply[0])) {
+    case Reply::recording:
+      return decode(reply);
+    case Reply::input_error:
+      throw InputError(message);
+    case Reply::hdf5_error:
+      // HDF5 opened the file but could not follow its structure (a cut or overwritten file), or
+      // the system failed to read it: either way the input is unusable, not mssph at fault.
+      throw InputError(path + ": cannot read the HDF5 device recording, damaged or unreadable (" + message + ")");
+    case Reply::other_error:
+      break;
+  }
+  throw std::runtime_error(message);
 }
 
 void write_hdf5_recording(const std::string& path, const RawRecording& recording) {
