@@ -9,6 +9,11 @@ scripts/build.sh
 # ctest runs as many tests at once as there are cores: one OpenMP thread each, so that two tests'
 # thread teams do not fight over the same cores (tests that need threads set them themselves).
 OMP_NUM_THREADS=1 ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 1500
+# Part of the suite again under AddressSanitizer + UBSan (build-asan/: the physics, the CLI through
+# an instrumented mssph; what it leaves out and why is in the script), then both fuzz targets for a
+# bounded time (build-fuzz/, MSSPH_FUZZ_SECONDS each).
+scripts/asan_tests.sh
+scripts/fuzz_tests.sh
 scripts/bench_gate.sh
 # Every quick case but physics/cantilever: its beam with the default (uncorrected) gradient never
 # comes to rest under its own weight, a finding of the scheme that the case reports as FAIL (see
