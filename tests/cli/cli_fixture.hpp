@@ -9,12 +9,25 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace mssph::test {
+
+// Waits until `ready` holds, checking every few milliseconds; false after `limit`.
+template <typename Condition>
+bool wait_for(Condition ready, std::chrono::milliseconds limit) {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  while (!ready()) {
+    if (std::chrono::steady_clock::now() > deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return true;
+}
 
 // A scene under tests/data, by absolute path (the binary runs elsewhere).
 inline std::string data_file(const std::string& name) { return MSSPH_SOURCE_DIR "/tests/data/" + name; }

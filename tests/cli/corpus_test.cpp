@@ -58,7 +58,9 @@ TEST_P(Corpus, IsRefusedWithItsExitCodeAndMessage) {
   EXPECT_EQ(r.exit_code, c.exit_code) << c.why << "\n" << r.err;
   EXPECT_NE(r.err.find(c.message), std::string::npos) << c.why << ": expected \"" << c.message << "\" in\n" << r.err;
   EXPECT_EQ(r.err.find("terminate called"), std::string::npos) << r.err;
-  if (c.exit_code == 2) EXPECT_TRUE(work_entries().empty()) << "bad input must not leave output behind";
+  if (c.exit_code == 2) {
+    EXPECT_TRUE(work_entries().empty()) << "bad input must not leave output behind";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Inputs, Corpus, ::testing::ValuesIn(load_cases()), case_name);

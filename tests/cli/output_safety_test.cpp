@@ -45,7 +45,9 @@ class OutputSafety : public Cli {
     if (!existed) return;
     EXPECT_EQ(after.st_ino, before.st_ino) << path << " was replaced";
     EXPECT_EQ(after.st_mode, before.st_mode) << path;
-    if (S_ISREG(before.st_mode)) EXPECT_EQ(read_file(path), content) << path;
+    if (S_ISREG(before.st_mode)) {
+      EXPECT_EQ(read_file(path), content) << path;
+    }
   }
 };
 
@@ -103,17 +105,6 @@ TEST_F(OutputSafety, ALeftoverPartialLogIsReplacedOnlyWithForce) {
   EXPECT_EQ(mssph({"run", kScene, "--out", out, "-q", "--force"}).exit_code, 0);
   EXPECT_EQ(status_of(out), "completed");
   EXPECT_FALSE(std::filesystem::exists(out + ".partial"));
-}
-
-// Waits until `ready` holds; false after `limit`.
-template <typename Condition>
-bool wait_for(Condition ready, std::chrono::milliseconds limit) {
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  while (!ready()) {
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(5ms);
-  }
-  return true;
 }
 
 TEST_F(OutputSafety, TwoRunsCannotWriteOnePathAndSigintEndsTheFirstWith130) {
@@ -227,8 +218,8 @@ TEST_F(OutputSafety, DryRunPrintsThePlanAndWritesNothing) {
   const ProcessResult r = mssph({"run", kScene, "--dry-run"});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   // tiny_drop: a 0.5 x 0.5 x 0.1 m ground at 5 cm (10 x 10 x 2 = 200) and the ball's 27.
-  for (const std::string& line : {"particles: 227", "ground (boundary): 200", "ball (rigid): 27", "memory estimate: host",
-                                  "ball acoustic: ", "steps: 40 ", "threads: "}) {
+  for (const char* line : {"particles: 227", "ground (boundary): 200", "ball (rigid): 27", "memory estimate: host",
+                          "ball acoustic: ", "steps: 40 ", "threads: "}) {
     EXPECT_NE(r.out.find(line), std::string::npos) << line << " in\n" << r.out;
   }
   EXPECT_TRUE(work_entries().empty()) << "a dry run writes nothing";

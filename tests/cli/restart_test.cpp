@@ -18,16 +18,6 @@ using namespace std::chrono_literals;
 
 const std::string kScene = data_file("tiny_drop.json");
 
-template <typename Condition>
-bool wait_for(Condition ready, std::chrono::milliseconds limit) {
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  while (!ready()) {
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(5ms);
-  }
-  return true;
-}
-
 // Every dataset of a log but those under /timing and /checkpoint, as doubles (exact for the
 // float32, float64 and integer datasets a log holds), by path.
 std::map<std::string, std::vector<double>> logged_data(const std::string& path) {

@@ -24,17 +24,6 @@ std::vector<std::string> concat(std::vector<std::string> a, const std::vector<st
   return a;
 }
 
-// Waits until `ready` holds; false after `limit`.
-template <typename Condition>
-bool wait_for(Condition ready, std::chrono::milliseconds limit) {
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  while (!ready()) {
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(1ms);
-  }
-  return true;
-}
-
 // Every body series holds as many rows as /time (they are appended and flushed together), and
 // the times increase.
 void expect_consistent_series(const nlohmann::json& summary) {
