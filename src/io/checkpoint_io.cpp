@@ -26,10 +26,12 @@ hid_t memory_type() {
 
 std::string parent_of(const std::string& path) { return path.substr(0, path.find_last_of('/')); }
 
-// A 1-D extendible dataset at `path` holding `values`, created on the slot's first use and
-// resized in place afterwards, so that rewriting a slot reuses its file space.
+// A 1-D extendible dataset at `path` holding `values`, created on the slot's first use (with the
+// `units` and `description` every dataset of a log carries) and resized in place afterwards, so
+// that rewriting a slot reuses its file space.
 template <class T>
-void write_array(hid_t file, const std::string& path, const std::vector<T>& values) {
+void write_array(hid_t file, const std::string& path, const std::vector<T>& values, const std::string& units,
+                 const std::string& description) {
   const hsize_t size[1] = {values.size()};
   h5::Handle set;
   if (h5::object_exists(file, path)) {
@@ -44,6 +46,8 @@ void write_array(hid_t file, const std::string& path, const std::vector<T>& valu
     h5::check(H5Pset_chunk(properties.id(), 1, chunk), "chunk " + path);
     set = h5::dataset(H5Dcreate2(file, path.c_str(), file_type<T>(), space.id(), H5P_DEFAULT, properties.id(), H5P_DEFAULT),
                       "create " + path);
+    h5::write_attribute(set.id(), "units", units);
+    h5::write_attribute(set.id(), "description", description);
   }
   if (!values.empty()) {
     h5::check(H5Dwrite(set.id(), memory_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + path);
@@ -111,7 +115,13 @@ void write_checkpoint(hid_t file, const Checkpoint& checkpoint) {
   h5::write_attribute(group.id(), "step", kWriting);
   h5::check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush before a checkpoint");
   for (const auto& [name, values] : checkpoint.state.arrays()) {
-    std::visit([&](const auto& v) { write_array(file, slot + "/state/" + name, v); }, values);
+    std::visit(
+        [&](const auto& v) {
+          write_array(file, slot + "/state/" + name, v, "SI, per quantity",
+                      "checkpoint array " + name + ": part of the run's state at the slot's step, as the code that "
+                      "saved it laid it out (src/sim/state_arrays.hpp); mssph run --restart restores it bit for bit");
+        },
+        values);
   }
   std::vector<std::int64_t> rows;
   std::string names;
@@ -119,7 +129,8 @@ void write_checkpoint(hid_t file, const Checkpoint& checkpoint) {
     rows.push_back(static_cast<std::int64_t>(count));
     names += path + "\n";
   }
-  write_array(file, slot + "/series_rows", rows);
+  write_array(file, slot + "/series_rows", rows, "1",
+              "rows of each time series at the slot's step (attribute series names them, one per line)");
   h5::Handle table = h5::dataset(H5Dopen2(file, (slot + "/series_rows").c_str(), H5P_DEFAULT), "open series_rows");
   h5::write_attribute(table.id(), "series", names);
   h5::write_attribute(group.id(), "time", checkpoint.time);

@@ -92,15 +92,18 @@ TEST_F(RunCommand, SnapshotsComeWithAValidXdmfSidecar) {
 }
 
 // The README promises units and a description on every dataset: checked on a log with body
-// series, haptics, timing, the body index and snapshots, as h5py reads it.
+// series, haptics, timing, the body index, snapshots and checkpoints (one after every step), as
+// h5py reads it.
 TEST_F(RunCommand, EveryDatasetHasUnitsAndADescription) {
   const std::string out = work("described.h5");
-  ASSERT_EQ(mssph({"run", kScene, "--out", out, "--set", "output/snapshot_interval=0.01", "--phase-timing", "-q"})
+  ASSERT_EQ(mssph({"run", kScene, "--out", out, "--set", "output/snapshot_interval=0.01", "--phase-timing",
+                   "--checkpoint-interval", "1e-9", "-q"})
                 .exit_code,
             0);
   std::size_t datasets = 0;
   const nlohmann::json summary = h5py_summary(out);
   EXPECT_TRUE(summary["objects"].contains("/timing/phases")) << "--phase-timing logs the phases";
+  EXPECT_TRUE(summary["objects"].contains("/checkpoint/a/state/backend/position")) << "checkpoints were written";
   for (const auto& [path, object] : summary["objects"].items()) {
     if (object["kind"] != "dataset") continue;
     ++datasets;
