@@ -386,10 +386,10 @@ void RunLog::flush() {
   structure_changed_ = false;
 }
 
-void RunLog::write_checkpoint(long long step, double time, const StateArrays& state) {
+void RunLog::write_checkpoint(long long step, double time, StateArrays state) {
   flush();
   ensure_space(state_bytes(state));
-  Checkpoint checkpoint{step, time, state, {}};
+  Checkpoint checkpoint{step, time, std::move(state), {}};
   for (const Series& s : series_) checkpoint.series_rows[s.path] = s.rows_written;
   mssph::write_checkpoint(file_.id(), checkpoint);
 }

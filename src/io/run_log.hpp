@@ -117,7 +117,7 @@ class RunLog {
 
   // Stores the run's state after `step` steps (simulated time `time`) with every series' rows so
   // far; a restart continues from the latest.
-  void write_checkpoint(long long step, double time, const StateArrays& state);
+  void write_checkpoint(long long step, double time, StateArrays state);
   // The checkpoint a reopened log continues from; nullptr for a new log.
   const Checkpoint* restart_point() const { return restart_ ? &*restart_ : nullptr; }
 

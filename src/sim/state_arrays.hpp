@@ -12,6 +12,7 @@
 #include <optional>
 #include <type_traits>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -45,9 +46,10 @@ class StateArrays {
   double scalar(const std::string& name) const { return get<double>(name, 1).front(); }
   std::int64_t count(const std::string& name) const { return get<std::int64_t>(name, 1).front(); }
 
-  // Every array of `part` under "<prefix>/<its name>", e.g. a backend's under "backend".
-  void add_part(const std::string& prefix, const StateArrays& part) {
-    for (const auto& [name, values] : part.arrays_) arrays_[prefix + "/" + name] = values;
+  // Every array of `part` under "<prefix>/<its name>", e.g. a backend's under "backend"; moved,
+  // not copied: a large scene's arrays are tens of megabytes.
+  void add_part(const std::string& prefix, StateArrays part) {
+    for (auto& [name, values] : part.arrays_) arrays_[prefix + "/" + name] = std::move(values);
   }
   // The arrays under "<prefix>/", with the prefix taken off.
   StateArrays part(const std::string& prefix) const {
