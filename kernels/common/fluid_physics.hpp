@@ -9,10 +9,12 @@
 // equation_of_state, eq. 2 pressure_force_pair, eq. 3 viscosity_force_pair (with
 // interface_viscosity), eq. 7 interaction_force.
 //
-// Each quantity is a sum over neighbours, assembled once by density_sum() and force_sum(): a lane
-// `lane` of a team of `lanes` visits every lanes-th candidate of the 27 cells. The host calls them
-// with one lane (all candidates); a GPU gives each particle a small team and adds the lanes'
-// partial sums (same pair arithmetic, another summation order).
+// Each quantity is a sum over neighbours, assembled once by density_sum_over() and
+// force_sum_over() from the candidates a source hands them: on a GPU (density_sum, force_sum) lane
+// `lane` of a particle's team visits every lanes-th candidate of the 27 cells, and the lanes'
+// partial sums are added (same pair arithmetic, another summation order); the host visits the
+// particle's neighbour list (neighbour_list.hpp), which gives the same bits as one lane walking
+// every candidate.
 #include "particle_views.hpp"
 #include "simulation_domain.hpp"
 #include "wall_exclusion.hpp"
@@ -25,8 +27,12 @@ struct DensitySum {
   float delta;  // number density sum_j W_spiky(|x_i - x_j|) [1/m^3]
 };
 
+// Candidates beyond the support (about 85 % of the 27 cells' volume) are rejected on r^2, the
+// force pair's test, before the square root.
 MSSPH_HD void add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, std::uint32_t t) {
-  sum.delta += v.step.smoothing.spiky(norm(x_i - xyz(v.position[t])));
+  const float r2 = squared_norm(x_i - xyz(v.position[t]));
+  if (r2 >= v.step.smoothing.h2) return;
+  sum.delta += v.step.smoothing.spiky(std::sqrt(r2));
 }
 
 // A deformable particle reads the density of its contact layer: its own body's neighbours are not
@@ -34,18 +40,25 @@ MSSPH_HD void add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, s
 // (reads_contact_layer_density) says why; reference: compute_densities.
 MSSPH_HD bool reads_contact_layer_density(const BodyParameters& body) { return body.kind == kDeformable; }
 
-// Lane `lane` of `lanes`' share of particle s's live density sum.
-MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes) {
+// Particle s's live density sum over the candidates that candidates(visit) hands to visit.
+template <class Candidates>
+MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates) {
   const Vec4 p_i = v.position[s];
   const Vec3 x_i = xyz(p_i);
   const std::uint32_t body_i = body_of(p_i);
   const bool contact_layer = reads_contact_layer_density(v.bodies[body_i]);
   DensitySum sum{0.0f};
-  v.grid.for_each_candidate(x_i, lane, lanes, [&](std::uint32_t t) {
+  candidates([&](std::uint32_t t) {
     if (contact_layer && body_of(v.position[t]) == body_i) return;  // its own body: at rest, in density_from
     add_density_pair(sum, v, x_i, t);
   });
   return sum;
+}
+
+// Lane `lane` of `lanes`' share of particle s's live density sum, from the grid.
+MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes) {
+  const Vec3 x_i = xyz(v.position[s]);
+  return density_sum_over(v, s, [&](auto&& visit) { v.grid.for_each_candidate(x_i, lane, lanes, visit); });
 }
 
 // The number density behind particle s's pressure from its live sum: a deformable particle adds its
@@ -163,11 +176,17 @@ MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
 // Boundary particles receive no force: they skip the sum.
 MSSPH_HD bool receives_forces(const ForceParticle& i) { return i.parameters.kind != kBoundary; }
 
-// Lane `lane` of `lanes`' share of particle i's pressure and viscosity sums.
-MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, std::uint32_t lane, std::uint32_t lanes) {
+// Particle i's pressure and viscosity sums over the candidates that candidates(visit) hands to visit.
+template <class Candidates>
+MSSPH_HD ForceSum force_sum_over(const SortedView& v, const ForceParticle& i, Candidates&& candidates) {
   ForceSum sum = zero_force_sum();
-  if (receives_forces(i)) v.grid.for_each_candidate(i.x, lane, lanes, [&](std::uint32_t t) { add_force_pair(sum, i, v, t); });
+  if (receives_forces(i)) candidates([&](std::uint32_t t) { add_force_pair(sum, i, v, t); });
   return sum;
+}
+
+// Lane `lane` of `lanes`' share of particle i's pressure and viscosity sums, from the grid.
+MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, std::uint32_t lane, std::uint32_t lanes) {
+  return force_sum_over(v, i, [&](auto&& visit) { v.grid.for_each_candidate(i.x, lane, lanes, visit); });
 }
 
 // ---- Step 4: integration ----

@@ -4,6 +4,7 @@
 #include "../common/elastic_physics.hpp"
 #include "../common/float_state.hpp"
 #include "../common/fluid_physics.hpp"
+#include "../common/neighbour_list.hpp"
 #include "../common/read_back.hpp"
 #include "util/host_info.hpp"
 #include "util/phase_timer.hpp"
@@ -19,6 +20,8 @@ CpuBackend::CpuBackend(ParticleSetup setup) : setup_(std::move(setup)), scene_(m
   sorted_position_.resize(n);
   sorted_velocity_.resize(n);
   volume_pressure_.resize(n);
+  neighbour_count_.resize(n);
+  neighbour_index_.resize(n * kNeighbourCapacity);
   interaction_force_.assign(n, Vec4{0, 0, 0, 0});
   elastic_force_.assign(n, Vec4{0, 0, 0, 0});
   const std::size_t deformables = scene_.deformable_body.size();
@@ -45,8 +48,13 @@ SortedView CpuBackend::sorted_view() const {
                     scene_.own_rest_number_density.empty() ? nullptr : scene_.own_rest_number_density.data()};
 }
 
+NeighbourLists CpuBackend::neighbour_lists() {
+  return NeighbourLists{kNeighbourCapacity, neighbour_count_.data(), neighbour_index_.data()};
+}
+
 // Counting sort of the particles by cell key (stable: equal keys keep canonical order), then the
-// same cell table and cell-ordered copies as the CUDA backend.
+// same cell table and cell-ordered copies as the CUDA backend, then every particle's neighbour
+// list, which the density and force passes visit instead of the 27 cells.
 void CpuBackend::build_grid() {
   const std::size_t n = setup_.size();
   std::vector<std::uint32_t> key(n);
@@ -64,6 +72,10 @@ void CpuBackend::build_grid() {
     place_in_cell_order(s, sorted_id_.data(), scene_.position.data(), scene_.velocity.data(), scene_.body.data(),
                         sorted_position_.data(), sorted_velocity_.data());
   }
+  const SortedView view = sorted_view();
+  const NeighbourLists lists = neighbour_lists();
+#pragma omp parallel for schedule(static)
+  for (std::uint32_t s = 0; s < count; ++s) record_neighbours(view, lists, s);
 }
 
 DeformableView CpuBackend::deformable_view() {
@@ -88,11 +100,11 @@ void CpuBackend::compute_rotations_and_elastic_forces() {
 // Step 2, densities and pressures (eq. 1 and the equation of state), in cell order.
 void CpuBackend::compute_densities() {
   const SortedView view = sorted_view();
-  const std::size_t n = setup_.size();
+  const NeighbourLists lists = neighbour_lists();
+  const auto n = static_cast<std::uint32_t>(setup_.size());
 #pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < n; ++s) {
-    const auto t = static_cast<std::uint32_t>(s);
-    volume_pressure_[s] = density_from(density_sum(view, t, 0, 1), view, t).volume_pressure;
+  for (std::uint32_t s = 0; s < n; ++s) {
+    volume_pressure_[s] = density_from(density_sum_over(view, s, neighbours_of(view, lists, s)), view, s).volume_pressure;
   }
 }
 
@@ -102,9 +114,12 @@ void CpuBackend::compute_forces_and_advance_particles() {
   const SortedView view = sorted_view();
   const CanonicalState state{scene_.position.data(), scene_.velocity.data(), interaction_force_.data(),
                              rotation_.empty() ? nullptr : elastic_force_.data(), scene_.body.data(), scene_.fixed.data()};
+  const NeighbourLists lists = neighbour_lists();
   const auto n = static_cast<std::uint32_t>(setup_.size());
 #pragma omp parallel for schedule(static)
-  for (std::uint32_t s = 0; s < n; ++s) apply_forces(view, state, s, force_sum(view, load_force_particle(view, s), 0, 1));
+  for (std::uint32_t s = 0; s < n; ++s) {
+    apply_forces(view, state, s, force_sum_over(view, load_force_particle(view, s), neighbours_of(view, lists, s)));
+  }
 }
 
 // Step 4 of rigid bodies: the interaction wrench of their particles, rigid-body dynamics, then
@@ -143,10 +158,11 @@ ForceEvaluation CpuBackend::evaluate_forces() {
   compute_rotations_and_elastic_forces();
   compute_densities();
   const SortedView view = sorted_view();
+  const NeighbourLists lists = neighbour_lists();
   std::vector<ForceSum> sums(setup_.size());
   const auto n = static_cast<std::uint32_t>(setup_.size());
 #pragma omp parallel for schedule(static)
-  for (std::uint32_t s = 0; s < n; ++s) sums[s] = force_sum(view, load_force_particle(view, s), 0, 1);
+  for (std::uint32_t s = 0; s < n; ++s) sums[s] = force_sum_over(view, load_force_particle(view, s), neighbours_of(view, lists, s));
   return pack_force_evaluation(scene_, sorted_id_, volume_pressure_, sums, elastic_force_, rotation_);
 }
 

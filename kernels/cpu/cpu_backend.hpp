@@ -2,6 +2,7 @@
 // The `cpu` backend: the CUDA backend's float32 per-particle functions (kernels/common/) run by
 // OpenMP loops on the host, so a machine without a GPU exercises exactly the kernels' arithmetic.
 #include "../common/float_scene.hpp"
+#include "../common/neighbour_list.hpp"
 #include "sim/backend.hpp"
 
 #include <array>
@@ -33,6 +34,7 @@ class CpuBackend final : public Backend {
   void compute_forces_and_advance_particles();
   void advance_rigid_bodies();
   SortedView sorted_view() const;
+  NeighbourLists neighbour_lists();
   DeformableView deformable_view();
   RigidBody& rigid_of(std::size_t body);
 
@@ -43,6 +45,10 @@ class CpuBackend final : public Backend {
   std::vector<std::uint32_t> sorted_id_;
   std::vector<Vec4> sorted_position_, sorted_velocity_;
   std::vector<VolumePressure> volume_pressure_;
+  // A particle has ~30 neighbours at h = 2 dx (up to ~40 where a fluid meets a wall); a list that
+  // overflows costs only speed (neighbour_list.hpp).
+  static constexpr std::uint32_t kNeighbourCapacity = 64;
+  std::vector<std::uint32_t> neighbour_count_, neighbour_index_;
   // Canonical order.
   std::vector<Vec4> interaction_force_;
   std::vector<Vec4> elastic_force_;  // zero outside deformable bodies

@@ -5,6 +5,7 @@
 // force kernel uses (choose_team_lanes: 1, 2, 4, 8). Checked here on the host, where the same
 // functions run, on random moves next to a wall corner.
 #include "common/wall_exclusion.hpp"
+#include "sorted_particles.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,7 +27,7 @@ constexpr std::uint32_t kFluidBody = 1;  // body 1: fluid, candidates the wall c
 
 // A corner of three walls (the planes x = 0, y = 0, z = 0, two lattice layers each, spacing dx)
 // filled with a jittered fluid lattice, sorted into the kernels' grid (cells of side h = 2 dx) as
-// the cpu backend sorts it (counting sort by cell key, cell_start its prefix sum).
+// the cpu backend sorts it (sort_into_grid).
 class WallCorner {
  public:
   WallCorner(float dx, std::mt19937_64& random) : dx_(dx) {
@@ -44,16 +45,10 @@ class WallCorner {
         }
       }
     }
-    shape_.inverse_cell_size = 1.0f / (2.0f * dx);
-    shape_.bits_x = shape_.bits_y = shape_.bits_z = 4;  // 16 cells of 2 dx: the corner does not wrap
-    cell_start_.assign(std::size_t{shape_.cell_count()} + 1, 0u);
-    std::vector<std::uint32_t> key(particles.size());
-    for (std::size_t p = 0; p < particles.size(); ++p) key[p] = shape_.key_of(kernels::xyz(particles[p]));
-    for (const std::uint32_t k : key) ++cell_start_[k + 1];
-    for (std::size_t k = 1; k < cell_start_.size(); ++k) cell_start_[k] += cell_start_[k - 1];
-    std::vector<std::uint32_t> next(cell_start_.begin(), cell_start_.end() - 1);
-    sorted_position_.resize(particles.size());
-    for (std::size_t p = 0; p < particles.size(); ++p) sorted_position_[next[key[p]]++] = particles[p];
+    kernels::GridShape shape;
+    shape.inverse_cell_size = 1.0f / (2.0f * dx);
+    shape.bits_x = shape.bits_y = shape.bits_z = 4;  // 16 cells of 2 dx: the corner does not wrap
+    sorted_ = sort_into_grid(particles, shape);
     bodies_ = {{kernels::kBoundary, kernels::kNotRigid, 0, 0, 0, 0}, {kernels::kFluid, kernels::kNotRigid, 0, 0, 0, 0}};
   }
 
@@ -63,16 +58,14 @@ class WallCorner {
     kernels::SortedView v{};
     v.step.wall_exclusion_distance = 0.8f * dx_;
     v.bodies = bodies_.data();
-    v.grid = kernels::CellRanges{shape_, cell_start_.data()};
-    v.position = sorted_position_.data();
+    v.grid = sorted_.grid();
+    v.position = sorted_.position.data();
     return v;
   }
 
  private:
   float dx_;
-  kernels::GridShape shape_;
-  std::vector<std::uint32_t> cell_start_;
-  std::vector<Vec4> sorted_position_;
+  SortedParticles sorted_;
   std::vector<kernels::BodyParameters> bodies_;
 };
 
