@@ -112,10 +112,15 @@ struct BondSums {
   Mat3 rest_gradient;
 };
 
-MSSPH_HD BondSums bond_sums(const DeformableView& v, const ElasticParameters& body, std::uint32_t d, Vec3 x_i) {
+// The deformable particles' bond loops are split like the neighbour sums (fluid_physics.hpp):
+// lane `lane` of a team of `lanes` takes bonds lane, lane + lanes, ...; the host runs one lane.
+// Lane `lane`'s share of deformable particle d's bond sums, before L_i^T (corrected_bond_sums).
+MSSPH_HD BondSums bond_sums_share(const DeformableView& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
+  const ElasticParameters& body = v.bodies[v.body_of[d]];
+  const Vec3 x_i = xyz(v.position[body.first_particle + (d - body.first_deformable)]);
   BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
   const Vec4 rest_i = v.rest[d];
-  for (std::uint32_t k = 0; k < v.bond_count[d]; ++k) {
+  for (std::uint32_t k = lane; k < v.bond_count[d]; k += lanes) {
     const std::uint32_t j = v.bond_neighbour[k * v.count + d];  // bond-major: FloatScene::bond_count
     const RestBond bond = rest_bond(v, rest_i, deformable_index(body, j));
     const Vec3 x_ij = xyz(v.position[j]) - x_i;
@@ -124,7 +129,12 @@ MSSPH_HD BondSums bond_sums(const DeformableView& v, const ElasticParameters& bo
     sums.current_gradient = sums.current_gradient + outer(x_ij, weighted_gradient);
     sums.rest_gradient = sums.rest_gradient + outer(bond.offset, weighted_gradient);
   }
-  const Mat3 correction_t = transpose(v.correction[d]);
+  return sums;
+}
+
+// The bond sums of all lanes with L_i^T applied to eq. 4's halves.
+MSSPH_HD BondSums corrected_bond_sums(BondSums sums, const Mat3& correction) {
+  const Mat3 correction_t = transpose(correction);
   sums.current_gradient = sums.current_gradient * correction_t;
   sums.rest_gradient = sums.rest_gradient * correction_t;
   return sums;
@@ -197,18 +207,22 @@ MSSPH_HD Mat3 world_deformation_gradient(const Mat3& rotation, const Mat3& grad_
   return rotation * (identity_mat3() + grad_u);
 }
 
-// Step 1 and the elastic part of step 2 for deformable particle d: R_i, grad u_i (eq. 4), P_i
-// (eq. 5), K_i and F_i.
-MSSPH_HD void rotation_and_stress(const DeformableView& v, std::uint32_t d) {
+// Step 1 and the elastic part of step 2 for deformable particle d, from its bond sums (all lanes'
+// shares added): R_i, grad u_i (eq. 4), P_i (eq. 5), K_i and F_i.
+MSSPH_HD void store_rotation_and_stress(const DeformableView& v, std::uint32_t d, const BondSums& uncorrected) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
-  const std::uint32_t i = body.first_particle + (d - body.first_deformable);
-  const BondSums sums = bond_sums(v, body, d, xyz(v.position[i]));
+  const BondSums sums = corrected_bond_sums(uncorrected, v.correction[d]);
   const Quat q = extract_rotation(sums.moment, v.rotation[d]);
   const Mat3 rotation = rotation_matrix(q);
   const Mat3 grad_u = displacement_gradient(rotation, sums);
   v.rotation[d] = q;
   v.corrected_stress_action[d] = stress_action(v.rest[d].w, rotation, first_piola_kirchhoff(body, grad_u)) * v.correction[d];
   v.deformation[d] = world_deformation_gradient(rotation, grad_u);
+}
+
+// The same in one lane (the host).
+MSSPH_HD void rotation_and_stress(const DeformableView& v, std::uint32_t d) {
+  store_rotation_and_stress(v, d, bond_sums_share(v, d, 0, 1));
 }
 
 // Paper eq. 6, one neighbour's term of the symmetrised elastic force on i:
@@ -242,7 +256,8 @@ MSSPH_HD Vec3 damping_force(float rate, float mass, Vec3 velocity) { return (-ra
 // d_ji = -V0_i L_j g (g = grad W(X_i - X_j), the spiky gradient being odd), eq. 6's
 // K_i d_ij - K_j d_ji is (K_i L_i) (V0_j g) - (K_j L_j) (-V0_i g): the pair function reads the
 // stress actions with their corrections applied once per particle (rotation_and_stress).
-MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) {
+// Lane `lane`'s share: its bonds' terms.
+MSSPH_HD Vec3 elastic_force_share(const DeformableView& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const std::uint32_t i = body.first_particle + (d - body.first_deformable);
   const Vec3 x_i = xyz(v.position[i]);
@@ -250,7 +265,7 @@ MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) {
   const Mat3 f_i = v.deformation[d];
   const Vec4 rest_i = v.rest[d];
   Vec3 force{0, 0, 0};
-  for (std::uint32_t k = 0; k < v.bond_count[d]; ++k) {
+  for (std::uint32_t k = lane; k < v.bond_count[d]; k += lanes) {
     const std::uint32_t j = v.bond_neighbour[k * v.count + d];  // bond-major: FloatScene::bond_count
     const std::uint32_t dj = deformable_index(body, j);
     const RestBond bond = rest_bond(v, rest_i, dj);
@@ -263,8 +278,19 @@ MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) {
       }
     }
   }
+  return force;
+}
+
+// Stores deformable particle d's elastic force from its bonds' terms (all lanes' shares added),
+// with the damping.
+MSSPH_HD void store_elastic_force(const DeformableView& v, std::uint32_t d, Vec3 force) {
+  const ElasticParameters& body = v.bodies[v.body_of[d]];
+  const std::uint32_t i = body.first_particle + (d - body.first_deformable);
   if (body.damping > 0.0f) force += damping_force(body.damping, body.particle_mass, xyz(v.velocity[i]));
   v.elastic_force[i] = make_vec4(force, 0.0f);
 }
+
+// The same in one lane (the host).
+MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) { store_elastic_force(v, d, elastic_force_share(v, d, 0, 1)); }
 
 }  // namespace mssph::kernels

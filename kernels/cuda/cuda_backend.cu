@@ -70,7 +70,8 @@ class CudaBackend final : public Backend {
   StepGraph timed_step_;  // the step with the phase events: ~10 us more on an H100 (Backend::set_phase_timing)
   bool phase_timing_ = false;
   bool last_step_timed_ = false;
-  unsigned team_lanes_ = 1;  // lanes per particle in the neighbour sums (choose_team_lanes)
+  unsigned team_lanes_ = 1;             // lanes per particle in the neighbour sums (choose_team_lanes)
+  unsigned deformable_team_lanes_ = 1;  // lanes per deformable particle in its bond sums
   double time_ = 0.0;
 };
 
@@ -82,7 +83,8 @@ CudaBackend::CudaBackend(ParticleSetup setup)
       state_(allocate_device_state(scene_, chunks_, scan_temp_bytes(scene_.grid.cell_count()), device_name_)),
       readback_(scene_, setup_.bodies, chunks_),
       external_wrench_(scene_.rigid_bodies.size()),
-      team_lanes_(choose_team_lanes(setup_.size(), resident_threads())) {
+      team_lanes_(choose_team_lanes(setup_.size(), resident_threads())),
+      deformable_team_lanes_(choose_team_lanes(scene_.deformable_body.size(), resident_threads())) {
   cuda_check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "create stream");
   for (cudaEvent_t& e : events_) cuda_check(cudaEventCreate(&e), "create event");
 
@@ -124,7 +126,7 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
   mark(kNeighbours);
   launch_neighbour_grid(state_, scene_.grid, stream);
   mark(kRotations);
-  launch_elasticity(scene_, state_, stream);
+  launch_elasticity(scene_, state_, deformable_team_lanes_, stream);
   mark(kDensities);
   launch_densities(scene_, state_, team_lanes_, stream);
   mark(kForces);
@@ -139,7 +141,7 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
 // order instead of being integrated.
 ForceEvaluation CudaBackend::evaluate_forces() {
   launch_neighbour_grid(state_, scene_.grid, stream_);
-  launch_elasticity(scene_, state_, stream_);
+  launch_elasticity(scene_, state_, deformable_team_lanes_, stream_);
   launch_densities(scene_, state_, team_lanes_, stream_);
   return probe_forces(scene_, state_, stream_);
 }

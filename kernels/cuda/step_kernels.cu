@@ -8,16 +8,6 @@
 namespace mssph::kernels {
 namespace {
 
-__global__ void rotation_stress_kernel(DeformableView view) {
-  const std::uint32_t d = blockIdx.x * blockDim.x + threadIdx.x;
-  if (d < view.count) rotation_and_stress(view, d);
-}
-
-__global__ void elastic_force_kernel(DeformableView view) {
-  const std::uint32_t d = blockIdx.x * blockDim.x + threadIdx.x;
-  if (d < view.count) elastic_force(view, d);
-}
-
 // The neighbour sums give each particle a team of Lanes consecutive lanes of a warp (1 to 8,
 // see choose_team_lanes): the lanes split its candidates (CellRanges::for_each_candidate) and add
 // their partial sums by shuffles in a fixed order, so a sum's order depends only on Lanes. Every
@@ -36,6 +26,42 @@ __device__ std::uint32_t team_sum(std::uint32_t x) {
 template <unsigned Lanes>
 __device__ Vec3 team_sum(Vec3 v) {
   return {team_sum<Lanes>(v.x), team_sum<Lanes>(v.y), team_sum<Lanes>(v.z)};
+}
+
+template <unsigned Lanes>
+__device__ Mat3 team_sum(const Mat3& a) {
+  Mat3 sum;
+  for (int k = 0; k < 9; ++k) sum.m[k] = team_sum<Lanes>(a.m[k]);
+  return sum;
+}
+template <unsigned Lanes>
+__device__ BondSums team_sum(const BondSums& s) {
+  return {team_sum<Lanes>(s.moment), team_sum<Lanes>(s.current_gradient), team_sum<Lanes>(s.rest_gradient)};
+}
+
+// The deformable passes split each particle's bonds over a team the same way.
+template <unsigned Lanes>
+__global__ void rotation_stress_kernel(DeformableView view) {
+  const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
+  const std::uint32_t d = thread / Lanes;
+  const unsigned lane = thread % Lanes;
+  const bool active = d < view.count;
+  BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
+  if (active) sums = bond_sums_share(view, d, lane, Lanes);
+  sums = team_sum<Lanes>(sums);
+  if (active && lane == 0) store_rotation_and_stress(view, d, sums);
+}
+
+template <unsigned Lanes>
+__global__ void elastic_force_kernel(DeformableView view) {
+  const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
+  const std::uint32_t d = thread / Lanes;
+  const unsigned lane = thread % Lanes;
+  const bool active = d < view.count;
+  Vec3 force{0, 0, 0};
+  if (active) force = elastic_force_share(view, d, lane, Lanes);
+  force = team_sum<Lanes>(force);
+  if (active && lane == 0) store_elastic_force(view, d, force);
 }
 
 template <unsigned Lanes>
@@ -96,11 +122,14 @@ unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads) 
   return lanes;
 }
 
-void launch_elasticity(const FloatScene& scene, DeviceState& state, cudaStream_t stream) {
+void launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream) {
   const DeformableView view = deformable_view(scene, state);
   if (view.count == 0) return;
-  rotation_stress_kernel<<<blocks_for(view.count), kBlock, 0, stream>>>(view);
-  elastic_force_kernel<<<blocks_for(view.count), kBlock, 0, stream>>>(view);
+  with_team_lanes(team_lanes, [&](auto lanes) {
+    constexpr unsigned L = decltype(lanes)::value;
+    rotation_stress_kernel<L><<<blocks_for(std::size_t{view.count} * L), kBlock, 0, stream>>>(view);
+    elastic_force_kernel<L><<<blocks_for(std::size_t{view.count} * L), kBlock, 0, stream>>>(view);
+  });
 }
 
 void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream) {

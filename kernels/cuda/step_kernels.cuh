@@ -8,13 +8,13 @@
 
 namespace mssph::kernels {
 
-// Lanes per particle of the density and force sums: the most (up to 8) that keep
-// particles * lanes within two waves of resident threads.
+// Lanes per particle of the density and force sums, and per deformable particle of the bond
+// sums: the most (up to 8) that keep particles * lanes within two waves of resident threads.
 unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads);
 
 // Rotations and stresses of every deformable particle, then their elastic forces (nothing
 // without deformable bodies).
-void launch_elasticity(const FloatScene& scene, DeviceState& state, cudaStream_t stream);
+void launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream);
 // Volume and pressure of every sorted particle.
 void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream);
 // Pressure, viscosity and interaction forces of every sorted particle, integrated (leap-frog).

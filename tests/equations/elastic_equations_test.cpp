@@ -156,8 +156,10 @@ TEST(ElasticEquationTwins, RestBondFromTheRestState) {
   }
 }
 
-// Step 1's moment matrix and eq. 4: kernels::bond_sums gathers A_i and eq. 4's two halves in one
-// pass; reference::moment_matrix and reference::displacement_gradient sum per bond.
+// Step 1's moment matrix and eq. 4: kernels::bond_sums_share gathers A_i and eq. 4's two halves
+// in one pass; reference::moment_matrix and reference::displacement_gradient sum per bond. One
+// lane takes every bond (the host); a team of 3 lanes (the GPU uses 1 to 8) splits them, and
+// their shares added must be the same sums.
 TEST(ElasticEquationTwins, MomentMatrixAndDisplacementGradient) {
   TwinDraws draws("ElasticEquationTwins.MomentMatrixAndDisplacementGradient");
   TwinComparison moment("moment matrix A_i (step 1)");
@@ -165,10 +167,18 @@ TEST(ElasticEquationTwins, MomentMatrixAndDisplacementGradient) {
   for (int k = 0; k < kDraws; ++k) {
     const Eigen::Matrix3d rotation = draws.rotation();
     const Neighbourhood n = draw_neighbourhood(draws, rotation);
-    const kernels::BondSums sums = kernels::bond_sums(n.view(), n.body, 0, kernels::xyz(n.position[0]));
-    moment.add(to_double(sums.moment), reference::moment_matrix(n.rest, n.positions, 0), n.moment_scale);
-    gradient.add(to_double(kernels::displacement_gradient(to_float(rotation), sums)),
-                 reference::displacement_gradient(rotation, n.rest, n.positions, 0), n.gradient_scale);
+    for (const std::uint32_t lanes : {1u, 3u}) {
+      kernels::BondSums team{kernels::zero_mat3(), kernels::zero_mat3(), kernels::zero_mat3()};
+      for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+        const kernels::BondSums share = kernels::bond_sums_share(n.view(), 0, lane, lanes);
+        team = {team.moment + share.moment, team.current_gradient + share.current_gradient,
+                team.rest_gradient + share.rest_gradient};
+      }
+      const kernels::BondSums sums = kernels::corrected_bond_sums(team, n.correction[0]);
+      moment.add(to_double(sums.moment), reference::moment_matrix(n.rest, n.positions, 0), n.moment_scale);
+      gradient.add(to_double(kernels::displacement_gradient(to_float(rotation), sums)),
+                   reference::displacement_gradient(rotation, n.rest, n.positions, 0), n.gradient_scale);
+    }
   }
 }
 
