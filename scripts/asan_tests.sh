@@ -21,6 +21,8 @@ programs=(
   one_step_agreement_test        # tests/backends: one step, cpu vs reference
   backend_agreement_test         # tests/backends: the three sphere drops, 2000 steps, cpu vs reference
   read_back_test                 # tests/backends
+  neighbour_list_test            # tests/backends: the host's neighbour lists vs the grid walk
+  wall_check_lanes_test          # tests/backends: the wall check split over a team of lanes
   reference_unit_tests           # tests/reference: kernels, neighbour search
   rigid_physics_test             # tests/reference
   fluid_physics_test             # tests/reference (its two settling cases left out, below)
