@@ -151,16 +151,19 @@ struct ForceSum {
 
 MSSPH_HD ForceSum zero_force_sum() { return {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, 0}; }
 
-MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const SortedView& v, std::uint32_t t) {
-  if (t == i.s) return;
+// Adds candidate t's pressure and viscosity forces on i; returns whether t is a boundary
+// neighbour (counted in boundary_neighbours).
+MSSPH_HD bool add_force_pair(ForceSum& sum, const ForceParticle& i, const SortedView& v, std::uint32_t t) {
+  if (t == i.s) return false;
   const Vec4 p_j = v.position[t];
   const Vec3 r_ij = i.x - xyz(p_j);
   const float r2 = squared_norm(r_ij);
-  if (r2 >= v.step.smoothing.h2) return;
+  if (r2 >= v.step.smoothing.h2) return false;
   const std::uint32_t body_j = body_of(p_j);
   const bool same_body = body_j == i.body;
-  if (v.bodies[body_j].kind == kBoundary) ++sum.boundary_neighbours;
-  if (same_body && i.parameters.kind != kFluid) return;  // rigid, deformable: no pressure among themselves
+  const bool boundary = v.bodies[body_j].kind == kBoundary;
+  if (boundary) ++sum.boundary_neighbours;
+  if (same_body && i.parameters.kind != kFluid) return boundary;  // rigid, deformable: no pressure among themselves
   const VolumePressure vp_j = v.volume_pressure[t];
   const Vec3 u_j = xyz(v.velocity[t]);
   const float r = std::sqrt(r2);
@@ -171,17 +174,28 @@ MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
   sum.pressure += pressure;
   sum.viscosity += viscosity;
   if (!same_body) sum.interaction += interaction_force(pressure, viscosity);
+  return boundary;
 }
 
 // Boundary particles receive no force: they skip the sum.
 MSSPH_HD bool receives_forces(const ForceParticle& i) { return i.parameters.kind != kBoundary; }
 
-// Particle i's pressure and viscosity sums over the candidates that candidates(visit) hands to visit.
+// Particle i's pressure and viscosity sums over the candidates that candidates(visit) hands to
+// visit; met_boundary(t) is called for every boundary neighbour t among them.
+template <class Candidates, class MetBoundary>
+MSSPH_HD ForceSum force_sum_over(const SortedView& v, const ForceParticle& i, Candidates&& candidates,
+                                 MetBoundary&& met_boundary) {
+  ForceSum sum = zero_force_sum();
+  if (receives_forces(i)) {
+    candidates([&](std::uint32_t t) {
+      if (add_force_pair(sum, i, v, t)) met_boundary(t);
+    });
+  }
+  return sum;
+}
 template <class Candidates>
 MSSPH_HD ForceSum force_sum_over(const SortedView& v, const ForceParticle& i, Candidates&& candidates) {
-  ForceSum sum = zero_force_sum();
-  if (receives_forces(i)) candidates([&](std::uint32_t t) { add_force_pair(sum, i, v, t); });
-  return sum;
+  return force_sum_over(v, i, candidates, [](std::uint32_t) {});
 }
 
 // Lane `lane` of `lanes`' share of particle i's pressure and viscosity sums, from the grid.
@@ -236,6 +250,15 @@ MSSPH_HD Advance advance_particle(const SortedView& v, const CanonicalState& c, 
 // its share of the candidates (touches_wall). The move is rejected iff some lane's share is.
 MSSPH_HD bool wall_check_share(const SortedView& v, const Advance& a, std::uint32_t lane, std::uint32_t lanes) {
   return a.may_hit_wall && touches_wall(v, a.previous, xyz(a.position), lane, lanes);
+}
+
+// The same share from the boundary neighbours the lane met in its force sum, unless some lane of
+// the team met more than it holds (RecentBoundaryNeighbours): the same decision, without the walk.
+MSSPH_HD bool wall_check_share(const SortedView& v, const Advance& a, std::uint32_t lane, std::uint32_t lanes,
+                               const RecentBoundaryNeighbours& met, bool some_lane_overflowed) {
+  if (!a.may_hit_wall) return false;
+  if (some_lane_overflowed) return touches_wall(v, a.previous, xyz(a.position), lane, lanes);
+  return touches_recent_wall(v, met, a.previous, xyz(a.position));
 }
 
 // The rest of steps 3 and 4, in one lane, given whether the wall check rejected the move:

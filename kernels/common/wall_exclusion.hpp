@@ -48,6 +48,37 @@ MSSPH_HD bool touches_wall(const SortedView& v, Vec3 previous, Vec3 moved, std::
   return touches;
 }
 
+// The boundary neighbours one GPU lane met in its share of the force sum (add_force_pair), the last
+// kCapacity of them in registers. A boundary particle that rejects the move ends within d_wall of
+// the moved particle, so it was within d_wall plus the move, less than h, of it at the step's start
+// (ForceSum::boundary_neighbours says why the move stays below h - d_wall): a neighbour that some
+// lane of the team met. When no lane met more than it holds, each lane tests what it holds instead
+// of its share of the 27 cells around the new position, and the team's decision is the same.
+struct RecentBoundaryNeighbours {
+  static constexpr std::uint32_t kCapacity = 4;
+  std::uint32_t count = 0;  // met; more than kCapacity: the oldest are gone
+  std::uint32_t t0 = 0, t1 = 0, t2 = 0, t3 = 0;
+
+  MSSPH_HD void remember(std::uint32_t t) {
+    t3 = t2;
+    t2 = t1;
+    t1 = t0;
+    t0 = t;
+    ++count;
+  }
+  MSSPH_HD bool overflowed() const { return count > kCapacity; }
+};
+
+// Whether one of the boundary neighbours held (none overflowed) rejects the move.
+MSSPH_HD bool touches_recent_wall(const SortedView& v, const RecentBoundaryNeighbours& met, Vec3 previous, Vec3 moved) {
+  const std::uint32_t held[RecentBoundaryNeighbours::kCapacity] = {met.t0, met.t1, met.t2, met.t3};
+  bool touches = false;
+  for (std::uint32_t k = 0; k < RecentBoundaryNeighbours::kCapacity; ++k) {
+    if (k < met.count) touches = touches || boundary_approach(v, previous, moved, held[k]).rejects_move;
+  }
+  return touches;
+}
+
 // Applies the rejection of the move from `previous` to `position` (with `velocity`): if some
 // boundary particle rejects it, the particle returns to `previous` and loses its velocity
 // component towards each such boundary particle, in the candidates' order. Returns whether the

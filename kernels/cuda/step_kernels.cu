@@ -83,18 +83,35 @@ __global__ void forces_kernel(SortedView view, CanonicalState state) {
   const unsigned lane = thread % Lanes;
   const bool active = s < view.step.particle_count;
   ForceSum sum = zero_force_sum();
-  if (active) sum = force_sum(view, load_force_particle(view, s), lane, Lanes);
+  // A team's lanes remember the boundary neighbours they meet, for the wall check below; one lane
+  // alone (large scenes) meets a wall particle's ~9 and would only walk again, so it does not (the
+  // extra registers cost it 14 % at 1M particles on an H100).
+  constexpr bool kRemember = Lanes > 1;
+  RecentBoundaryNeighbours met;
+  if (active) {
+    const ForceParticle particle = load_force_particle(view, s);
+    if constexpr (kRemember) {
+      sum = force_sum_over(
+          view, particle, [&](auto&& visit) { view.grid.for_each_candidate(particle.x, lane, Lanes, visit); },
+          [&](std::uint32_t t) { met.remember(t); });
+    } else {
+      sum = force_sum(view, particle, lane, Lanes);
+    }
+  }
   sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction),
          team_sum<Lanes>(sum.boundary_neighbours)};
+  const bool some_lane_overflowed = kRemember && team_sum<Lanes>(met.overflowed() ? 1u : 0u) > 0;
   // apply_forces split over the team: every lane advances the particle from the same team sum
-  // (same bits), tests its share of the candidates for a wall, and the team counts the lanes
-  // that found one; lane 0 then rejects the move if any did (its one-lane velocity projection,
-  // rare) and stores.
+  // (same bits), tests the boundary neighbours it met (or its share of the candidates) for a
+  // wall, and the team counts the lanes that found one; lane 0 then rejects the move if any did
+  // (its one-lane velocity projection, rare) and stores.
   Advance advance{};
   std::uint32_t lanes_touching_wall = 0;
   if (active) {
     advance = advance_particle(view, state, s, sum);
-    lanes_touching_wall = wall_check_share(view, advance, lane, Lanes) ? 1u : 0u;
+    const bool touches = kRemember ? wall_check_share(view, advance, lane, Lanes, met, some_lane_overflowed)
+                                   : wall_check_share(view, advance, lane, Lanes);
+    lanes_touching_wall = touches ? 1u : 0u;
   }
   lanes_touching_wall = team_sum<Lanes>(lanes_touching_wall);
   if (active && lane == 0) store_advance(view, state, sum, advance, lanes_touching_wall > 0);

@@ -4,6 +4,7 @@
 // right only if that OR is exactly keep_out_of_walls' own decision, for every team size the CUDA
 // force kernel uses (choose_team_lanes: 1, 2, 4, 8). Checked here on the host, where the same
 // functions run, on random moves next to a wall corner.
+#include "common/fluid_physics.hpp"
 #include "common/wall_exclusion.hpp"
 #include "sorted_particles.hpp"
 
@@ -49,6 +50,8 @@ class WallCorner {
     shape.inverse_cell_size = 1.0f / (2.0f * dx);
     shape.bits_x = shape.bits_y = shape.bits_z = 4;  // 16 cells of 2 dx: the corner does not wrap
     sorted_ = sort_into_grid(particles, shape);
+    velocity_.assign(particles.size(), Vec4{0, 0, 0, 0});
+    volume_pressure_.assign(particles.size(), kernels::VolumePressure{dx * dx * dx, 0.0f});
     bodies_ = {{kernels::kBoundary, kernels::kNotRigid, 0, 0, 0, 0}, {kernels::kFluid, kernels::kNotRigid, 0, 0, 0, 0}};
   }
 
@@ -57,6 +60,9 @@ class WallCorner {
   kernels::SortedView view() const {
     kernels::SortedView v{};
     v.step.wall_exclusion_distance = 0.8f * dx_;
+    v.step.smoothing = kernels::SmoothingKernels::for_support(2.0 * dx_);  // for the force sums' walk
+    v.velocity = velocity_.data();
+    v.volume_pressure = volume_pressure_.data();
     v.bodies = bodies_.data();
     v.grid = sorted_.grid();
     v.position = sorted_.position.data();
@@ -66,6 +72,8 @@ class WallCorner {
  private:
   float dx_;
   SortedParticles sorted_;
+  std::vector<Vec4> velocity_;
+  std::vector<kernels::VolumePressure> volume_pressure_;
   std::vector<kernels::BodyParameters> bodies_;
 };
 
@@ -119,6 +127,57 @@ TEST(WallCheckLanes, AnyLaneTouchingAWallIsExactlyARejectedMove) {
   // The lanes share the candidates: a hit is often found by some lanes and not by others (were
   // every lane to test every candidate, all lanes would agree and the split would save nothing).
   EXPECT_GT(split_hits, rejected_moves);
+}
+
+// The GPU's force kernel tests, instead of its share of the 27 cells around the new position, the
+// boundary neighbours each lane met in its share of the force sum (RecentBoundaryNeighbours),
+// unless some lane met more than it holds. The team's decision must again be exactly
+// keep_out_of_walls'. Moves up to 0.6 dx, below h - d_wall = 1.2 dx (ForceSum::boundary_neighbours).
+TEST(WallCheckLanes, TheBoundaryNeighboursMetInTheForceSumDecideAsTheWalkDoes) {
+  std::mt19937_64 random(20111024);
+  const std::uint32_t team_sizes[] = {1, 2, 4, 8};
+  int rejected_moves = 0, decided_from_held = 0, decided_by_walk = 0;
+  for (int c = 0; c < 20; ++c) {
+    const float dx = std::uniform_real_distribution<float>(0.01f, 0.05f)(random);
+    const WallCorner corner(dx, random);
+    const kernels::SortedView v = corner.view();
+    for (int m = 0; m < 100; ++m) {
+      std::uniform_real_distribution<float> near_wall(-0.2f * dx, 1.5f * dx);
+      const Vec3 previous{near_wall(random), near_wall(random), near_wall(random)};
+      Vec4 position = kernels::make_vec4(previous + random_vector(random, 0.35f * dx), 0.0f);
+      Vec4 velocity = kernels::make_vec4(random_vector(random, 1.0f), 0.0f);
+      kernels::Advance advance{0, true, false, previous, position, velocity};
+      const bool rejected = kernels::keep_out_of_walls(v, previous, position, velocity);
+      rejected_moves += rejected ? 1 : 0;
+      // A fluid particle that is not among the sorted ones (its slot matches none).
+      const kernels::ForceParticle particle{0xffffffffu, kFluidBody, v.bodies[kFluidBody], previous, {0, 0, 0}, {0, 0}};
+      for (const std::uint32_t lanes : team_sizes) {
+        std::vector<kernels::RecentBoundaryNeighbours> met(lanes);
+        std::uint32_t boundary_neighbours = 0;
+        bool some_lane_overflowed = false;
+        for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+          const kernels::ForceSum share = kernels::force_sum_over(
+              v, particle, [&](auto&& visit) { v.grid.for_each_candidate(previous, lane, lanes, visit); },
+              [&](std::uint32_t t) { met[lane].remember(t); });
+          boundary_neighbours += share.boundary_neighbours;
+          some_lane_overflowed = some_lane_overflowed || met[lane].overflowed();
+        }
+        advance.may_hit_wall = boundary_neighbours > 0;
+        bool team_rejects = false;
+        for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+          team_rejects = kernels::wall_check_share(v, advance, lane, lanes, met[lane], some_lane_overflowed) || team_rejects;
+        }
+        EXPECT_EQ(team_rejects, rejected) << "dx " << dx << ", configuration " << c << ", move " << m << ", team of "
+                                          << lanes << " lanes, " << (some_lane_overflowed ? "walked" : "held");
+        (some_lane_overflowed ? decided_by_walk : decided_from_held) += 1;
+      }
+    }
+  }
+  std::cout << rejected_moves << " rejected moves of 2000; decided from the held neighbours " << decided_from_held
+            << " times, by the walk " << decided_by_walk << " times\n";
+  EXPECT_GT(rejected_moves, 200);
+  EXPECT_GT(decided_from_held, 1000);  // both paths must be common, or the check says little
+  EXPECT_GT(decided_by_walk, 500);
 }
 
 }  // namespace
