@@ -13,6 +13,17 @@ namespace {
 // their partial sums by shuffles in a fixed order, so a sum's order depends only on Lanes. Every
 // lane ends with the same bits: at each xor stage the two partners add the same two values, in
 // swapped order, and float addition is commutative.
+// This thread's seat: the particle (or deformable particle) its team serves, and its lane.
+struct TeamSeat {
+  std::uint32_t member;
+  std::uint32_t lane;
+};
+template <unsigned Lanes>
+__device__ TeamSeat team_seat() {
+  const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
+  return {thread / Lanes, thread % Lanes};
+}
+
 template <unsigned Lanes>
 __device__ float team_sum(float x) {
   for (unsigned offset = 1; offset < Lanes; offset *= 2) x += __shfl_xor_sync(0xffffffffu, x, offset);
@@ -42,9 +53,8 @@ __device__ BondSums team_sum(const BondSums& s) {
 // The deformable passes split each particle's bonds over a team the same way.
 template <unsigned Lanes>
 __global__ void rotation_stress_kernel(DeformableView view) {
-  const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
-  const std::uint32_t d = thread / Lanes;
-  const unsigned lane = thread % Lanes;
+  const TeamSeat seat = team_seat<Lanes>();
+  const std::uint32_t d = seat.member, lane = seat.lane;
   const bool active = d < view.count;
   BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
   if (active) sums = bond_sums_share(view, d, lane, Lanes);
@@ -54,9 +64,8 @@ __global__ void rotation_stress_kernel(DeformableView view) {
 
 template <unsigned Lanes>
 __global__ void elastic_force_kernel(DeformableView view) {
-  const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
-  const std::uint32_t d = thread / Lanes;
-  const unsigned lane = thread % Lanes;
+  const TeamSeat seat = team_seat<Lanes>();
+  const std::uint32_t d = seat.member, lane = seat.lane;
   const bool active = d < view.count;
   Vec3 force{0, 0, 0};
   if (active) force = elastic_force_share(view, d, lane, Lanes);
@@ -66,9 +75,8 @@ __global__ void elastic_force_kernel(DeformableView view) {
 
 template <unsigned Lanes>
 __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure) {
-  const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
-  const std::uint32_t s = thread / Lanes;
-  const unsigned lane = thread % Lanes;
+  const TeamSeat seat = team_seat<Lanes>();
+  const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
   DensitySum sum{0.0f};
   if (active) sum = density_sum(view, s, lane, Lanes);
@@ -78,9 +86,8 @@ __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure)
 
 template <unsigned Lanes>
 __global__ void forces_kernel(SortedView view, CanonicalState state) {
-  const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
-  const std::uint32_t s = thread / Lanes;
-  const unsigned lane = thread % Lanes;
+  const TeamSeat seat = team_seat<Lanes>();
+  const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
   ForceSum sum = zero_force_sum();
   // A team's lanes remember the boundary neighbours they meet, for the wall check below; one lane
