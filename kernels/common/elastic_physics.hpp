@@ -79,6 +79,10 @@ MSSPH_HD RestBond rest_bond(const DeformableView& v, Vec4 rest_i, std::uint32_t 
 MSSPH_HD std::uint32_t deformable_index(const ElasticParameters& body, std::uint32_t j) {
   return body.first_deformable + (j - body.first_particle);
 }
+// Canonical index of deformable particle d of `body` (deformable_index's inverse).
+MSSPH_HD std::uint32_t particle_index(const ElasticParameters& body, std::uint32_t d) {
+  return body.first_particle + (d - body.first_deformable);
+}
 
 // The rotational part of A by the iterative method of Mueller et al. 2016 ("A robust method to
 // extract the rotational part of deformations"): rotate q by omega = sum_c r_c x a_c /
@@ -117,7 +121,7 @@ struct BondSums {
 // Lane `lane`'s share of deformable particle d's bond sums, before L_i^T (corrected_bond_sums).
 MSSPH_HD BondSums bond_sums_share(const DeformableView& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
-  const Vec3 x_i = xyz(v.position[body.first_particle + (d - body.first_deformable)]);
+  const Vec3 x_i = xyz(v.position[particle_index(body, d)]);
   BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
   const Vec4 rest_i = v.rest[d];
   for (std::uint32_t k = lane; k < v.bond_count[d]; k += lanes) {
@@ -259,7 +263,7 @@ MSSPH_HD Vec3 damping_force(float rate, float mass, Vec3 velocity) { return (-ra
 // Lane `lane`'s share: its bonds' terms.
 MSSPH_HD Vec3 elastic_force_share(const DeformableView& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
-  const std::uint32_t i = body.first_particle + (d - body.first_deformable);
+  const std::uint32_t i = particle_index(body, d);
   const Vec3 x_i = xyz(v.position[i]);
   const Mat3 k_i = v.corrected_stress_action[d];
   const Mat3 f_i = v.deformation[d];
@@ -285,7 +289,7 @@ MSSPH_HD Vec3 elastic_force_share(const DeformableView& v, std::uint32_t d, std:
 // with the damping.
 MSSPH_HD void store_elastic_force(const DeformableView& v, std::uint32_t d, Vec3 force) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
-  const std::uint32_t i = body.first_particle + (d - body.first_deformable);
+  const std::uint32_t i = particle_index(body, d);
   if (body.damping > 0.0f) force += damping_force(body.damping, body.particle_mass, xyz(v.velocity[i]));
   v.elastic_force[i] = make_vec4(force, 0.0f);
 }

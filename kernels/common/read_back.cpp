@@ -36,7 +36,7 @@ ForceEvaluation pack_force_evaluation(const FloatScene& scene, const std::vector
   for (std::uint32_t d = 0; d < rotation.size(); ++d) {
     const ElasticParameters& body = scene.elastic_bodies[scene.deformable_body[d]];
     const Mat3 r = rotation_matrix(rotation[d]);
-    Eigen::Matrix3d& out_r = out.rotation[body.first_particle + (d - body.first_deformable)];
+    Eigen::Matrix3d& out_r = out.rotation[particle_index(body, d)];
     for (int k = 0; k < 9; ++k) out_r(k / 3, k % 3) = r.m[k];
   }
   return out;

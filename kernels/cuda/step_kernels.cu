@@ -116,6 +116,9 @@ __global__ void forces_kernel(SortedView view, CanonicalState state) {
   std::uint32_t lanes_touching_wall = 0;
   if (active) {
     advance = advance_particle(view, state, s, sum);
+    // One lane calls the plain walk: passing it an empty `met` with the walk forced compiles to
+    // other code for the 1M-particle kernel (checked in its PTX), which the wall-check
+    // measurements did not cover.
     const bool touches = kRemember ? wall_check_share(view, advance, lane, Lanes, met, some_lane_overflowed)
                                    : wall_check_share(view, advance, lane, Lanes);
     lanes_touching_wall = touches ? 1u : 0u;
