@@ -122,7 +122,7 @@ RawRecording decode(const std::string& bytes) {
   if (bytes.size() < 1 + sizeof n) throw std::runtime_error("reading an HDF5 recording: short reply");
   std::memcpy(&n, bytes.data() + 1, sizeof n);
   RawRecording out;
-  if (n > kMaxRecordingSamples || bytes.size() != 1 + sizeof n + n * 8 * sizeof(double)) {
+  if (n > kMaxRecordingSamples || bytes.size() != 1 + sizeof n + n * (sizeof(double) + sizeof(out.pose[0]))) {
     throw std::runtime_error("reading an HDF5 recording: malformed reply");
   }
   out.row_word = "/device row";
@@ -201,18 +201,14 @@ RawRecording read_hdf5_recording(const std::string& path) {
     throw std::runtime_error("reading " + path + ": the reading process failed (exit status " +
                              std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
   }
+  const auto tag = static_cast<Reply>(reply[0]);
+  if (tag == Reply::recording) return decode(reply);  // decoded from the reply itself, not a copy
   const std::string message = reply.substr(1);
-  switch (static_cast<Reply>(reply[0])) {
-    case Reply::recording:
-      return decode(reply);
-    case Reply::input_error:
-      throw InputError(message);
-    case Reply::hdf5_error:
-      // HDF5 opened the file but could not follow its structure (a cut or overwritten file), or
-      // the system failed to read it: either way the input is unusable, not mssph at fault.
-      throw InputError(path + ": cannot read the HDF5 device recording, damaged or unreadable (" + message + ")");
-    case Reply::other_error:
-      break;
+  if (tag == Reply::input_error) throw InputError(message);
+  if (tag == Reply::hdf5_error) {
+    // HDF5 opened the file but could not follow its structure (a cut or overwritten file), or
+    // the system failed to read it: either way the input is unusable, not mssph at fault.
+    throw InputError(path + ": cannot read the HDF5 device recording, damaged or unreadable (" + message + ")");
   }
   throw std::runtime_error(message);
 }
