@@ -63,9 +63,9 @@ left_out=(
   'Backends/Restart\.[A-Za-z]+/(cpu|reference|cuda)'
 )
 
-# ctest's -E replaces the preset's name filter, so it repeats it: the placeholder tests of the
-# programs not built here (NAME_NOT_BUILT). A name ends at a space: a parameterised test's name goes
-# on with "  # GetParam() = ...".
+# ctest's -E replaces the preset's name filter, so it repeats it: the <program>_NOT_BUILT tests
+# that CMake registers for the programs not built here. A name ends at a space: a parameterised
+# test's name goes on with "  # GetParam() = ...".
 exclude="_NOT_BUILT\$|^($(IFS='|'; echo "${left_out[*]}"))( |\$)"
 
 cmake --preset asan-ubsan
