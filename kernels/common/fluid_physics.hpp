@@ -285,11 +285,10 @@ MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, std::ui
 
 // ---- The grid's last stage: particles in cell order ----
 
-// Copies sorted particle s's position (with its body index) and velocity into cell order.
-MSSPH_HD void place_in_cell_order(std::uint32_t s, const std::uint32_t* sorted_id, const Vec4* position,
-                                  const Vec4* velocity, const std::uint32_t* body, Vec4* sorted_position,
-                                  Vec4* sorted_velocity) {
-  const std::uint32_t i = sorted_id[s];
+// Copies canonical particle i's position (with its body index) and velocity into cell order, as
+// sorted particle s.
+MSSPH_HD void place_in_cell_order(std::uint32_t s, std::uint32_t i, const Vec4* position, const Vec4* velocity,
+                                  const std::uint32_t* body, Vec4* sorted_position, Vec4* sorted_velocity) {
   sorted_position[s] = make_vec4(xyz(position[i]), index_as_float_bits(body[i]));
   sorted_velocity[s] = velocity[i];
 }

@@ -69,7 +69,7 @@ void CpuBackend::build_grid() {
   const auto count = static_cast<std::uint32_t>(n);
 #pragma omp parallel for schedule(static)
   for (std::uint32_t s = 0; s < count; ++s) {
-    place_in_cell_order(s, sorted_id_.data(), scene_.position.data(), scene_.velocity.data(), scene_.body.data(),
+    place_in_cell_order(s, sorted_id_[s], scene_.position.data(), scene_.velocity.data(), scene_.body.data(),
                         sorted_position_.data(), sorted_velocity_.data());
   }
   const SortedView view = sorted_view();

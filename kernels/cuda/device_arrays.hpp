@@ -40,7 +40,7 @@ struct DeviceArrays {
   Array<std::uint32_t> body;
   Array<std::uint8_t> fixed;
   // The neighbour grid and the cell-ordered copies.
-  Array<std::uint32_t> keys, sorted_id, cell_count, cell_start;
+  Array<std::uint32_t> keys, unordered_id, sorted_id, cell_count, cell_start;
   Array<Vec4> sorted_position, sorted_velocity;
   Array<VolumePressure> volume_pressure;
   Array<unsigned char> scan_storage;  // CUB's temporary storage for the cell-table scan
@@ -95,6 +95,7 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   visit("body", a.body, copy_of(scene.body));
   visit("fixed", a.fixed, copy_of(scene.fixed));
   visit("keys", a.keys, Uninitialised{n});
+  visit("unordered_id", a.unordered_id, Uninitialised{n});  // a cell's particles in the order they took its slots
   visit("sorted_id", a.sorted_id, Uninitialised{n});
   // Zero at the start; the slot kernel takes every count back to zero for the next step.
   visit("cell_count", a.cell_count, Filled<std::uint32_t>{cell_table, 0u});
