@@ -1,6 +1,6 @@
 #include "body_readback.cuh"
 
-#include "thread_blocks.cuh"
+#include "chunk_particles.cuh"
 
 #include <cub/cub.cuh>
 
@@ -22,14 +22,14 @@ __global__ void body_sums_kernel(const BodyChunk* chunks, const BodyParameters* 
   const BodyChunk chunk = chunks[blockIdx.x];
   const float mass = bodies[chunk.body].sph_mass;
   BodySums acc = zero_body_sums();
-  for (std::uint32_t i = chunk.first + threadIdx.x; i < chunk.first + chunk.count; i += blockDim.x) {
+  for_each_chunk_particle(chunk.first, chunk.count, [&](std::uint32_t i) {
     add_particle(acc, xyz(state.position[i]), xyz(state.velocity[i]), mass, xyz(state.interaction_force[i]));
     add_domain_status(acc, state.fixed[i]);
     if (chunk.first_deformable != kNotDeformable) {
       add_volume_ratio(acc, determinant(deformation[chunk.first_deformable + (i - chunk.first)]),
                        chunk.lowest_valid_volume_ratio);
     }
-  }
+  });
   const BodySums total = BlockReduce(reduce_storage).Reduce(acc, BodySumsCombine());
   if (threadIdx.x == 0) partial[blockIdx.x] = total;
 }
