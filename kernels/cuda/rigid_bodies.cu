@@ -82,8 +82,8 @@ void launch_rigid_bodies(const FloatScene& scene, DeviceState& state, cudaStream
                                                                canonical_state(state), state.chunk_wrench.data(),
                                                                state.first_rigid_chunk.data(),
                                                                state.rigid_tickets.data(), scene.step);
-  rigid_place_kernel<<<chunks * kPlaceBlocksPerChunk, kBlock, 0, stream>>>(state.rigid_chunks.data(), state.rigid_bodies.data(),
-                                                    canonical_state(state), state.rest_offset.data());
+  rigid_place_kernel<<<chunks * kPlaceBlocksPerChunk, kBlock, 0, stream>>>(
+      state.rigid_chunks.data(), state.rigid_bodies.data(), canonical_state(state), state.rest_offset.data());
 }
 
 }  // namespace mssph::kernels

@@ -85,10 +85,12 @@ __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure)
 }
 
 // Blocks of the force kernel that must fit on a multiprocessor at once, which caps its registers
-// (65536 / (kBlock * blocks)). One lane per particle (large scenes) compiles to 60 registers, 4
-// blocks; at 5 (48 registers) the 1M-particle force pass takes 782 instead of 853 us on an H100,
-// at 6 (40) 798. Teams of lanes (small scenes) keep the 64 registers they get without a bound: at
-// 5 the 30k fluid force pass took 60 instead of 56 us, at 6 75.
+// at 65536 / (kBlock * blocks), rounded down to a multiple of 8. One lane per particle (large
+// scenes) compiles to 60 registers without a bound; at 5 blocks (48 registers, 96 bytes spilled)
+// the 1M-particle force pass takes 781 instead of 853 us on an H100, more resident warps hiding
+// its stalls; at 6 (40 registers) 798. Teams of lanes (small scenes) are held to 4 blocks, 64
+// registers, which is what they compile to anyway (62-64): at 5 the 30k fluid force pass took 60
+// instead of 56 us, at 6 75.
 template <unsigned Lanes>
 inline constexpr int kForceBlocksPerMultiprocessor = Lanes == 1 ? 5 : 4;
 
