@@ -55,7 +55,7 @@ __global__ void cell_rank_kernel(std::uint32_t n, CellOrder order) {
   const std::uint32_t first = order.cell_start[key];
   const std::uint32_t end = order.cell_start[key + 1];
   std::uint32_t rank = 0;
-  for (std::uint32_t s = first; s < end; ++s) rank += order.unordered_id[s] < i ? 1u : 0u;
+  for (std::uint32_t slot = first; slot < end; ++slot) rank += order.unordered_id[slot] < i ? 1u : 0u;
   const std::uint32_t s = first + rank;
   order.sorted_id[s] = i;
   place_in_cell_order(s, i, order.position, order.velocity, order.body, order.sorted_position, order.sorted_velocity);
