@@ -1,0 +1,111 @@
+// The grid walk (kernels/common/cell_grid.hpp, CellRanges::for_each_candidate) that every
+// neighbour sum goes through: for a team of any size, its lanes together visit each particle of the
+// 27 cells around a point exactly once, each lane in the strided order that fixes a GPU sum's bits
+// (candidates k, k + lanes, ... of each contiguous range). The expectation is built by brute force over all particles, cell by cell, not through
+// the cell table. The particles are clustered so ranges run from empty to many times a lane's load
+// batch, in a grid small enough to wrap.
+#include "common/cell_grid.hpp"
+#include "sorted_particles.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace mssph::testing {
+namespace {
+
+using kernels::Vec3;
+using kernels::Vec4;
+
+// 2^3 x 2^2 x 2^2 cells of side 1 m: 300 particles spread over a box of 6 cells a side (wider than
+// the grid's 4 cells along y and z, so distant particles share keys; across the 8 along x, so rows
+// split at the period) and 400 packed into one cell, whose rows then hold many times 8 candidates.
+SortedParticles clustered_particles(std::mt19937_64& random) {
+  std::uniform_real_distribution<float> spread(-2.5f, 3.5f), packed(0.05f, 0.95f);
+  std::vector<Vec4> particles;
+  for (int p = 0; p < 300; ++p) particles.push_back(Vec4{spread(random), spread(random), spread(random), 0.0f});
+  for (int p = 0; p < 400; ++p) particles.push_back(Vec4{packed(random), packed(random), packed(random), 0.0f});
+  kernels::GridShape shape;
+  shape.inverse_cell_size = 1.0f;
+  shape.bits_x = 3;
+  return sort_into_grid(particles, shape);
+}
+
+// The contiguous ranges of the walk around x, each as the sorted indices it holds: a row of three
+// cells along x when their keys are consecutive, else each cell alone; every cell's particles found
+// by testing every particle's key.
+std::vector<std::vector<std::uint32_t>> expected_ranges(const SortedParticles& sorted, Vec3 x) {
+  const kernels::GridShape& shape = sorted.shape;
+  int cx, cy, cz;
+  shape.cell_of(x, cx, cy, cz);
+  const auto cell_particles = [&](std::uint32_t key) {
+    std::vector<std::uint32_t> in_cell;
+    for (std::uint32_t s = 0; s < sorted.position.size(); ++s) {
+      if (shape.key_of(kernels::xyz(sorted.position[s])) == key) in_cell.push_back(s);
+    }
+    return in_cell;
+  };
+  std::vector<std::vector<std::uint32_t>> ranges;
+  for (int dz = -1; dz <= 1; ++dz) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      const bool one_row = shape.key(cx + 1, cy + dy, cz + dz) == shape.key(cx - 1, cy + dy, cz + dz) + 2;
+      if (one_row) ranges.emplace_back();
+      for (int dx = -1; dx <= 1; ++dx) {
+        if (!one_row) ranges.emplace_back();
+        const std::vector<std::uint32_t> in_cell = cell_particles(shape.key(cx + dx, cy + dy, cz + dz));
+        ranges.back().insert(ranges.back().end(), in_cell.begin(), in_cell.end());
+      }
+    }
+  }
+  return ranges;
+}
+
+// Each lane of a team of `lanes` walks around x; its visits must be its strided share of every
+// range, and together the lanes must visit every particle of the ranges once.
+void expect_team_walk(const SortedParticles& sorted, Vec3 x, const std::vector<std::vector<std::uint32_t>>& ranges,
+                      std::uint32_t lanes) {
+  SCOPED_TRACE(::testing::Message() << lanes << " lanes");
+  std::vector<int> times_visited(sorted.position.size(), 0);
+  for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+    std::vector<std::uint32_t> visits;
+    sorted.grid().for_each_candidate(x, lane, lanes, [&](std::uint32_t t) { visits.push_back(t); });
+    std::vector<std::uint32_t> expected;
+    for (const std::vector<std::uint32_t>& range : ranges) {
+      for (std::size_t k = lane; k < range.size(); k += lanes) expected.push_back(range[k]);
+    }
+    ASSERT_EQ(visits.size(), expected.size()) << "lane " << lane;
+    for (std::size_t k = 0; k < visits.size(); ++k) {
+      ASSERT_EQ(visits[k], expected[k]) << "lane " << lane << ", visit " << k;
+      ++times_visited[visits[k]];
+    }
+  }
+  for (const std::vector<std::uint32_t>& range : ranges) {
+    for (const std::uint32_t s : range) ASSERT_EQ(times_visited[s], 1) << "particle " << s;
+  }
+}
+
+TEST(GridWalk, EveryLaneVisitsItsStridedShareOfEachRange) {
+  std::mt19937_64 random(20261124);
+  const SortedParticles sorted = clustered_particles(random);
+  std::uniform_real_distribution<float> query(-3.0f, 4.0f);
+  std::size_t longest_range = 0, wrapped_walks = 0;
+  for (int q = 0; q < 200; ++q) {
+    SCOPED_TRACE(::testing::Message() << "query " << q);
+    const Vec3 x = q < 100 ? kernels::xyz(sorted.position[q * 7]) : Vec3{query(random), query(random), query(random)};
+    const std::vector<std::vector<std::uint32_t>> ranges = expected_ranges(sorted, x);
+    if (ranges.size() > 9) ++wrapped_walks;
+    for (const std::vector<std::uint32_t>& range : ranges) longest_range = std::max(longest_range, range.size());
+    for (const std::uint32_t lanes : {1u, 2u, 3u, 4u, 8u}) expect_team_walk(sorted, x, ranges, lanes);
+    if (HasFatalFailure()) return;
+  }
+  // The walk's corner cases were met: a row of many turns of 8 lanes, and rows split where the grid
+  // wraps.
+  EXPECT_GT(longest_range, 8u * 4u);
+  EXPECT_GT(wrapped_walks, 0u);
+}
+
+}  // namespace
+}  // namespace mssph::testing
