@@ -72,7 +72,7 @@ MSSPH_HD RestBond rest_bond(const DeformableView& v, Vec4 rest_i, std::uint32_t 
   const Vec4 rest_j = v.rest[dj];
   const Vec3 offset = xyz(rest_j) - xyz(rest_i);
   const float r2 = squared_norm(offset);
-  return {offset, v.smoothing.poly6(r2), v.smoothing.spiky_gradient(-1.0f * offset, std::sqrt(r2)), rest_j.w};
+  return {offset, v.smoothing.poly6(r2), v.smoothing.spiky_gradient(-1.0f * offset, v.smoothing.pair_distance(r2)), rest_j.w};
 }
 
 // Deformable index of canonical particle j of `body`.

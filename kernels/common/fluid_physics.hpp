@@ -32,7 +32,7 @@ struct DensitySum {
 MSSPH_HD void add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, std::uint32_t t) {
   const float r2 = squared_norm(x_i - xyz(v.position[t]));
   if (r2 >= v.step.smoothing.h2) return;
-  sum.delta += v.step.smoothing.spiky(std::sqrt(r2));
+  sum.delta += v.step.smoothing.spiky(v.step.smoothing.pair_distance(r2).r);
 }
 
 // A deformable particle reads the density of its contact layer: its own body's neighbours are not
@@ -97,7 +97,7 @@ MSSPH_HD DensityResult density_from(const DensitySum& sum, const SortedView& v, 
 // The mu of eq. 3 between two bodies: the harmonic mean of their viscosities (Morris et al. 1997),
 // so a body of zero viscosity exerts no friction (reference: interface_viscosity).
 MSSPH_HD float interface_viscosity(float mu_i, float mu_j) {
-  return mu_i + mu_j > 0.0f ? 2.0f * mu_i * mu_j / (mu_i + mu_j) : 0.0f;
+  return mu_i + mu_j > 0.0f ? quotient(2.0f * mu_i * mu_j, mu_i + mu_j) : 0.0f;
 }
 
 // Paper eq. 2 in its energy-consistent form, one neighbour's pressure force on i:
@@ -166,11 +166,11 @@ MSSPH_HD bool add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
   if (same_body && i.parameters.kind != kFluid) return boundary;  // rigid, deformable: no pressure among themselves
   const VolumePressure vp_j = v.volume_pressure[t];
   const Vec3 u_j = xyz(v.velocity[t]);
-  const float r = std::sqrt(r2);
+  const PairDistance d = v.step.smoothing.pair_distance(r2);
   const Vec3 pressure = pressure_force_pair(i.vp, vp_j, v.step.inverse_gradient_consistency,
-                                            v.step.smoothing.spiky_gradient(r_ij, r));
+                                            v.step.smoothing.spiky_gradient(r_ij, d));
   const float mu = same_body ? i.parameters.viscosity : interface_viscosity(i.parameters.viscosity, v.bodies[body_j].viscosity);
-  const Vec3 viscosity = viscosity_force_pair(mu, i.vp.volume, vp_j.volume, v.step.smoothing.viscosity_laplacian(r), i.u, u_j);
+  const Vec3 viscosity = viscosity_force_pair(mu, i.vp.volume, vp_j.volume, v.step.smoothing.viscosity_laplacian(d.r), i.u, u_j);
   sum.pressure += pressure;
   sum.viscosity += viscosity;
   if (!same_body) sum.interaction += interaction_force(pressure, viscosity);

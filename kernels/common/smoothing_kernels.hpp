@@ -6,6 +6,14 @@
 
 namespace mssph::kernels {
 
+// A pair's distance r = |x_i - x_j| and 1 / r, both from r^2 through one reciprocal square root
+// (vec_math.hpp), so a pair term needs neither a square root nor a division. Coincident particles
+// (r <= 1e-12 h, where the spiky gradient has no direction) get r = 0 and 1 / r = 0.
+struct PairDistance {
+  float r;        // [m]
+  float inverse;  // 1 / r [1/m], 0 for coincident particles
+};
+
 struct SmoothingKernels {
   float h;
   float h2;
@@ -13,6 +21,7 @@ struct SmoothingKernels {
   float spiky_value_coefficient;  // 15 / (pi h^6)
   float spiky_coefficient;     // -45 / (pi h^6)
   float laplacian_coefficient;  // 45 / (pi h^6)
+  float coincident2;            // (1e-12 h)^2: below it a pair counts as coincident (PairDistance)
 
   static SmoothingKernels for_support(double support) {
     const double pi = 3.14159265358979323846;
@@ -20,7 +29,13 @@ struct SmoothingKernels {
     return {static_cast<float>(support), static_cast<float>(support * support),
             static_cast<float>(315.0 / (64.0 * pi * h6 * support * support * support)),
             static_cast<float>(15.0 / (pi * h6)),
-            static_cast<float>(-45.0 / (pi * h6)), static_cast<float>(45.0 / (pi * h6))};
+            static_cast<float>(-45.0 / (pi * h6)), static_cast<float>(45.0 / (pi * h6)),
+            static_cast<float>(1e-24 * support * support)};
+  }
+
+  MSSPH_HD PairDistance pair_distance(float r2) const {
+    const float inverse = r2 > coincident2 ? reciprocal_sqrt(r2) : 0.0f;
+    return {r2 * inverse, inverse};
   }
 
   // poly6 W(r) from r^2 (moment matrices and rest volumes of deformable bodies).
@@ -35,11 +50,12 @@ struct SmoothingKernels {
     const float d = h - r;
     return spiky_value_coefficient * d * d * d;
   }
-  // Spiky gradient with respect to x_i, r_vec = x_i - x_j (pressure, elasticity); zero at r = 0.
-  MSSPH_HD Vec3 spiky_gradient(Vec3 r_vec, float r) const {
-    if (r >= h || r <= 1e-12f * h) return Vec3{0.0f, 0.0f, 0.0f};
-    const float d = h - r;
-    return (spiky_coefficient * d * d / r) * r_vec;
+  // Spiky gradient with respect to x_i, r_vec = x_i - x_j at distance d (pressure, elasticity); zero
+  // for coincident particles, where d.inverse is 0.
+  MSSPH_HD Vec3 spiky_gradient(Vec3 r_vec, PairDistance d) const {
+    if (d.r >= h) return Vec3{0.0f, 0.0f, 0.0f};
+    const float s = h - d.r;
+    return (spiky_coefficient * s * s * d.inverse) * r_vec;
   }
   // Viscosity Laplacian (paper eq. 3).
   MSSPH_HD float viscosity_laplacian(float r) const { return r >= h ? 0.0f : laplacian_coefficient * (h - r); }

@@ -45,9 +45,32 @@ TEST(SmoothingKernelTwins, SpikyGradient) {
     const Eigen::Vector3d r_vec = draws.vector(0.65 * h);  // |r_vec| up to 1.13 h
     const kernels::Vec3 r_float = to_float(r_vec);
     const double peak = 45.0 / (std::numbers::pi * std::pow(h, 4));  // |grad W| as r -> 0
+    const kernels::SmoothingKernels kernel = kernels::SmoothingKernels::for_support(h);
     const Eigen::Vector3d got =
-        to_double(kernels::SmoothingKernels::for_support(h).spiky_gradient(r_float, kernels::norm(r_float)));
+        to_double(kernel.spiky_gradient(r_float, kernel.pair_distance(kernels::squared_norm(r_float))));
     gradient.add(got, SpikyGradient(h)(r_vec), peak);
+  }
+}
+
+// A pair's distance and its inverse from r^2 (PairDistance), against double; and coincident
+// particles (r <= 1e-12 h), where the gradient has no direction: zero gradient, r = 0.
+TEST(SmoothingKernelTwins, PairDistance) {
+  TwinDraws draws("SmoothingKernelTwins.PairDistance");
+  TwinComparison distance("r from r^2", 0.9), inverse("1 / r from r^2", 0.9);
+  for (int k = 0; k < kDraws; ++k) {
+    const double h = float_support(draws);
+    const float r2 = static_cast<float>(draws.uniform(1e-6 * h * h, 1.21 * h * h));
+    const kernels::PairDistance d = kernels::SmoothingKernels::for_support(h).pair_distance(r2);
+    distance.add(d.r, std::sqrt(double{r2}), std::sqrt(double{r2}));
+    inverse.add(d.inverse, 1.0 / std::sqrt(double{r2}), 1.0 / std::sqrt(double{r2}));
+  }
+  const kernels::SmoothingKernels kernel = kernels::SmoothingKernels::for_support(0.02);
+  for (const float r2 : {0.0f, 1e-30f}) {
+    const kernels::PairDistance d = kernel.pair_distance(r2);
+    EXPECT_EQ(d.r, 0.0f) << "r^2 = " << r2;
+    const kernels::Vec3 gradient = kernel.spiky_gradient(kernels::Vec3{1e-15f, 0.0f, 0.0f}, d);
+    EXPECT_EQ(gradient.x, 0.0f) << "r^2 = " << r2;
+    EXPECT_EQ(kernel.spiky(d.r), kernel.spiky(0.0f)) << "r^2 = " << r2;
   }
 }
 
