@@ -6,8 +6,11 @@
 
 namespace mssph::kernels {
 
-// A pair's distance r = |x_i - x_j| and 1 / r, both from r^2 through one reciprocal square root
-// (vec_math.hpp), so a pair term needs neither a square root nor a division. Coincident particles
+// A pair's distance r = |x_i - x_j| and 1 / r from r^2. On the GPU both come from one reciprocal
+// square root, rsqrtf (within 2 ulp, CUDA C++ Programming Guide), so a pair term needs neither a
+// square root nor a division: those are IEEE instruction sequences with a slow-path branch, and a
+// warp runs a pair term whenever one of its 32 lanes meets a neighbour, at nearly every candidate.
+// The host takes the IEEE square root and divides only where 1 / r is used. Coincident particles
 // (r <= 1e-12 h, where the spiky gradient has no direction) get r = 0 and 1 / r = 0.
 struct PairDistance {
   float r;        // [m]
@@ -34,8 +37,14 @@ struct SmoothingKernels {
   }
 
   MSSPH_HD PairDistance pair_distance(float r2) const {
-    const float inverse = r2 > coincident2 ? reciprocal_sqrt(r2) : 0.0f;
+#if defined(__CUDA_ARCH__)
+    const float inverse = r2 > coincident2 ? rsqrtf(r2) : 0.0f;
     return {r2 * inverse, inverse};
+#else
+    if (!(r2 > coincident2)) return {0.0f, 0.0f};
+    const float r = std::sqrt(r2);
+    return {r, 1.0f / r};
+#endif
   }
 
   // poly6 W(r) from r^2 (moment matrices and rest volumes of deformable bodies).

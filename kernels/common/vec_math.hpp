@@ -43,18 +43,11 @@ MSSPH_HD Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x -
 MSSPH_HD float squared_norm(Vec3 a) { return dot(a, a); }
 MSSPH_HD float norm(Vec3 a) { return std::sqrt(dot(a, a)); }
 
-// 1 / sqrt(x) and x / y for the terms of the neighbour sums. On the GPU they are the hardware
-// approximations, rsqrtf and __fdividef, each within 2 ulp (CUDA C++ Programming Guide, mathematical
-// functions' error bounds; __fdividef for |y| < 2^126): the IEEE square root and division are
-// instruction sequences with a slow-path branch, and a warp runs a pair term whenever one of its
-// 32 lanes meets a neighbour, that is at nearly every candidate. The host keeps IEEE arithmetic.
-MSSPH_HD float reciprocal_sqrt(float x) {
-#if defined(__CUDA_ARCH__)
-  return rsqrtf(x);
-#else
-  return 1.0f / std::sqrt(x);
-#endif
-}
+// x / y in a term of the neighbour sums. On the GPU the hardware approximation __fdividef, within
+// 2 ulp for |y| < 2^126 (CUDA C++ Programming Guide, mathematical functions' error bounds): the
+// IEEE division is an instruction sequence with a slow-path branch, and a warp runs a pair term
+// whenever one of its 32 lanes meets a neighbour, that is at nearly every candidate. The host keeps
+// IEEE arithmetic.
 MSSPH_HD float quotient(float x, float y) {
 #if defined(__CUDA_ARCH__)
   return __fdividef(x, y);
