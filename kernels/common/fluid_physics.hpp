@@ -40,18 +40,24 @@ MSSPH_HD void add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, s
 // (reads_contact_layer_density) says why; reference: compute_densities.
 MSSPH_HD bool reads_contact_layer_density(const BodyParameters& body) { return body.kind == kDeformable; }
 
-// Particle s's live density sum over the candidates that candidates(visit) hands to visit.
+// Particle s's live density sum over the candidates that candidates(visit) hands to visit. The
+// walk is written once for a contact layer and once for every other particle, so the choice is made
+// once per particle: tested inside the walk, it cost the GPU's density pass several instructions
+// per candidate.
 template <class Candidates>
 MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates) {
   const Vec4 p_i = v.position[s];
   const Vec3 x_i = xyz(p_i);
   const std::uint32_t body_i = body_of(p_i);
-  const bool contact_layer = reads_contact_layer_density(v.bodies[body_i]);
   DensitySum sum{0.0f};
-  candidates([&](std::uint32_t t) {
-    if (contact_layer && body_of(v.position[t]) == body_i) return;  // its own body: at rest, in density_from
-    add_density_pair(sum, v, x_i, t);
-  });
+  if (reads_contact_layer_density(v.bodies[body_i])) {
+    candidates([&](std::uint32_t t) {
+      if (body_of(v.position[t]) == body_i) return;  // its own body: at rest, in density_from
+      add_density_pair(sum, v, x_i, t);
+    });
+  } else {
+    candidates([&](std::uint32_t t) { add_density_pair(sum, v, x_i, t); });
+  }
   return sum;
 }
 
