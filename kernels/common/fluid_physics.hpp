@@ -28,7 +28,7 @@ struct DensitySum {
 };
 
 // Candidates beyond the support (about 85 % of the 27 cells' volume) are rejected on r^2, the
-// force pair's test, before the square root.
+// force pair's test, before their distance is taken.
 MSSPH_HD void add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, std::uint32_t t) {
   const float r2 = squared_norm(x_i - xyz(v.position[t]));
   if (r2 >= v.step.smoothing.h2) return;
@@ -41,9 +41,8 @@ MSSPH_HD void add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, s
 MSSPH_HD bool reads_contact_layer_density(const BodyParameters& body) { return body.kind == kDeformable; }
 
 // Particle s's live density sum over the candidates that candidates(visit) hands to visit. The
-// walk is written once for a contact layer and once for every other particle, so the choice is made
-// once per particle: tested inside the walk, it cost the GPU's density pass several instructions
-// per candidate.
+// walk is written once for a contact layer and once for every other particle, so a particle's case
+// is decided once, not at each of its ~200 candidates.
 template <class Candidates>
 MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates) {
   const Vec4 p_i = v.position[s];
@@ -103,7 +102,7 @@ MSSPH_HD DensityResult density_from(const DensitySum& sum, const SortedView& v, 
 // The mu of eq. 3 between two bodies: the harmonic mean of their viscosities (Morris et al. 1997),
 // so a body of zero viscosity exerts no friction (reference: interface_viscosity).
 MSSPH_HD float interface_viscosity(float mu_i, float mu_j) {
-  return mu_i + mu_j > 0.0f ? quotient(2.0f * mu_i * mu_j, mu_i + mu_j) : 0.0f;
+  return mu_i + mu_j > 0.0f ? fast_quotient(2.0f * mu_i * mu_j, mu_i + mu_j) : 0.0f;
 }
 
 // Paper eq. 2 in its energy-consistent form, one neighbour's pressure force on i:

@@ -1,7 +1,7 @@
 #pragma once
 // Float32 smoothing kernels of Mueller, Charypar and Gross 2003, support radius h (the same
 // functions as src/model/smoothing_kernels.hpp, written for the GPU: constants precomputed, no
-// branches beyond the support test).
+// branches beyond the support test and, for a pair's distance, the coincident one).
 #include "vec_math.hpp"
 
 namespace mssph::kernels {
@@ -10,8 +10,8 @@ namespace mssph::kernels {
 // square root, rsqrtf (within 2 ulp, CUDA C++ Programming Guide), so a pair term needs neither a
 // square root nor a division: those are IEEE instruction sequences with a slow-path branch, and a
 // warp runs a pair term whenever one of its 32 lanes meets a neighbour, at nearly every candidate.
-// The host takes the IEEE square root and divides only where 1 / r is used. Coincident particles
-// (r <= 1e-12 h, where the spiky gradient has no direction) get r = 0 and 1 / r = 0.
+// The host takes the IEEE square root and division. Coincident particles (r <= 1e-12 h, where the
+// spiky gradient has no direction) get r = 0 and 1 / r = 0; a NaN r^2 gives a NaN r on both.
 struct PairDistance {
   float r;        // [m]
   float inverse;  // 1 / r [1/m], 0 for coincident particles
@@ -41,7 +41,7 @@ struct SmoothingKernels {
     const float inverse = r2 > coincident2 ? rsqrtf(r2) : 0.0f;
     return {r2 * inverse, inverse};
 #else
-    if (!(r2 > coincident2)) return {0.0f, 0.0f};
+    if (r2 <= coincident2) return {0.0f, 0.0f};
     const float r = std::sqrt(r2);
     return {r, 1.0f / r};
 #endif

@@ -44,11 +44,9 @@ MSSPH_HD float squared_norm(Vec3 a) { return dot(a, a); }
 MSSPH_HD float norm(Vec3 a) { return std::sqrt(dot(a, a)); }
 
 // x / y in a term of the neighbour sums. On the GPU the hardware approximation __fdividef, within
-// 2 ulp for |y| < 2^126 (CUDA C++ Programming Guide, mathematical functions' error bounds): the
-// IEEE division is an instruction sequence with a slow-path branch, and a warp runs a pair term
-// whenever one of its 32 lanes meets a neighbour, that is at nearly every candidate. The host keeps
-// IEEE arithmetic.
-MSSPH_HD float quotient(float x, float y) {
+// 2 ulp for 2^-126 <= |y| <= 2^126 (CUDA C++ Programming Guide, mathematical functions' error
+// bounds), for the reason PairDistance gives (smoothing_kernels.hpp); the host divides exactly.
+MSSPH_HD float fast_quotient(float x, float y) {
 #if defined(__CUDA_ARCH__)
   return __fdividef(x, y);
 #else

@@ -1,9 +1,9 @@
 // The grid walk (kernels/common/cell_grid.hpp, CellRanges::for_each_candidate) that every
 // neighbour sum goes through: for a team of any size, its lanes together visit each particle of the
 // 27 cells around a point exactly once, each lane in the strided order that fixes a GPU sum's bits
-// (candidates k, k + lanes, ... of each contiguous range). The expectation is built by brute force over all particles, cell by cell, not through
-// the cell table. The particles are clustered so ranges run from empty to many times a lane's load
-// batch, in a grid small enough to wrap.
+// (candidates k, k + lanes, ... of each contiguous range). The expectation is built by brute force
+// over all particles, cell by cell, not through the cell table. The particles are clustered so
+// ranges run from empty to many times a team's width, in a grid small enough to wrap.
 #include "common/cell_grid.hpp"
 #include "sorted_particles.hpp"
 
@@ -20,9 +20,10 @@ namespace {
 using kernels::Vec3;
 using kernels::Vec4;
 
-// 2^3 x 2^2 x 2^2 cells of side 1 m: 300 particles spread over a box of 6 cells a side (wider than
-// the grid's 4 cells along y and z, so distant particles share keys; across the 8 along x, so rows
-// split at the period) and 400 packed into one cell, whose rows then hold many times 8 candidates.
+// 2^3 x 2^2 x 2^2 cells of side 1 m: 300 particles spread over a 6 m cube (cells -3 to 3 on each
+// axis: more than the grid's 4 along y and z, so distant particles share keys; across the period of
+// 8 along x, so rows split there) and 400 packed into one cell, whose rows then hold many times 8
+// candidates.
 SortedParticles clustered_particles(std::mt19937_64& random) {
   std::uniform_real_distribution<float> spread(-2.5f, 3.5f), packed(0.05f, 0.95f);
   std::vector<Vec4> particles;
