@@ -1,6 +1,7 @@
 #include "step_kernels.cuh"
 
 #include "../common/fluid_physics.hpp"
+#include "held_neighbours.cuh"
 #include "thread_blocks.cuh"
 
 #include <type_traits>
@@ -94,6 +95,10 @@ __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure)
 template <unsigned Lanes>
 inline constexpr int kForceBlocksPerMultiprocessor = Lanes == 1 ? 5 : 4;
 
+// Neighbours a lane of a team holds in the force sum (for_each_held_neighbour): a particle has
+// about 30, split over the team's lanes, and a lane that meets more visits them in batches.
+constexpr unsigned held_neighbours_per_lane(unsigned lanes) { return lanes == 2 ? 20 : lanes == 4 ? 14 : 11; }
+
 template <unsigned Lanes>
 __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
     forces_kernel(SortedView view, CanonicalState state) {
@@ -101,16 +106,22 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
   ForceSum sum = zero_force_sum();
-  // A team's lanes remember the boundary neighbours they meet, for the wall check below; one lane
-  // alone (large scenes) meets a wall particle's ~9 and would only walk again, so it does not (the
-  // extra registers cost it 14 % at 1M particles on an H100).
-  constexpr bool kRemember = Lanes > 1;
+  // A team holds its neighbours before summing their pair terms (held_neighbours.cuh) and remembers
+  // the boundary neighbours it meets, for the wall check below. One lane alone (large scenes) does
+  // neither: the 32 lanes of its warp are neighbouring particles that walk the same cells, so a
+  // candidate's loads are one broadcast for all of them, which lists held lane by lane would
+  // scatter (its force pass at 1M particles went from 0.74 to 0.81-1.53 ms on an H100, held 16 or
+  // 32); and it meets a wall particle's ~9 boundary neighbours, whose registers cost it 14 %.
+  constexpr bool kTeam = Lanes > 1;
   RecentBoundaryNeighbours met;
   if (active) {
     const ForceParticle particle = load_force_particle(view, s);
-    if constexpr (kRemember) {
+    if constexpr (kTeam) {
       sum = force_sum_over(
-          view, particle, [&](auto&& visit) { view.grid.for_each_candidate(particle.x, lane, Lanes, visit); },
+          view, particle,
+          [&](auto&& visit) {
+            for_each_held_neighbour<held_neighbours_per_lane(Lanes)>(view, particle.x, lane, Lanes, visit);
+          },
           [&](std::uint32_t t) { met.remember(t); });
     } else {
       sum = force_sum(view, particle, lane, Lanes);
@@ -118,7 +129,7 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
   }
   sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction),
          team_sum<Lanes>(sum.boundary_neighbours)};
-  const bool some_lane_overflowed = kRemember && team_sum<Lanes>(met.overflowed() ? 1u : 0u) > 0;
+  const bool some_lane_overflowed = kTeam && team_sum<Lanes>(met.overflowed() ? 1u : 0u) > 0;
   // apply_forces split over the team: every lane advances the particle from the same team sum
   // (same bits), tests the boundary neighbours it met (or its share of the candidates) for a
   // wall, and the team counts the lanes that found one; lane 0 then rejects the move if any did
@@ -130,8 +141,8 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
     // One lane calls the plain walk: passing it an empty `met` with the walk forced compiles to
     // other code for the 1M-particle kernel (checked in its PTX), which the wall-check
     // measurements did not cover.
-    const bool touches = kRemember ? wall_check_share(view, advance, lane, Lanes, met, some_lane_overflowed)
-                                   : wall_check_share(view, advance, lane, Lanes);
+    const bool touches = kTeam ? wall_check_share(view, advance, lane, Lanes, met, some_lane_overflowed)
+                               : wall_check_share(view, advance, lane, Lanes);
     lanes_touching_wall = touches ? 1u : 0u;
   }
   lanes_touching_wall = team_sum<Lanes>(lanes_touching_wall);
