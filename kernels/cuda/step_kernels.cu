@@ -106,12 +106,12 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
   ForceSum sum = zero_force_sum();
-  // A team holds its neighbours before summing their pair terms (held_neighbours.cuh) and remembers
-  // the boundary neighbours it meets, for the wall check below. One lane alone (large scenes) does
-  // neither: the 32 lanes of its warp are neighbouring particles that walk the same cells, so a
-  // candidate's loads are one broadcast for all of them, which lists held lane by lane would
-  // scatter (its force pass at 1M particles went from 0.74 to 0.81-1.53 ms on an H100, held 16 or
-  // 32); and it meets a wall particle's ~9 boundary neighbours, whose registers cost it 14 %.
+  // A team holds its neighbours before summing their pair terms (common/held_neighbours.hpp) and
+  // remembers the boundary neighbours it meets, for the wall check below. One lane alone (large
+  // scenes) does neither: the 32 lanes of its warp are neighbouring particles that walk the same
+  // cells, so a candidate's loads are one broadcast for all of them, which lists held lane by lane
+  // would scatter (its force pass at 1M particles went from 0.74 to 0.81-1.53 ms on an H100, held
+  // 16 or 32); and it meets a wall particle's ~9 boundary neighbours, whose registers cost it 14 %.
   constexpr bool kTeam = Lanes > 1;
   RecentBoundaryNeighbours met;
   if (active) {
@@ -120,7 +120,8 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
       sum = force_sum_over(
           view, particle,
           [&](auto&& visit) {
-            for_each_held_neighbour<held_neighbours_per_lane(Lanes)>(view, particle.x, lane, Lanes, visit);
+            const HeldColumn held = held_column<held_neighbours_per_lane(Lanes)>();
+            for_each_held_neighbour(view, particle.x, lane, Lanes, held, visit);
           },
           [&](std::uint32_t t) { met.remember(t); });
     } else {
