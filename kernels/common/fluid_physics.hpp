@@ -11,8 +11,9 @@
 //
 // Each quantity is a sum over neighbours, assembled once by density_sum_over() and
 // force_sum_over() from the candidates a source hands them: on a GPU (density_sum, force_sum) lane
-// `lane` of a particle's team visits every lanes-th candidate of the 27 cells, and the lanes'
-// partial sums are added (same pair arithmetic, another summation order); the host visits the
+// `lane` of a particle's team visits every lanes-th candidate of the 27 cells (the force sum's
+// teams hold those within the support first, held_neighbours.hpp), and the lanes' partial sums
+// are added (same pair arithmetic, another summation order); the host visits the
 // particle's neighbour list (neighbour_list.hpp), which gives the same bits as one lane walking
 // every candidate.
 #include "particle_views.hpp"

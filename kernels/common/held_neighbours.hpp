@@ -1,8 +1,8 @@
 #pragma once
 // A candidate source for the GPU's force sum in two stages: a lane walks its share of the 27
 // cells' candidates (CellRanges::for_each_candidate), holds those within the support, and only
-// then visits them. The CUDA force kernel holds them in shared memory (cuda/held_neighbours.cuh);
-// the host runs the same function in tests.
+// then visits them. The CUDA force kernel's teams hold them in shared memory
+// (cuda/held_neighbours.cuh); the host runs the same function in tests.
 //
 // Why: a warp runs a pair term whenever one of its 32 lanes meets a neighbour, and about one
 // candidate in six is one, so a walk that visits as it goes pays the pair term at nearly every

@@ -21,19 +21,6 @@ namespace {
 using kernels::Vec3;
 using kernels::Vec4;
 
-// 2^3 x 2^2 x 2^2 cells of side h = 1 m: 300 particles spread over a 6 m cube (the grid wraps) and
-// 400 packed into one cell, whose neighbours then fill any column many times over.
-SortedParticles clustered_particles(std::mt19937_64& random) {
-  std::uniform_real_distribution<float> spread(-2.5f, 3.5f), packed(0.05f, 0.95f);
-  std::vector<Vec4> particles;
-  for (int p = 0; p < 300; ++p) particles.push_back(Vec4{spread(random), spread(random), spread(random), 0.0f});
-  for (int p = 0; p < 400; ++p) particles.push_back(Vec4{packed(random), packed(random), packed(random), 0.0f});
-  kernels::GridShape shape;
-  shape.inverse_cell_size = 1.0f;
-  shape.bits_x = 3;
-  return sort_into_grid(particles, shape);
-}
-
 kernels::SortedView view_of(const SortedParticles& sorted) {
   kernels::SortedView v{};
   v.step.smoothing = kernels::SmoothingKernels::for_support(1.0);
