@@ -18,7 +18,6 @@ namespace mssph::testing {
 namespace {
 
 using kernels::Vec3;
-using kernels::Vec4;
 
 // The contiguous ranges of the walk around x, each as the sorted indices it holds: a row of three
 // cells along x when their keys are consecutive, else each cell alone; every cell's particles found

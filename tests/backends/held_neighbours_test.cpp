@@ -19,7 +19,6 @@ namespace mssph::testing {
 namespace {
 
 using kernels::Vec3;
-using kernels::Vec4;
 
 kernels::SortedView view_of(const SortedParticles& sorted) {
   kernels::SortedView v{};
