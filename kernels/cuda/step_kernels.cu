@@ -90,8 +90,8 @@ __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure)
 // scenes) compiles to 60 registers without a bound; at 5 blocks (48 registers, 96 bytes spilled)
 // the 1M-particle force pass takes 781 instead of 853 us on an H100, more resident warps hiding
 // its stalls; at 6 (40 registers) 798. Teams of lanes (small scenes) are held to 4 blocks, 64
-// registers, which is what they compile to anyway (62-64): at 5 the 30k fluid force pass took 60
-// instead of 56 us, at 6 75.
+// registers, which is what they compile to anyway (63): with their held neighbours, at 5 the 30k
+// fluid force pass took 45.9 instead of 43.5 us, at 6 61.0.
 template <unsigned Lanes>
 inline constexpr int kForceBlocksPerMultiprocessor = Lanes == 1 ? 5 : 4;
 
