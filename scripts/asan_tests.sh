@@ -24,7 +24,6 @@ programs=(
   neighbour_list_test            # tests/backends: the host's neighbour lists vs the grid walk
   wall_check_lanes_test          # tests/backends: the wall check split over a team of lanes
   grid_walk_test                 # tests/backends: each lane's share of the grid walk
-  held_neighbours_test           # tests/backends: the GPU force sum's held-neighbour walk, on the host
   reference_unit_tests           # tests/reference: kernels, neighbour search
   rigid_physics_test             # tests/reference
   fluid_physics_test             # tests/reference (its two settling cases left out, below)

@@ -11,11 +11,12 @@
 //
 // Each quantity is a sum over neighbours, assembled once by density_sum_over() and
 // force_sum_over() from the candidates a source hands them: on a GPU (density_sum, force_sum) lane
-// `lane` of a particle's team visits every lanes-th candidate of the 27 cells (the force sum's
-// teams hold those within the support first, held_neighbours.hpp), and the lanes' partial sums
-// are added (same pair arithmetic, another summation order); the host visits the
-// particle's neighbour list (neighbour_list.hpp), which gives the same bits as one lane walking
-// every candidate.
+// `lane` of a particle's team visits every lanes-th candidate of the 27 cells, and the lanes'
+// partial sums are added (same pair arithmetic, another summation order); a team's force sum
+// visits the neighbours its density pass listed instead (density_sum_listing, force_sum_listed);
+// the host visits the particle's neighbour list. Lists (neighbour_list.hpp) give the same bits as
+// the walks they were recorded from.
+#include "neighbour_list.hpp"
 #include "particle_views.hpp"
 #include "simulation_domain.hpp"
 #include "wall_exclusion.hpp"
@@ -29,11 +30,13 @@ struct DensitySum {
 };
 
 // Candidates beyond the support (about 85 % of the 27 cells' volume) are rejected on r^2, the
-// force pair's test, before their distance is taken.
-MSSPH_HD void add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, std::uint32_t t) {
+// force pair's test, before their distance is taken. Returns whether t is a neighbour (within the
+// support), whose term was added.
+MSSPH_HD bool add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, std::uint32_t t) {
   const float r2 = squared_norm(x_i - xyz(v.position[t]));
-  if (r2 >= v.step.smoothing.h2) return;
+  if (r2 >= v.step.smoothing.h2) return false;
   sum.delta += v.step.smoothing.spiky(v.step.smoothing.pair_distance(r2).r);
+  return true;
 }
 
 // A deformable particle reads the density of its contact layer: its own body's neighbours are not
@@ -41,11 +44,12 @@ MSSPH_HD void add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, s
 // (reads_contact_layer_density) says why; reference: compute_densities.
 MSSPH_HD bool reads_contact_layer_density(const BodyParameters& body) { return body.kind == kDeformable; }
 
-// Particle s's live density sum over the candidates that candidates(visit) hands to visit. The
-// walk is written once for a contact layer and once for every other particle, so a particle's case
-// is decided once, not at each of its ~200 candidates.
-template <class Candidates>
-MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates) {
+// Particle s's live density sum over the candidates that candidates(visit) hands to visit;
+// summed(t) is called for every neighbour t whose term it adds. The walk is written once for a
+// contact layer and once for every other particle, so a particle's case is decided once, not at
+// each of its ~200 candidates.
+template <class Candidates, class Summed>
+MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates, Summed&& summed) {
   const Vec4 p_i = v.position[s];
   const Vec3 x_i = xyz(p_i);
   const std::uint32_t body_i = body_of(p_i);
@@ -53,18 +57,46 @@ MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candi
   if (reads_contact_layer_density(v.bodies[body_i])) {
     candidates([&](std::uint32_t t) {
       if (body_of(v.position[t]) == body_i) return;  // its own body: at rest, in density_from
-      add_density_pair(sum, v, x_i, t);
+      if (add_density_pair(sum, v, x_i, t)) summed(t);
     });
   } else {
-    candidates([&](std::uint32_t t) { add_density_pair(sum, v, x_i, t); });
+    candidates([&](std::uint32_t t) {
+      if (add_density_pair(sum, v, x_i, t)) summed(t);
+    });
   }
   return sum;
+}
+template <class Candidates>
+MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates) {
+  return density_sum_over(v, s, candidates, [](std::uint32_t) {});
 }
 
 // Lane `lane` of `lanes`' share of particle s's live density sum, from the grid.
 MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes) {
   const Vec3 x_i = xyz(v.position[s]);
   return density_sum_over(v, s, [&](auto&& visit) { v.grid.for_each_candidate(x_i, lane, lanes, visit); });
+}
+
+// Boundary particles receive no force: they skip the force sum.
+MSSPH_HD bool receives_forces(const BodyParameters& body) { return body.kind != kBoundary; }
+
+// density_sum's share, recording the neighbours it sums in list `list` (neighbour_list.hpp) for
+// the force pass (force_sum_listed); a particle that receives no forces records none. Its force
+// sum takes exactly these: every neighbour of the walk, but a contact layer's own body, which its
+// density skips and which adds nothing to its force sum (add_force_pair: no pressure among a
+// deformable body's own particles).
+MSSPH_HD DensitySum density_sum_listing(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
+                                        const NeighbourLists& lists, std::uint32_t list) {
+  const Vec4 p_i = v.position[s];
+  const bool listed = receives_forces(v.bodies[body_of(p_i)]);
+  ListRecorder recorder(lists, list);
+  const DensitySum sum = density_sum_over(
+      v, s, [&](auto&& visit) { v.grid.for_each_candidate(xyz(p_i), lane, lanes, visit); },
+      [&](std::uint32_t t) {
+        if (listed) recorder.offer(t, true);
+      });
+  if (listed) lists.count[list] = recorder.count();
+  return sum;
 }
 
 // The number density behind particle s's pressure from its live sum: a deformable particle adds its
@@ -183,16 +215,13 @@ MSSPH_HD bool add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
   return boundary;
 }
 
-// Boundary particles receive no force: they skip the sum.
-MSSPH_HD bool receives_forces(const ForceParticle& i) { return i.parameters.kind != kBoundary; }
-
 // Particle i's pressure and viscosity sums over the candidates that candidates(visit) hands to
 // visit; met_boundary(t) is called for every boundary neighbour t among them.
 template <class Candidates, class MetBoundary>
 MSSPH_HD ForceSum force_sum_over(const SortedView& v, const ForceParticle& i, Candidates&& candidates,
                                  MetBoundary&& met_boundary) {
   ForceSum sum = zero_force_sum();
-  if (receives_forces(i)) {
+  if (receives_forces(i.parameters)) {
     candidates([&](std::uint32_t t) {
       if (add_force_pair(sum, i, v, t)) met_boundary(t);
     });
@@ -207,6 +236,20 @@ MSSPH_HD ForceSum force_sum_over(const SortedView& v, const ForceParticle& i, Ca
 // Lane `lane` of `lanes`' share of particle i's pressure and viscosity sums, from the grid.
 MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, std::uint32_t lane, std::uint32_t lanes) {
   return force_sum_over(v, i, [&](auto&& visit) { v.grid.for_each_candidate(i.x, lane, lanes, visit); });
+}
+
+// The same share from list `list`, which the density pass recorded from it (density_sum_listing);
+// an overflowed list walks the share itself. met_boundary as in force_sum_over.
+template <class MetBoundary>
+MSSPH_HD ForceSum force_sum_listed(const SortedView& v, const ForceParticle& i, std::uint32_t lane, std::uint32_t lanes,
+                                   const NeighbourLists& lists, std::uint32_t list, MetBoundary&& met_boundary) {
+  return force_sum_over(
+      v, i,
+      [&](auto&& visit) {
+        for_each_listed(
+            lists, list, [&](auto&& all) { v.grid.for_each_candidate(i.x, lane, lanes, all); }, visit);
+      },
+      met_boundary);
 }
 
 // ---- Step 4: integration ----

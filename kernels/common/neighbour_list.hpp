@@ -1,50 +1,101 @@
 #pragma once
-// Per-particle neighbour lists of one step: the candidates of the 27 cells (CellRanges) that lie
-// within the support h, in the order the grid walk visits them. The density and force sums visit a
-// particle's ~30 neighbours instead of its ~200 candidates; since a candidate beyond the support
-// adds nothing to either sum (add_density_pair, add_force_pair reject r^2 >= h^2 with the same
-// arithmetic), a sum over the list takes the same terms in the same order as a sum over the walk:
-// the same bits.
+// Neighbour lists of one step: the candidates of the 27 cells (CellRanges) that lie within the
+// support h, in the order the grid walk visits them. A sum visits a list's ~30 neighbours instead
+// of the walk's ~200 candidates; since a candidate beyond the support adds nothing to either sum
+// (add_density_pair, add_force_pair reject r^2 >= h^2 with the same arithmetic), a sum over the
+// list takes the same terms in the same order as a sum over the walk: the same bits.
 //
-// A list is recorded without a branch on the distance (every candidate is written, the count
-// advances only for one within the support), since on the host that branch is mispredicted about
-// one candidate in six. The last entry takes every candidate once the list is full, so a list holds
-// at most capacity - 1 neighbours; a particle with more keeps its count and falls back to the grid
-// walk.
+// Two producers, one layout and one reader:
+// - the host records one list per particle before its sums (record_neighbours), without a branch
+//   on the distance (every candidate is offered, the count advances only for one within the
+//   support), since on the host that branch is mispredicted about one candidate in six;
+// - a GPU team's density pass records one list per lane, its share of the walk, as it sums
+//   (density_sum_over's `summed`), and the force pass visits it instead of walking the cells again.
+// Once a list is full its last entry takes every further candidate, so a list holds at most
+// capacity - 1 neighbours; a list whose count reaches its capacity overflowed, and its reader
+// falls back to the walk it was recorded from.
 #include "particle_views.hpp"
+
+#include <cstddef>
 
 namespace mssph::kernels {
 
 struct NeighbourLists {
-  std::uint32_t capacity;  // list entries per particle
-  std::uint32_t* count;    // per sorted particle; capacity or more: overflowed, walk the grid instead
-  std::uint32_t* index;    // sorted particle s's neighbours: index[s * capacity + k], k < count[s]
+  std::uint32_t capacity;      // entries per list
+  std::uint32_t list_stride;   // from one list's first entry to the next list's
+  std::uint32_t entry_stride;  // from a list's entry to its next
+  std::uint32_t* count;        // per list; capacity or more: overflowed, walk the grid instead
+  std::uint32_t* index;        // list l's entry k: index[l * list_stride + k * entry_stride], k < count[l]
+
+  MSSPH_HD std::uint32_t* first_entry(std::uint32_t list) const {
+    return index + static_cast<std::size_t>(list) * list_stride;
+  }
+};
+
+// The host's lists, one per sorted particle, each a contiguous row: a particle's sums read it in order.
+MSSPH_HD NeighbourLists particle_lists(std::uint32_t capacity, std::uint32_t* count, std::uint32_t* index) {
+  return {capacity, capacity, 1, count, index};
+}
+
+// A GPU team's lists, one per lane of `lists` lanes in all: entry k of consecutive lanes are
+// neighbours in memory, so a warp's lanes load their k-th entries together.
+MSSPH_HD NeighbourLists lane_lists(std::uint32_t capacity, std::uint32_t lists, std::uint32_t* count,
+                                   std::uint32_t* index) {
+  return {capacity, 1, lists, count, index};
+}
+
+// Writes one list as its producer meets the candidates. It keeps a pointer to the next entry
+// rather than an index: on a GPU the recording runs whenever one lane of a warp meets a neighbour,
+// nearly every candidate, so each instruction of it counts.
+class ListRecorder {
+ public:
+  MSSPH_HD ListRecorder(const NeighbourLists& lists, std::uint32_t list)
+      : next_(lists.first_entry(list)), stride_(lists.entry_stride), last_(lists.capacity - 1) {}
+
+  // Writes t at the next free entry (the last once full); only a neighbour takes the entry.
+  MSSPH_HD void offer(std::uint32_t t, bool neighbour) {
+    *next_ = t;
+    next_ += neighbour && count_ < last_ ? stride_ : 0u;
+    count_ += neighbour ? 1u : 0u;
+  }
+  MSSPH_HD std::uint32_t count() const { return count_; }
+
+ private:
+  std::uint32_t* next_;
+  std::uint32_t stride_;
+  std::uint32_t last_;
+  std::uint32_t count_ = 0;
 };
 
 // Records sorted particle s's neighbours (itself included, r = 0) into its list.
 MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists, std::uint32_t s) {
   const Vec3 x_i = xyz(v.position[s]);
-  std::uint32_t* list = lists.index + static_cast<std::size_t>(s) * lists.capacity;
-  const std::uint32_t last = lists.capacity - 1;
-  std::uint32_t count = 0;
+  ListRecorder list(lists, s);
   v.grid.for_each_candidate(x_i, [&](std::uint32_t t) {
-    list[count < last ? count : last] = t;
-    count += squared_norm(x_i - xyz(v.position[t])) < v.step.smoothing.h2 ? 1u : 0u;
+    list.offer(t, squared_norm(x_i - xyz(v.position[t])) < v.step.smoothing.h2);
   });
-  lists.count[s] = count;
+  lists.count[s] = list.count();
 }
 
-// Calls visit(t) for every neighbour t of sorted particle s, in the grid walk's order; an
-// overflowed list walks the grid itself (its out-of-support candidates add nothing to a sum).
-template <class Visit>
-MSSPH_HD void for_each_neighbour(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, Visit&& visit) {
-  const std::uint32_t count = lists.count[s];
+// Calls visit(t) for every entry of list `list` in its order; an overflowed list calls
+// walk(visit) instead, the walk it was recorded from (whose out-of-support candidates add nothing
+// to a sum).
+template <class Walk, class Visit>
+MSSPH_HD void for_each_listed(const NeighbourLists& lists, std::uint32_t list, Walk&& walk, Visit&& visit) {
+  const std::uint32_t count = lists.count[list];
   if (count >= lists.capacity) {
-    v.grid.for_each_candidate(xyz(v.position[s]), visit);
+    walk(visit);
     return;
   }
-  const std::uint32_t* list = lists.index + static_cast<std::size_t>(s) * lists.capacity;
-  for (std::uint32_t k = 0; k < count; ++k) visit(list[k]);
+  const std::uint32_t* entry = lists.first_entry(list);
+  for (std::uint32_t k = 0; k < count; ++k, entry += lists.entry_stride) visit(*entry);
+}
+
+// Calls visit(t) for every neighbour t of sorted particle s (the host's lists), in the grid walk's order.
+template <class Visit>
+MSSPH_HD void for_each_neighbour(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, Visit&& visit) {
+  for_each_listed(
+      lists, s, [&](auto&& all) { v.grid.for_each_candidate(xyz(v.position[s]), all); }, visit);
 }
 
 // Sorted particle s's list as the candidate source of density_sum_over and force_sum_over.

@@ -49,7 +49,7 @@ SortedView CpuBackend::sorted_view() const {
 }
 
 NeighbourLists CpuBackend::neighbour_lists() {
-  return NeighbourLists{kNeighbourCapacity, neighbour_count_.data(), neighbour_index_.data()};
+  return particle_lists(kNeighbourCapacity, neighbour_count_.data(), neighbour_index_.data());
 }
 
 // Counting sort of the particles by cell key (stable: equal keys keep canonical order), then the

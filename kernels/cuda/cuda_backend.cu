@@ -59,6 +59,8 @@ class CudaBackend final : public Backend {
   FloatScene scene_;
   std::string device_name_;
   ChunkTables chunks_;
+  unsigned team_lanes_ = 1;             // lanes per particle in the neighbour sums (choose_team_lanes)
+  unsigned deformable_team_lanes_ = 1;  // lanes per deformable particle in its bond sums
   DeviceState state_;
   BodyReadback readback_;
   std::vector<std::array<Vec3, 2>> external_wrench_;  // per movable rigid body: host copy of F, tau
@@ -70,8 +72,6 @@ class CudaBackend final : public Backend {
   StepGraph timed_step_;  // the step with the phase events: ~10 us more on an H100 (Backend::set_phase_timing)
   bool phase_timing_ = false;
   bool last_step_timed_ = false;
-  unsigned team_lanes_ = 1;             // lanes per particle in the neighbour sums (choose_team_lanes)
-  unsigned deformable_team_lanes_ = 1;  // lanes per deformable particle in its bond sums
   double time_ = 0.0;
 };
 
@@ -80,11 +80,12 @@ CudaBackend::CudaBackend(ParticleSetup setup)
       scene_(make_float_scene(setup_)),
       device_name_(require_usable_device()),
       chunks_(make_chunk_tables(scene_, setup_.bodies)),
-      state_(allocate_device_state(scene_, chunks_, scan_temp_bytes(scene_.grid.cell_count()), device_name_)),
-      readback_(scene_, setup_.bodies, chunks_),
-      external_wrench_(scene_.rigid_bodies.size()),
       team_lanes_(choose_team_lanes(setup_.size(), resident_threads())),
-      deformable_team_lanes_(choose_team_lanes(scene_.deformable_body.size(), resident_threads())) {
+      deformable_team_lanes_(choose_team_lanes(scene_.deformable_body.size(), resident_threads())),
+      state_(allocate_device_state(scene_, chunks_, scan_temp_bytes(scene_.grid.cell_count()), team_lanes_,
+                                   device_name_)),
+      readback_(scene_, setup_.bodies, chunks_),
+      external_wrench_(scene_.rigid_bodies.size()) {
   cuda_check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "create stream");
   for (cudaEvent_t& e : events_) cuda_check(cudaEventCreate(&e), "create event");
 
@@ -244,7 +245,8 @@ ParticleSnapshot CudaBackend::snapshot() {
 
 std::size_t cuda_backend_bytes(const ParticleSetup& setup) {
   const FloatScene scene = make_float_scene(setup);
-  return device_array_sizes(scene, make_chunk_tables(scene, setup.bodies), scan_temp_bytes(scene.grid.cell_count()))
+  return device_array_sizes(scene, make_chunk_tables(scene, setup.bodies), scan_temp_bytes(scene.grid.cell_count()),
+                            choose_team_lanes(setup.size(), resident_threads()))
       .total_bytes;
 }
 

@@ -25,8 +25,8 @@ std::vector<CudaDeviceInfo> cuda_devices();
 // for, or the scene does not fit in its memory (naming particles and bytes).
 std::unique_ptr<Backend> make_cuda_backend(ParticleSetup setup);
 
-// Device memory the backend allocates for a scene [bytes]: counted from the list that allocates
-// (device_arrays.hpp), and checked against the free memory before allocating.
+// Device memory the backend allocates for a scene on the current device [bytes]: counted from the
+// list that allocates (device_arrays.hpp), and checked against the free memory before allocating.
 std::size_t cuda_backend_bytes(const ParticleSetup& setup);
 
 }  // namespace mssph::kernels

@@ -44,6 +44,8 @@ struct DeviceArrays {
   Array<Vec4> sorted_position, sorted_velocity;
   Array<VolumePressure> volume_pressure;
   Array<unsigned char> scan_storage;  // CUB's temporary storage for the cell-table scan
+  // A team's neighbour lists, one per lane (empty for one lane per particle).
+  Array<std::uint32_t> list_count, list_index;
   // Deformable bodies (empty without them).
   Array<Vec4> elastic_force;
   Array<ElasticParameters> elastic_bodies;
@@ -64,12 +66,27 @@ struct DeviceArrays {
   Array<unsigned char> readback;  // ReadbackLayout
 };
 
+// Entries of each lane's neighbour list when a team of `lanes` lanes shares each particle's
+// neighbour sums (step_kernels.cu): the density pass records them, the force pass visits them
+// instead of walking the 27 cells again (common/neighbour_list.hpp). A particle has about 30
+// neighbours at h = 2 dx, split over its lanes, not evenly; a list holds capacity - 1 of them, and
+// a lane with more walks its share of the cells again, so the capacities hold the longest lists of
+// a lattice 13 % denser than at rest (neighbour_list_test). One lane per particle
+// (large scenes) keeps no lists: at 1M particles their 4-byte entries would double the fluid's 128
+// bytes per particle, and its warps load each candidate once for all 32 lanes, neighbouring
+// particles walking the same cells, where lists would scatter those loads.
+constexpr std::uint32_t team_list_capacity(unsigned lanes) {
+  return lanes >= 8 ? 13 : lanes == 4 ? 16 : lanes == 2 ? 24 : 0;
+}
+inline std::size_t team_list_count(std::size_t particles, unsigned lanes) { return lanes > 1 ? particles * lanes : 0; }
+
 // Calls visit(name, array, contents) for every array of a scene, contents being CopyOf<T>,
 // Filled<T> or Uninitialised. `scan_bytes`: CUB's temporary storage for the cell-table scan
-// (scan_temp_bytes, which needs the CUDA runtime).
+// (scan_temp_bytes, which needs the CUDA runtime); `team_lanes`: lanes per particle of the
+// neighbour sums (choose_team_lanes).
 template <template <class> class Array, class Visit>
 void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, const ChunkTables& chunks,
-                           std::size_t scan_bytes, Visit&& visit) {
+                           std::size_t scan_bytes, unsigned team_lanes, Visit&& visit) {
   const std::size_t n = scene.position.size();
   const std::size_t cell_table = std::size_t{scene.grid.cell_count()} + 1;
   const Vec4 zero{0, 0, 0, 0};
@@ -104,6 +121,10 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   visit("sorted_velocity", a.sorted_velocity, Uninitialised{n});
   visit("volume_pressure", a.volume_pressure, Filled<VolumePressure>{n, VolumePressure{0, 0}});
   visit("scan_storage", a.scan_storage, Uninitialised{scan_bytes});
+  // Written by the density pass before the force pass reads them, for every particle that receives forces.
+  const std::size_t lists = team_list_count(n, team_lanes);
+  visit("list_count", a.list_count, Uninitialised{lists});
+  visit("list_index", a.list_index, Uninitialised{lists * team_list_capacity(team_lanes)});
   visit("bodies", a.bodies, copy_of(scene.bodies));
   visit("rigid_bodies", a.rigid_bodies, copy_of(scene.rigid_bodies));
   visit("rigid_chunks", a.rigid_chunks, copy_of(chunks.rigid));
@@ -130,12 +151,14 @@ struct DeviceArraySizes {
   std::size_t total_bytes = 0;
 };
 
-inline DeviceArraySizes device_array_sizes(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes) {
+inline DeviceArraySizes device_array_sizes(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes,
+                                           unsigned team_lanes) {
   DeviceArraySizes sizes;
-  for_each_device_array(sizes.arrays, scene, chunks, scan_bytes, [&](const char*, auto& array, const auto& contents) {
-    array.count = contents.count;
-    sizes.total_bytes += array.bytes();
-  });
+  for_each_device_array(sizes.arrays, scene, chunks, scan_bytes, team_lanes,
+                        [&](const char*, auto& array, const auto& contents) {
+                          array.count = contents.count;
+                          sizes.total_bytes += array.bytes();
+                        });
   return sizes;
 }
 

@@ -44,8 +44,8 @@ struct Allocate {
 }  // namespace
 
 DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes,
-                                  const std::string& device_name) {
-  const std::size_t needed = device_array_sizes(scene, chunks, scan_bytes).total_bytes;
+                                  unsigned team_lanes, const std::string& device_name) {
+  const std::size_t needed = device_array_sizes(scene, chunks, scan_bytes, team_lanes).total_bytes;
   std::size_t free_bytes = 0;
   std::size_t total_bytes = 0;
   cuda_check(cudaMemGetInfo(&free_bytes, &total_bytes), "read free device memory");
@@ -55,7 +55,7 @@ DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& ch
                      " of " + describe_bytes(total_bytes) + " are free");
   }
   DeviceState state;
-  for_each_device_array(state, scene, chunks, scan_bytes, Allocate{});
+  for_each_device_array(state, scene, chunks, scan_bytes, team_lanes, Allocate{});
   return state;
 }
 
@@ -68,6 +68,11 @@ SortedView sorted_view(const FloatScene& scene, const DeviceState& state) {
                     state.sorted_id.data(),
                     state.volume_pressure.data(),
                     state.own_rest_number_density.data()};  // empty, so null, without deformable bodies
+}
+
+NeighbourLists team_lists(DeviceState& state, unsigned team_lanes) {
+  return lane_lists(team_list_capacity(team_lanes), static_cast<std::uint32_t>(state.list_count.size()),
+                    state.list_count.data(), state.list_index.data());
 }
 
 // elastic_force is empty, so null, without deformable bodies.

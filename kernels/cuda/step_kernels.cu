@@ -1,7 +1,6 @@
 #include "step_kernels.cuh"
 
 #include "../common/fluid_physics.hpp"
-#include "held_neighbours.cuh"
 #include "thread_blocks.cuh"
 
 #include <type_traits>
@@ -74,13 +73,21 @@ __global__ void elastic_force_kernel(DeformableView view) {
   if (active && lane == 0) store_elastic_force(view, d, force);
 }
 
+// A team's lane records the neighbours of its share in its list (lists: one per thread) for the
+// force pass; one lane alone records none (device_arrays.hpp, team_list_capacity, says why).
 template <unsigned Lanes>
-__global__ void density_kernel(SortedView view, VolumePressure* volume_pressure) {
+__global__ void density_kernel(SortedView view, VolumePressure* volume_pressure, NeighbourLists lists) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
   DensitySum sum{0.0f};
-  if (active) sum = density_sum(view, s, lane, Lanes);
+  if (active) {
+    if constexpr (Lanes > 1) {
+      sum = density_sum_listing(view, s, lane, Lanes, lists, blockIdx.x * blockDim.x + threadIdx.x);
+    } else {
+      sum = density_sum(view, s, lane, Lanes);
+    }
+  }
   sum.delta = team_sum<Lanes>(sum.delta);
   if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s).volume_pressure;
 }
@@ -90,40 +97,30 @@ __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure)
 // scenes) compiles to 60 registers without a bound; at 5 blocks (48 registers, 96 bytes spilled)
 // the 1M-particle force pass takes 781 instead of 853 us on an H100, more resident warps hiding
 // its stalls; at 6 (40 registers) 798. Teams of lanes (small scenes) are held to 4 blocks, 64
-// registers, which is what they compile to anyway (63): with their held neighbours, at 5 the 30k
-// fluid force pass took 45.9 instead of 43.5 us, at 6 61.0.
+// registers, which is what they compile to anyway (62): when they still walked the cells (holding
+// their neighbours in shared memory), at 5 the 30k fluid force pass took 45.9 instead of 43.5 us,
+// at 6 61.0; not measured again since they visit their lists.
 template <unsigned Lanes>
 inline constexpr int kForceBlocksPerMultiprocessor = Lanes == 1 ? 5 : 4;
 
-// Neighbours a lane of a team holds in the force sum (for_each_held_neighbour): a particle has
-// about 30, split over the team's lanes, and a lane that meets more visits them in batches.
-constexpr unsigned held_neighbours_per_lane(unsigned lanes) { return lanes == 2 ? 20 : lanes == 4 ? 14 : 11; }
-
 template <unsigned Lanes>
 __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
-    forces_kernel(SortedView view, CanonicalState state) {
+    forces_kernel(SortedView view, CanonicalState state, NeighbourLists lists) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
   ForceSum sum = zero_force_sum();
-  // A team holds its neighbours before summing their pair terms (common/held_neighbours.hpp) and
-  // remembers the boundary neighbours it meets, for the wall check below. One lane alone (large
-  // scenes) does neither: the 32 lanes of its warp are neighbouring particles that walk the same
-  // cells, so a candidate's loads are one broadcast for all of them, which lists held lane by lane
-  // would scatter (its force pass at 1M particles went from 0.74 to 0.81-1.53 ms on an H100, held
-  // 16 or 32); and it meets a wall particle's ~9 boundary neighbours, whose registers cost it 14 %.
+  // A team's lane visits the neighbours its density pass listed instead of walking its share of
+  // the 27 cells again, and remembers the boundary neighbours it meets, for the wall check below.
+  // One lane alone (large scenes) does neither: it has no lists (density_kernel), and it meets a
+  // wall particle's ~9 boundary neighbours, whose registers cost it 14 %.
   constexpr bool kTeam = Lanes > 1;
   RecentBoundaryNeighbours met;
   if (active) {
     const ForceParticle particle = load_force_particle(view, s);
     if constexpr (kTeam) {
-      sum = force_sum_over(
-          view, particle,
-          [&](auto&& visit) {
-            const HeldColumn held = held_column<held_neighbours_per_lane(Lanes)>();
-            for_each_held_neighbour(view, particle.x, lane, Lanes, held, visit);
-          },
-          [&](std::uint32_t t) { met.remember(t); });
+      sum = force_sum_listed(view, particle, lane, Lanes, lists, blockIdx.x * blockDim.x + threadIdx.x,
+                             [&](std::uint32_t t) { met.remember(t); });
     } else {
       sum = force_sum(view, particle, lane, Lanes);
     }
@@ -186,7 +183,8 @@ void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team
   const std::size_t n = state.position.size();
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
-    density_kernel<L><<<blocks_for(n * L), kBlock, 0, stream>>>(sorted_view(scene, state), state.volume_pressure.data());
+    density_kernel<L><<<blocks_for(n * L), kBlock, 0, stream>>>(sorted_view(scene, state), state.volume_pressure.data(),
+                                                                 team_lists(state, L));
   });
 }
 
@@ -194,7 +192,8 @@ void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_la
   const std::size_t n = state.position.size();
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
-    forces_kernel<L><<<blocks_for(n * L), kBlock, 0, stream>>>(sorted_view(scene, state), canonical_state(state));
+    forces_kernel<L><<<blocks_for(n * L), kBlock, 0, stream>>>(sorted_view(scene, state), canonical_state(state),
+                                                                team_lists(state, L));
   });
 }
 

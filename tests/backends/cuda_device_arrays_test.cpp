@@ -31,12 +31,14 @@ std::size_t element_bytes(const ArraySize<T>&) {
 }
 
 // Every array the list visits, with its bytes, in the list's order.
-std::vector<ListedArray> listed_arrays(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes) {
+std::vector<ListedArray> listed_arrays(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes,
+                                       unsigned team_lanes) {
   DeviceArrays<ArraySize> arrays;
   std::vector<ListedArray> listed;
-  kernels::for_each_device_array(arrays, scene, chunks, scan_bytes, [&](const char* name, auto& array, const auto& contents) {
-    listed.push_back({name, element_bytes(array) * contents.count});
-  });
+  kernels::for_each_device_array(arrays, scene, chunks, scan_bytes, team_lanes,
+                                 [&](const char* name, auto& array, const auto& contents) {
+                                   listed.push_back({name, element_bytes(array) * contents.count});
+                                 });
   return listed;
 }
 
@@ -57,13 +59,14 @@ struct DeviceArraysTest : ::testing::Test {
   FloatScene scene = kernels::make_float_scene(setup);
   ChunkTables chunks = kernels::make_chunk_tables(scene, setup.bodies);
   static constexpr std::size_t kScanBytes = 1000;  // stands in for CUB's figure (needs the CUDA runtime)
+  static constexpr unsigned kTeamLanes = 4;        // stands in for choose_team_lanes' (needs a device)
 };
 
 TEST_F(DeviceArraysTest, CountedBytesAreTheSumOfTheListedArrays) {
-  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes);
+  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes, kTeamLanes);
   std::size_t sum = 0;
   for (const ListedArray& a : listed) sum += a.bytes;
-  EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes).total_bytes, sum);
+  EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes, kTeamLanes).total_bytes, sum);
   EXPECT_EQ(bytes_of(listed, "scan_storage"), kScanBytes);
 }
 
@@ -75,7 +78,7 @@ TEST_F(DeviceArraysTest, EveryDeclaredArrayIsListedOnce) {
   constexpr std::size_t declared = sizeof(DeviceArrays<ArraySize>) / sizeof(std::size_t);
   ASSERT_FALSE(scene.deformable_body.empty());
   ASSERT_FALSE(scene.rigid_bodies.empty());
-  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes);
+  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes, kTeamLanes);
   std::set<std::string> names;
   for (const ListedArray& a : listed) names.insert(a.name);
   EXPECT_EQ(names.size(), listed.size()) << "an array is listed twice";
@@ -101,7 +104,7 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
     if (body.kind == BodyKind::deformable) deformable_particles += body.count;
   }
   ASSERT_EQ(deformables, deformable_particles);
-  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes);
+  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes, kTeamLanes);
   EXPECT_EQ(bytes_of(listed, "position"), n * 16);
   EXPECT_EQ(bytes_of(listed, "sorted_id"), n * 4);
   EXPECT_EQ(bytes_of(listed, "cell_start"), (cells + 1) * 4);
@@ -111,6 +114,8 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   EXPECT_EQ(bytes_of(listed, "bond_count"), deformables * 4);
   EXPECT_EQ(bytes_of(listed, "bond_neighbour"), scene.bond_neighbour.size() * 4);
   EXPECT_EQ(bytes_of(listed, "rest"), deformables * 16);
+  EXPECT_EQ(bytes_of(listed, "list_count"), n * kTeamLanes * 4);
+  EXPECT_EQ(bytes_of(listed, "list_index"), n * kTeamLanes * kernels::team_list_capacity(kTeamLanes) * 4);
   EXPECT_EQ(bytes_of(listed, "correction"), deformables * sizeof(kernels::Mat3));
   EXPECT_EQ(bytes_of(listed, "rigid_bodies"), rigid_bodies * sizeof(kernels::RigidBody));
   EXPECT_EQ(bytes_of(listed, "rigid_chunks"), rigid_chunks * sizeof(kernels::RigidChunk));
@@ -143,9 +148,26 @@ TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
       d * 3 * sizeof(kernels::Mat3) +                                       // correction, corrected_stress_action, deformation
       d * sizeof(std::uint32_t) +                                           // bond_count
       scene.bond_neighbour.size() * sizeof(std::uint32_t);                  // bond_neighbour
-  EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes).total_bytes -
-                kernels::device_array_sizes(without, chunks, kScanBytes).total_bytes,
+  EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes, kTeamLanes).total_bytes -
+                kernels::device_array_sizes(without, chunks, kScanBytes, kTeamLanes).total_bytes,
             deformable_bytes);
+}
+
+// Only a team keeps neighbour lists: one lane per particle (large scenes) spends no bytes on them,
+// and every team size has lists of at least two entries (a list holds capacity - 1 neighbours).
+TEST_F(DeviceArraysTest, OnlyTeamsKeepNeighbourLists) {
+  const std::size_t n = setup.size();
+  const std::size_t one_lane = kernels::device_array_sizes(scene, chunks, kScanBytes, 1).total_bytes;
+  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes, 1);
+  EXPECT_EQ(bytes_of(listed, "list_count"), 0u);
+  EXPECT_EQ(bytes_of(listed, "list_index"), 0u);
+  for (const unsigned lanes : {2u, 4u, 8u}) {
+    SCOPED_TRACE(::testing::Message() << lanes << " lanes");
+    const std::uint32_t capacity = kernels::team_list_capacity(lanes);
+    EXPECT_GE(capacity, 2u);
+    EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes, lanes).total_bytes - one_lane,
+              n * lanes * (1 + capacity) * sizeof(std::uint32_t));
+  }
 }
 
 // Synthetic bodies: a rigid body of 2 kChunk + 5 particles and a deformable one of 3 particles

@@ -6,6 +6,7 @@
 // enough to wrap, so periodic images share cells with real neighbours.
 #include "common/fluid_physics.hpp"
 #include "common/neighbour_list.hpp"
+#include "cuda/device_arrays.hpp"
 #include "sorted_particles.hpp"
 
 #include <gtest/gtest.h>
@@ -24,13 +25,14 @@ using kernels::Vec4;
 
 constexpr std::uint32_t kWallBody = 0, kFluidBody = 1, kDeformableBody = 2;
 
-// 12 x 12 x 12 lattice sites, spacing dx compressed by up to 4 %, jittered by 0.1 dx: the lowest
+// 12 x 12 x 12 lattice sites, spacing dx (compressed), jittered by 0.1 dx: the lowest
 // two layers are wall, the sites with x above the middle deformable, the rest fluid. Cells of side
 // h = 2 dx, 4 per axis: the lattice spans 6 cells, so the grid wraps.
 class JitteredLattice {
  public:
-  explicit JitteredLattice(std::mt19937_64& random) {
-    const float dx = 0.02f * std::uniform_real_distribution<float>(0.96f, 1.0f)(random);
+  // Spacing 0.02 m times `compression` (1: none).
+  JitteredLattice(std::mt19937_64& random, float compression) {
+    const float dx = 0.02f * compression;
     std::uniform_real_distribution<float> jitter(-0.1f * dx, 0.1f * dx);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
     std::vector<Vec4> particles;
@@ -80,6 +82,10 @@ class JitteredLattice {
   kernels::StepParameters step_{};
 };
 
+float compressed_by_up_to_4_percent(std::mt19937_64& random) {
+  return std::uniform_real_distribution<float>(0.96f, 1.0f)(random);
+}
+
 // Lists of `capacity` entries for every particle of the view.
 struct Lists {
   std::vector<std::uint32_t> count, index;
@@ -87,7 +93,7 @@ struct Lists {
 
   Lists(const kernels::SortedView& v, std::uint32_t capacity)
       : count(v.step.particle_count), index(std::size_t{v.step.particle_count} * capacity) {
-    lists = {capacity, count.data(), index.data()};
+    lists = kernels::particle_lists(capacity, count.data(), index.data());
     for (std::uint32_t s = 0; s < v.step.particle_count; ++s) kernels::record_neighbours(v, lists, s);
   }
 };
@@ -116,7 +122,7 @@ bool same_bits(Vec3 a, Vec3 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.
 
 TEST(NeighbourLists, HoldExactlyTheParticlesWithinTheSupportInTheWalksOrder) {
   std::mt19937_64 random(20110319);
-  const JitteredLattice lattice(random);
+  const JitteredLattice lattice(random, compressed_by_up_to_4_percent(random));
   const kernels::SortedView v = lattice.view();
   const Lists lists(v, 64);
   std::uint32_t most = 0;
@@ -140,7 +146,7 @@ TEST(NeighbourLists, HoldExactlyTheParticlesWithinTheSupportInTheWalksOrder) {
 
 TEST(NeighbourLists, SumsOverTheListAreTheGridWalksBits) {
   std::mt19937_64 random(7);
-  const JitteredLattice lattice(random);
+  const JitteredLattice lattice(random, compressed_by_up_to_4_percent(random));
   const kernels::SortedView v = lattice.view();
   const Lists lists(v, 64);
   int deformable_with_foreign_neighbours = 0;
@@ -165,7 +171,7 @@ TEST(NeighbourLists, SumsOverTheListAreTheGridWalksBits) {
 // full); a particle with capacity or more walks the grid, and both give the walk's sums.
 TEST(NeighbourLists, AFullListFallsBackToTheGridWalk) {
   std::mt19937_64 random(11);
-  const JitteredLattice lattice(random);
+  const JitteredLattice lattice(random, compressed_by_up_to_4_percent(random));
   const kernels::SortedView v = lattice.view();
   const Lists wide(v, 64);
   const std::uint32_t s = lattice.size() / 2;
@@ -183,6 +189,139 @@ TEST(NeighbourLists, AFullListFallsBackToTheGridWalk) {
   const float walked = kernels::density_sum(v, s, 0, 1).delta;
   EXPECT_TRUE(same_bits(walked, kernels::density_sum_over(v, s, kernels::neighbours_of(v, too_small.lists, s)).delta));
   EXPECT_TRUE(same_bits(walked, kernels::density_sum_over(v, s, kernels::neighbours_of(v, just_enough.lists, s)).delta));
+}
+
+// ---- A GPU team's lists: one per lane, recorded by the density pass, visited by the force pass ----
+
+// The lists of a team of `lanes` lanes for every particle of the view, laid out as on the GPU, and
+// the density sums of their recording pass (density_sum_listing).
+struct TeamLists {
+  std::uint32_t lanes;
+  std::vector<std::uint32_t> count, index;
+  kernels::NeighbourLists lists;
+  std::vector<float> density;  // per list: its lane's share of the particle's density sum
+
+  static constexpr std::uint32_t kUnwritten = 0xdeadbeefu;
+
+  TeamLists(const kernels::SortedView& v, std::uint32_t lanes_, std::uint32_t capacity)
+      : lanes(lanes_),
+        count(std::size_t{v.step.particle_count} * lanes, kUnwritten),
+        index(count.size() * capacity, kUnwritten),
+        density(count.size()) {
+    lists = kernels::lane_lists(capacity, static_cast<std::uint32_t>(count.size()), count.data(), index.data());
+    for (std::uint32_t s = 0; s < v.step.particle_count; ++s) {
+      for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+        density[list_of(s, lane)] = kernels::density_sum_listing(v, s, lane, lanes, lists, list_of(s, lane)).delta;
+      }
+    }
+  }
+  std::uint32_t list_of(std::uint32_t s, std::uint32_t lane) const { return s * lanes + lane; }
+  // Whether neither the list's count nor any of its entries was written.
+  bool untouched(std::uint32_t list) const {
+    bool untouched = count[list] == kUnwritten;
+    for (std::uint32_t k = 0; k < lists.capacity; ++k) untouched = untouched && entry(list, k) == kUnwritten;
+    return untouched;
+  }
+  std::uint32_t entry(std::uint32_t list, std::uint32_t k) const { return index[list + std::size_t{k} * count.size()]; }
+  // The list's entries as recorded, or nothing for an overflowed or unrecorded list.
+  std::vector<std::uint32_t> entries(std::uint32_t list) const {
+    std::vector<std::uint32_t> out;
+    if (count[list] >= lists.capacity) return out;
+    for (std::uint32_t k = 0; k < count[list]; ++k) out.push_back(entry(list, k));
+    return out;
+  }
+};
+
+// Lane `lane`'s share of the walk, filtered as the force sum's list must be: the candidates within
+// the support, but a deformable particle's own body.
+std::vector<std::uint32_t> force_neighbours_of_share(const kernels::SortedView& v, std::uint32_t s, std::uint32_t lane,
+                                                     std::uint32_t lanes) {
+  const std::uint32_t body_s = kernels::body_of(v.position[s]);
+  std::vector<std::uint32_t> out;
+  v.grid.for_each_candidate(kernels::xyz(v.position[s]), lane, lanes, [&](std::uint32_t t) {
+    if (body_s == kDeformableBody && kernels::body_of(v.position[t]) == body_s) return;
+    if (within_support(v, s, t)) out.push_back(t);
+  });
+  return out;
+}
+
+struct SumAndMet {
+  kernels::ForceSum sum;
+  std::vector<std::uint32_t> met_boundary;  // in the order met: the wall check keeps the last ones
+};
+
+// The team lists must leave every sum of the lanes' walks as it was, bit for bit, with the
+// boundary neighbours met in the same order, whether a list holds its lane's neighbours or
+// overflows (capacity 2 holds one neighbour; 64 holds all of them).
+TEST(TeamNeighbourLists, KeepEveryLanesSumsAndListExactlyItsForceNeighbours) {
+  std::mt19937_64 random(20261124);
+  const JitteredLattice lattice(random, compressed_by_up_to_4_percent(random));
+  const kernels::SortedView v = lattice.view();
+  for (const std::uint32_t lanes : {2u, 4u, 8u}) {
+    for (const std::uint32_t capacity : {2u, kernels::team_list_capacity(lanes), 64u}) {
+      SCOPED_TRACE(::testing::Message() << lanes << " lanes, capacity " << capacity);
+      const TeamLists team(v, lanes, capacity);
+      std::size_t overflowed = 0, listed = 0;
+      for (std::uint32_t s = 0; s < lattice.size(); ++s) {
+        const kernels::ForceParticle i = kernels::load_force_particle(v, s);
+        for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+          const std::uint32_t list = team.list_of(s, lane);
+          ASSERT_TRUE(same_bits(team.density[list], kernels::density_sum(v, s, lane, lanes).delta)) << "particle " << s;
+          if (i.body == kWallBody) {
+            ASSERT_TRUE(team.untouched(list)) << "a boundary particle records no list: particle " << s;
+            continue;
+          }
+          const std::vector<std::uint32_t> expected = force_neighbours_of_share(v, s, lane, lanes);
+          ASSERT_EQ(team.count[list], expected.size()) << "particle " << s << ", lane " << lane;
+          if (expected.size() >= capacity) {
+            ++overflowed;
+          } else {
+            ++listed;
+            ASSERT_EQ(team.entries(list), expected) << "particle " << s << ", lane " << lane;
+          }
+          SumAndMet walked, from_list;
+          walked.sum = kernels::force_sum_over(
+              v, i, [&](auto&& visit) { v.grid.for_each_candidate(i.x, lane, lanes, visit); },
+              [&](std::uint32_t t) { walked.met_boundary.push_back(t); });
+          from_list.sum = kernels::force_sum_listed(v, i, lane, lanes, team.lists, list,
+                                                    [&](std::uint32_t t) { from_list.met_boundary.push_back(t); });
+          ASSERT_TRUE(same_bits(walked.sum.pressure, from_list.sum.pressure)) << "particle " << s << ", lane " << lane;
+          ASSERT_TRUE(same_bits(walked.sum.viscosity, from_list.sum.viscosity)) << "particle " << s;
+          ASSERT_TRUE(same_bits(walked.sum.interaction, from_list.sum.interaction)) << "particle " << s;
+          ASSERT_EQ(walked.sum.boundary_neighbours, from_list.sum.boundary_neighbours) << "particle " << s;
+          ASSERT_EQ(walked.met_boundary, from_list.met_boundary) << "particle " << s;
+        }
+      }
+      // Both of for_each_listed's paths ran.
+      EXPECT_GT(listed, 0u);
+      if (capacity == 2) {
+        EXPECT_GT(overflowed, 0u);
+      }
+      if (capacity == 64) {
+        EXPECT_EQ(overflowed, 0u);
+      }
+    }
+  }
+}
+
+// The capacities the GPU allocates (team_list_capacity) hold every lane's list of a lattice
+// compressed by 4 % along each axis (its density 13 % above rest, beyond what the weakly
+// compressible fluids reach), so the force pass does not walk the cells again in the common case.
+TEST(TeamNeighbourLists, CapacitiesHoldACompressedLatticesLists) {
+  std::mt19937_64 random(3);
+  const JitteredLattice lattice(random, 0.96f);
+  const kernels::SortedView v = lattice.view();
+  for (const std::uint32_t lanes : {2u, 4u, 8u}) {
+    const std::uint32_t capacity = kernels::team_list_capacity(lanes);
+    const TeamLists team(v, lanes, capacity);
+    std::uint32_t longest = 0;
+    for (const std::uint32_t c : team.count) {
+      if (c != TeamLists::kUnwritten) longest = std::max(longest, c);
+    }
+    EXPECT_LT(longest, capacity) << lanes << " lanes";
+    // And little more: every lane's entries are device memory.
+    EXPECT_GE(longest + 2, capacity) << lanes << " lanes";
+  }
 }
 
 }  // namespace
