@@ -50,7 +50,10 @@ __device__ BondSums team_sum(const BondSums& s) {
   return {team_sum<Lanes>(s.moment), team_sum<Lanes>(s.current_gradient), team_sum<Lanes>(s.rest_gradient)};
 }
 
-// The deformable passes split each particle's bonds over a team the same way.
+// The deformable passes split each particle's bonds over a team the same way. The rest of step 1
+// (store_rotation_and_stress: the rotation's iterations, the stress) is serial per particle: the
+// teams hand their sums through shared memory to one thread per particle, so a warp runs it for
+// 32 particles at once rather than for its 32 / Lanes teams with the other lanes idle.
 template <unsigned Lanes>
 __global__ void rotation_stress_kernel(DeformableView view) {
   const TeamSeat seat = team_seat<Lanes>();
@@ -59,7 +62,16 @@ __global__ void rotation_stress_kernel(DeformableView view) {
   BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
   if (active) sums = bond_sums_share(view, d, lane, Lanes);
   sums = team_sum<Lanes>(sums);
-  if (active && lane == 0) store_rotation_and_stress(view, d, sums);
+  if constexpr (Lanes == 1) {
+    if (active) store_rotation_and_stress(view, d, sums);
+  } else {
+    constexpr unsigned kTeams = kBlock / Lanes;  // the block's particles
+    __shared__ BondSums team_sums[kTeams];
+    if (lane == 0) team_sums[threadIdx.x / Lanes] = sums;
+    __syncthreads();
+    const std::uint32_t particle = blockIdx.x * kTeams + threadIdx.x;
+    if (threadIdx.x < kTeams && particle < view.count) store_rotation_and_stress(view, particle, team_sums[threadIdx.x]);
+  }
 }
 
 template <unsigned Lanes>
