@@ -60,7 +60,7 @@ class CudaBackend final : public Backend {
   std::string device_name_;
   ChunkTables chunks_;
   unsigned team_lanes_ = 1;             // lanes per particle in the neighbour sums (choose_team_lanes)
-  unsigned deformable_team_lanes_ = 1;  // lanes per deformable particle in its bond sums
+  unsigned deformable_team_lanes_ = 1;  // lanes per deformable particle in its bond sums (choose_bond_team_lanes)
   DeviceState state_;
   BodyReadback readback_;
   std::vector<std::array<Vec3, 2>> external_wrench_;  // per movable rigid body: host copy of F, tau
@@ -81,7 +81,7 @@ CudaBackend::CudaBackend(ParticleSetup setup)
       device_name_(require_usable_device()),
       chunks_(make_chunk_tables(scene_, setup_.bodies)),
       team_lanes_(choose_team_lanes(setup_.size(), resident_threads())),
-      deformable_team_lanes_(choose_team_lanes(scene_.deformable_body.size(), resident_threads())),
+      deformable_team_lanes_(choose_bond_team_lanes(scene_.deformable_body.size(), resident_threads())),
       state_(allocate_device_state(scene_, chunks_, scan_temp_bytes(scene_.grid.cell_count()), team_lanes_,
                                    device_name_)),
       readback_(scene_, setup_.bodies, chunks_),

@@ -171,14 +171,28 @@ void with_team_lanes(unsigned lanes, Launch&& launch) {
   }
 }
 
+// The most lanes (up to 8) that keep particles * lanes within `threads`.
+unsigned most_lanes_within(std::size_t particles, std::size_t threads) {
+  unsigned lanes = 8;
+  while (lanes > 1 && particles * lanes > threads) lanes /= 2;
+  return lanes;
+}
+
 }  // namespace
 
 // A small scene then has ~8x the threads in flight; a scene that fills the GPU on its own keeps
 // one lane per particle, which wastes no shuffles.
 unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads) {
-  unsigned lanes = 8;
-  while (lanes > 1 && particles * lanes > 2 * resident_threads) lanes /= 2;
-  return lanes;
+  return most_lanes_within(particles, 2 * resident_threads);
+}
+
+// The bond passes' ~60 registers let half as many threads reside as the GPU could hold, and since
+// their teams hand the serial rest of step 1 to one thread per particle, more lanes pay only while
+// they fit one wave of those: on an H100 the 30k deformable block steps in 77.1 us with 4 lanes
+// against 82.5 with 8, the 1 cm deformable drop (50k deformable particles) runs fastest with 2
+// (results/performance.md).
+unsigned choose_bond_team_lanes(std::size_t deformables, std::size_t resident_threads) {
+  return most_lanes_within(deformables, resident_threads / 2);
 }
 
 void launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream) {
