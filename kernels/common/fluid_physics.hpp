@@ -93,7 +93,7 @@ MSSPH_HD DensitySum density_sum_listing(const SortedView& v, std::uint32_t s, st
   const DensitySum sum = density_sum_over(
       v, s, [&](auto&& visit) { v.grid.for_each_candidate(xyz(p_i), lane, lanes, visit); },
       [&](std::uint32_t t) {
-        if (listed) recorder.offer(t, true);
+        if (listed) recorder.record(t);
       });
   if (listed) lists.count[list] = recorder.count();
   return sum;

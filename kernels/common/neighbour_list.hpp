@@ -5,12 +5,15 @@
 // (add_density_pair, add_force_pair reject r^2 >= h^2 with the same arithmetic), a sum over the
 // list takes the same terms in the same order as a sum over the walk: the same bits.
 //
-// Two producers, one layout and one reader:
+// One layout, written and read by two pairs of loops:
 // - the host records one list per particle before its sums (record_neighbours), without a branch
-//   on the distance (every candidate is offered, the count advances only for one within the
-//   support), since on the host that branch is mispredicted about one candidate in six;
+//   on the distance (every candidate is written, the count advances only for one within the
+//   support), since on the host that branch is mispredicted about one candidate in six; its
+//   density and force passes read the list (for_each_neighbour);
 // - a GPU team's density pass records one list per lane, its share of the walk, as it sums
-//   (density_sum_over's `summed`), and the force pass visits it instead of walking the cells again.
+//   (density_sum_listing, through ListRecorder), and the force pass visits it instead of walking
+//   the cells again (for_each_listed).
+// The host's loops use that its rows are contiguous, the GPU's that a warp's lanes read together.
 // Once a list is full its last entry takes every further candidate, so a list holds at most
 // capacity - 1 neighbours; a list whose count reaches its capacity overflowed, and its reader
 // falls back to the walk it was recorded from.
@@ -44,19 +47,20 @@ MSSPH_HD NeighbourLists lane_lists(std::uint32_t capacity, std::uint32_t lists, 
   return {capacity, 1, lists, count, index};
 }
 
-// Writes one list as its producer meets the candidates. It keeps a pointer to the next entry
-// rather than an index: on a GPU the recording runs whenever one lane of a warp meets a neighbour,
-// nearly every candidate, so each instruction of it counts.
+// Writes a GPU lane's list as its density pass meets the neighbours. It keeps a pointer to the
+// next entry rather than an index: a warp runs the recording whenever one of its lanes meets a
+// neighbour, nearly every candidate, so each instruction of it counts (a 64-bit multiply there
+// cost the 30k fluid step 2 us on an H100).
 class ListRecorder {
  public:
   MSSPH_HD ListRecorder(const NeighbourLists& lists, std::uint32_t list)
       : next_(lists.first_entry(list)), stride_(lists.entry_stride), last_(lists.capacity - 1) {}
 
-  // Writes t at the next free entry (the last once full); only a neighbour takes the entry.
-  MSSPH_HD void offer(std::uint32_t t, bool neighbour) {
+  // Writes neighbour t at the next free entry (the last once full).
+  MSSPH_HD void record(std::uint32_t t) {
     *next_ = t;
-    next_ += neighbour && count_ < last_ ? stride_ : 0u;
-    count_ += neighbour ? 1u : 0u;
+    next_ += count_ < last_ ? stride_ : 0u;
+    ++count_;
   }
   MSSPH_HD std::uint32_t count() const { return count_; }
 
@@ -67,14 +71,19 @@ class ListRecorder {
   std::uint32_t count_ = 0;
 };
 
-// Records sorted particle s's neighbours (itself included, r = 0) into its list.
+// Records sorted particle s's neighbours (itself included, r = 0) into its row of the host's
+// lists (particle_lists: entries contiguous, which this loop relies on; with the GPU's recorder
+// and its stride the cpu backend's grid phase took 25 % longer).
 MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists, std::uint32_t s) {
   const Vec3 x_i = xyz(v.position[s]);
-  ListRecorder list(lists, s);
+  std::uint32_t* list = lists.first_entry(s);
+  const std::uint32_t last = lists.capacity - 1;
+  std::uint32_t count = 0;
   v.grid.for_each_candidate(x_i, [&](std::uint32_t t) {
-    list.offer(t, squared_norm(x_i - xyz(v.position[t])) < v.step.smoothing.h2);
+    list[count < last ? count : last] = t;
+    count += squared_norm(x_i - xyz(v.position[t])) < v.step.smoothing.h2 ? 1u : 0u;
   });
-  lists.count[s] = list.count();
+  lists.count[s] = count;
 }
 
 // Calls visit(t) for every entry of list `list` in its order; an overflowed list calls
@@ -91,11 +100,18 @@ MSSPH_HD void for_each_listed(const NeighbourLists& lists, std::uint32_t list, W
   for (std::uint32_t k = 0; k < count; ++k, entry += lists.entry_stride) visit(*entry);
 }
 
-// Calls visit(t) for every neighbour t of sorted particle s (the host's lists), in the grid walk's order.
+// Calls visit(t) for every neighbour t of sorted particle s in the host's lists, in the grid
+// walk's order: for_each_listed for a contiguous row (through for_each_listed and its runtime
+// stride the cpu backend's density and force passes measured 3-10 % slower on the 2-core CI machine).
 template <class Visit>
 MSSPH_HD void for_each_neighbour(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, Visit&& visit) {
-  for_each_listed(
-      lists, s, [&](auto&& all) { v.grid.for_each_candidate(xyz(v.position[s]), all); }, visit);
+  const std::uint32_t count = lists.count[s];
+  if (count >= lists.capacity) {
+    v.grid.for_each_candidate(xyz(v.position[s]), visit);
+    return;
+  }
+  const std::uint32_t* list = lists.first_entry(s);
+  for (std::uint32_t k = 0; k < count; ++k) visit(list[k]);
 }
 
 // Sorted particle s's list as the candidate source of density_sum_over and force_sum_over.
