@@ -4,7 +4,7 @@
 
 #include <cub/cub.cuh>
 
-#include <cstring>
+#include <algorithm>
 
 namespace mssph::kernels {
 namespace {
@@ -40,63 +40,43 @@ BodyReadback::BodyReadback(const FloatScene& scene, const std::vector<BodySetup>
     : scene_(scene),
       bodies_(bodies),
       chunks_(chunks.body),
-      layout_(chunks.body.size(), scene.rigid_bodies.size()),
-      readback_host_(layout_.bytes),
-      tick_host_(1) {
+      partial_sums_(chunks.body.size()),
+      rigid_bodies_(scene.rigid_bodies.size()) {
   for (const RigidBody& r : scene.rigid_bodies) {
     float reach = 0.0f;
     for (std::uint32_t i = r.first; i < r.first + r.count; ++i) reach = std::max(reach, norm(xyz(scene.rest_offset[i])));
     rigid_reach_.push_back(reach);
   }
+  set_rigid_bodies(scene.rigid_bodies);  // what the device starts from
 }
 
-// The chunk sums and a device-side copy of the rigid bodies land side by side in the read-back
-// buffer, which comes back in one copy.
-std::vector<BodyState> BodyReadback::body_states(DeviceState& state, std::uint64_t steps, cudaStream_t stream) {
-  auto* partial_sums = reinterpret_cast<BodySums*>(state.readback.data());
+void BodyReadback::set_rigid_bodies(const std::vector<RigidBody>& bodies) {
+  std::copy(bodies.begin(), bodies.end(), rigid_bodies_.data());
+}
+
+std::vector<BodyState> BodyReadback::body_states(DeviceState& state, cudaStream_t stream) {
   body_sums_kernel<<<static_cast<unsigned>(chunks_.size()), kBlock, 0, stream>>>(
-      state.body_chunks.data(), state.bodies.data(), canonical_state(state), state.deformation.data(), partial_sums);
+      state.body_chunks.data(), state.bodies.data(), canonical_state(state), state.deformation.data(),
+      partial_sums_.device_data());
   cuda_check(cudaGetLastError(), "launch body sums");
-  if (!scene_.rigid_bodies.empty()) {
-    cuda_check(cudaMemcpyAsync(state.readback.data() + layout_.rigid_offset, state.rigid_bodies.data(),
-                               state.rigid_bodies.bytes(), cudaMemcpyDeviceToDevice, stream),
-               "gather rigid bodies");
-  }
-  const unsigned char* bytes = readback_host_.data();
-  cuda_check(cudaMemcpyAsync(readback_host_.data(), state.readback.data(), readback_host_.bytes(), cudaMemcpyDeviceToHost,
-                             stream),
-             "download body states");
   cuda_check(cudaStreamSynchronize(stream), "body states");
-  std::vector<BodySums> partial(chunks_.size());
-  std::memcpy(partial.data(), bytes, partial.size() * sizeof(BodySums));
-  rigid_host_.resize(scene_.rigid_bodies.size());
-  std::memcpy(rigid_host_.data(), bytes + layout_.rigid_offset, rigid_host_.size() * sizeof(RigidBody));
-  rigid_host_step_ = steps;
   std::vector<BodySums> sums(bodies_.size(), zero_body_sums());
-  for (std::size_t c = 0; c < partial.size(); ++c) sums[chunks_[c].body] = combine(sums[chunks_[c].body], partial[c]);
+  for (std::size_t c = 0; c < chunks_.size(); ++c) {
+    sums[chunks_[c].body] = combine(sums[chunks_[c].body], partial_sums_.data()[c]);
+  }
   std::vector<BodyState> states;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const std::uint32_t r = scene_.bodies[b].rigid_index;
-    states.push_back(to_body_state(scene_, sums[b], r == kNotRigid ? nullptr : &rigid_host_[r], bodies_[b]));
+    states.push_back(to_body_state(scene_, sums[b], r == kNotRigid ? nullptr : rigid_bodies_.data() + r, bodies_[b]));
   }
   return states;
 }
 
-// What a haptic tick needs: one small device-to-host copy, or none when a logged sample has read
-// every body back since the last step. The fastest particle's speed is bounded by
+// What a haptic tick needs: a wait for the stream. The fastest particle's speed is bounded by
 // |v| + |omega| r_max instead of being summed over the particles.
-BodyState BodyReadback::rigid_body_state(const DeviceState& state, std::size_t body, std::uint32_t rigid,
-                                         std::uint64_t steps, cudaStream_t stream) {
-  RigidBody copy{};
-  if (rigid_host_step_ == steps) {
-    copy = rigid_host_[rigid];
-  } else {
-    cuda_check(cudaMemcpyAsync(tick_host_.data(), state.rigid_bodies.data() + rigid, sizeof copy,
-                               cudaMemcpyDeviceToHost, stream),
-               "download rigid body");
-    cuda_check(cudaStreamSynchronize(stream), "download rigid body");
-    copy = *tick_host_.data();
-  }
+BodyState BodyReadback::rigid_body_state(std::size_t body, std::uint32_t rigid, cudaStream_t stream) {
+  cuda_check(cudaStreamSynchronize(stream), "wait for the rigid bodies");
+  const RigidBody& copy = rigid_bodies_.data()[rigid];
   BodySums sums = zero_body_sums();
   const double bound = norm(copy.velocity) + norm(angular_velocity(copy)) * rigid_reach_[rigid];
   sums.max_speed = bound * bound;

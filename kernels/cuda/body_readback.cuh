@@ -1,9 +1,9 @@
 #pragma once
-// What the logs and the haptic loop read back from the GPU: every body's sums for a logged
-// sample (one kernel, one copy), and one rigid body's state for a haptic tick, from the copy a
-// logged sample left when no step has run since.
+// What the logs and the haptic loop read back from the GPU, from mapped host memory that the
+// kernels store into (mapped_host_buffer.hpp): every body's sums for a logged sample (one kernel
+// and a wait), and the movable rigid bodies, which every step leaves there (a wait only).
 #include "device_state.cuh"
-#include "pinned_buffer.hpp"
+#include "mapped_host_buffer.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -15,22 +15,24 @@ class BodyReadback {
   // The scene and bodies are the backend's and outlive this.
   BodyReadback(const FloatScene& scene, const std::vector<BodySetup>& bodies, const ChunkTables& chunks);
 
-  // Every body's logged state after `steps` steps.
-  std::vector<BodyState> body_states(DeviceState& state, std::uint64_t steps, cudaStream_t stream);
-  // The state of movable rigid body `rigid` (BodyParameters::rigid_index) of `body` after `steps`.
-  BodyState rigid_body_state(const DeviceState& state, std::size_t body, std::uint32_t rigid, std::uint64_t steps,
-                             cudaStream_t stream);
+  // Where the step's rigid-body kernel stores each movable rigid body once integrated.
+  RigidBody* rigid_bodies_on_device() { return rigid_bodies_.device_data(); }
+  // After the host replaced the device's rigid bodies (a restored checkpoint), with no step in
+  // flight: the same records here.
+  void set_rigid_bodies(const std::vector<RigidBody>& bodies);
+
+  // Every body's logged state after the steps launched so far.
+  std::vector<BodyState> body_states(DeviceState& state, cudaStream_t stream);
+  // The state of movable rigid body `rigid` (BodyParameters::rigid_index) of `body`, likewise.
+  BodyState rigid_body_state(std::size_t body, std::uint32_t rigid, cudaStream_t stream);
 
  private:
   const FloatScene& scene_;
   const std::vector<BodySetup>& bodies_;
   std::vector<BodyChunk> chunks_;   // the body chunks, in the order of their partial sums
-  ReadbackLayout layout_;
   std::vector<float> rigid_reach_;  // per movable rigid body: max |r0| over its particles [m]
-  std::vector<RigidBody> rigid_host_;     // the rigid bodies as last read back...
-  std::uint64_t rigid_host_step_ = ~0ull;  // ...after this many steps
-  PinnedBuffer<unsigned char> readback_host_;  // where the read-back buffer lands
-  PinnedBuffer<RigidBody> tick_host_;          // where a haptic tick's rigid body lands
+  MappedHostBuffer<BodySums> partial_sums_;  // per body chunk, stored by the body-sums kernel
+  MappedHostBuffer<RigidBody> rigid_bodies_;  // as the last step left them
 };
 
 }  // namespace mssph::kernels

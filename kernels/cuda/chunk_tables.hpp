@@ -64,15 +64,4 @@ inline ChunkTables make_chunk_tables(const FloatScene& scene, const std::vector<
   return tables;
 }
 
-// What a logged sample reads back, in one allocation so that it comes back in one copy: the
-// body-sum partials of every chunk, then (16-byte aligned) a copy of the rigid bodies' states.
-struct ReadbackLayout {
-  std::size_t rigid_offset;  // [bytes]
-  std::size_t bytes;
-
-  ReadbackLayout(std::size_t body_chunks, std::size_t rigid_bodies)
-      : rigid_offset((body_chunks * sizeof(BodySums) + 15) / 16 * 16),
-        bytes(rigid_offset + rigid_bodies * sizeof(RigidBody)) {}
-};
-
 }  // namespace mssph::kernels

@@ -33,9 +33,9 @@ class CudaBackend final : public Backend {
   double time() const override { return time_; }
   void set_external_wrench(std::size_t body, const Eigen::Vector3d& force, const Eigen::Vector3d& torque) override;
   void step() override;
-  std::vector<BodyState> body_states() override { return readback_.body_states(state_, steps_, stream_); }
+  std::vector<BodyState> body_states() override { return readback_.body_states(state_, stream_); }
   BodyState rigid_body_state(std::size_t body) override {
-    return readback_.rigid_body_state(state_, body, movable_rigid_index(scene_, body), steps_, stream_);
+    return readback_.rigid_body_state(body, movable_rigid_index(scene_, body), stream_);
   }
   ParticleSnapshot snapshot() override;
   std::vector<double> last_phase_seconds() const override;
@@ -133,7 +133,7 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
   mark(kForces);
   launch_forces(scene_, state_, team_lanes_, stream);
   mark(kIntegration);
-  launch_rigid_bodies(scene_, state_, stream);
+  launch_rigid_bodies(scene_, state_, readback_.rigid_bodies_on_device(), stream);
   mark(kPhaseCount);
   cuda_check(cudaGetLastError(), "launch step kernels");
 }
@@ -172,6 +172,7 @@ void CudaBackend::restore_state(const StateArrays& saved) {
   state_.velocity.upload(restored.velocity);
   state_.fixed.upload(restored.fixed);
   state_.rigid_bodies.upload(restored.rigid_bodies);
+  readback_.set_rigid_bodies(restored.rigid_bodies);
   if (!restored.rotation.empty()) state_.rotation.upload(restored.rotation);
   for (std::size_t b = 0; b < restored.rigid_bodies.size(); ++b) {
     external_wrench_[b] = {restored.rigid_bodies[b].external_force, restored.rigid_bodies[b].external_torque};

@@ -55,7 +55,7 @@ struct DeviceArrays {
   Array<float> own_rest_number_density;  // canonical, n entries
   Array<Quat> rotation;
   Array<Mat3> corrected_stress_action, deformation;  // K_i L_i (elastic_physics.hpp), F_i
-  // Bodies, the rigid-body chunk reductions and the logged sums' read-back.
+  // Bodies, the rigid-body chunk reductions and the logged sums' chunks (body_readback.cuh).
   Array<BodyParameters> bodies;
   Array<RigidBody> rigid_bodies;
   Array<RigidChunk> rigid_chunks;
@@ -63,7 +63,6 @@ struct DeviceArrays {
   Array<Wrench> chunk_wrench;
   Array<std::uint32_t> rigid_tickets;  // per rigid body: chunks done this step
   Array<BodyChunk> body_chunks;
-  Array<unsigned char> readback;  // ReadbackLayout
 };
 
 // Entries of each lane's neighbour list when a team of `lanes` lanes shares each particle's
@@ -133,10 +132,6 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   // Zero at the start; the block that takes a body's last ticket sets it back to zero.
   visit("rigid_tickets", a.rigid_tickets, Filled<std::uint32_t>{scene.rigid_bodies.size(), 0u});
   visit("body_chunks", a.body_chunks, copy_of(chunks.body));
-  // Zero at the start: it is read back whole, the padding between the sums and the rigid bodies
-  // included, which no kernel writes.
-  visit("readback", a.readback,
-        Filled<unsigned char>{ReadbackLayout(chunks.body.size(), scene.rigid_bodies.size()).bytes, 0});
 }
 
 // The size of one array, for counting before allocating.

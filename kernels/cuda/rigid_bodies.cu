@@ -14,10 +14,11 @@ struct WrenchSum {
 // One block per chunk: the wrench of its particles' interaction forces about the body's centre.
 // The block that finishes a body's last chunk (a ticket counter tells) then adds the body's chunk
 // wrenches in chunk order and integrates the body (eq. 8, 9): which block does it varies, the sum's
-// order does not, so runs repeat bit for bit.
-__global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBody* bodies, CanonicalState state,
-                                              Wrench* partial, const std::uint32_t* first_chunk,
-                                              std::uint32_t* tickets, StepParameters step) {
+// order does not, so runs repeat bit for bit. The body goes to `host_copy` too.
+__global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBody* bodies, RigidBody* host_copy,
+                                              CanonicalState state, Wrench* partial,
+                                              const std::uint32_t* first_chunk, std::uint32_t* tickets,
+                                              StepParameters step) {
   using BlockReduce = cub::BlockReduce<Wrench, kBlock>;
   __shared__ typename BlockReduce::TempStorage reduce_storage;
   __shared__ bool last;
@@ -49,6 +50,7 @@ __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBod
   body.interaction_torque = sum.torque;
   integrate_rigid_body(body, step.gravity, step.dt);
   bodies[chunk.rigid] = body;
+  host_copy[chunk.rigid] = body;
 }
 
 // kChunk / kBlock blocks per chunk, a thread per particle: its particles follow the body. (One
@@ -75,13 +77,12 @@ __global__ void rigid_place_kernel(const RigidChunk* chunks, const RigidBody* bo
 
 }  // namespace
 
-void launch_rigid_bodies(const FloatScene& scene, DeviceState& state, cudaStream_t stream) {
+void launch_rigid_bodies(const FloatScene& scene, DeviceState& state, RigidBody* host_copy, cudaStream_t stream) {
   if (scene.rigid_bodies.empty()) return;
   const auto chunks = static_cast<unsigned>(state.rigid_chunks.size());
-  rigid_wrench_integrate_kernel<<<chunks, kBlock, 0, stream>>>(state.rigid_chunks.data(), state.rigid_bodies.data(),
-                                                               canonical_state(state), state.chunk_wrench.data(),
-                                                               state.first_rigid_chunk.data(),
-                                                               state.rigid_tickets.data(), scene.step);
+  rigid_wrench_integrate_kernel<<<chunks, kBlock, 0, stream>>>(
+      state.rigid_chunks.data(), state.rigid_bodies.data(), host_copy, canonical_state(state),
+      state.chunk_wrench.data(), state.first_rigid_chunk.data(), state.rigid_tickets.data(), scene.step);
   rigid_place_kernel<<<chunks * kPlaceBlocksPerChunk, kBlock, 0, stream>>>(
       state.rigid_chunks.data(), state.rigid_bodies.data(), canonical_state(state), state.rest_offset.data());
 }
