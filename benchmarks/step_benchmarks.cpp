@@ -83,6 +83,7 @@ void time_steps(benchmark::State& state, const Scene& scene, const std::string& 
   std::vector<std::string> phases = sim.backend().phase_names();
   if (sim.coupled()) phases.push_back("coupling");
   std::vector<double> phase_seconds(phases.size(), 0.0);
+  const std::optional<std::uint64_t> builds_before = sim.backend().neighbour_grid_builds();
   for (auto _ : state) {
     const auto start = Clock::now();
     for (int k = 0; k < kBatch; ++k) {
@@ -93,6 +94,12 @@ void time_steps(benchmark::State& state, const Scene& scene, const std::string& 
     state.SetIterationTime(seconds_since(start));
     // The coupling phase is host wall time, including the wait for the proxy's read-back.
     if (sim.coupled()) phase_seconds.back() += sim.last_coupling_seconds();
+  }
+  // A backend that keeps neighbour lists rebuilds the grid on some steps only: how often it did
+  // in the timed steps.
+  if (builds_before) {
+    const std::uint64_t builds = *sim.backend().neighbour_grid_builds() - *builds_before;
+    state.counters["grid_builds_per_step"] = static_cast<double>(builds) / (static_cast<double>(state.iterations()) * kBatch);
   }
   // Where a step's time goes, from one further step per iteration with phase timing on (device
   // events on a GPU), outside the timed batches: the events would cost the timed steps ~10 us.

@@ -48,10 +48,14 @@ StateArrays save_float_state(const FloatRunState& state) {
   out.put("rotation", as_floats(state.rotation));
   out.put_scalar("time", state.time);
   out.put_count("steps", static_cast<std::int64_t>(state.steps));
+  if (!state.list_origin.empty()) {
+    out.put("list_origin", as_floats(state.list_origin));
+    out.put("list_rebuild_requested", std::vector<std::uint8_t>{state.list_rebuild_requested});
+  }
   return out;
 }
 
-FloatRunState restore_float_state(const StateArrays& saved, const FloatScene& scene) {
+FloatRunState restore_float_state(const StateArrays& saved, const FloatScene& scene, bool with_lists) {
   const std::size_t n = scene.position.size();
   FloatRunState state;
   state.position = from_floats<Vec4>(saved.get<float>("position", kFloatsPerVec4 * n));
@@ -75,6 +79,10 @@ FloatRunState restore_float_state(const StateArrays& saved, const FloatScene& sc
   state.rotation = from_floats<Quat>(saved.get<float>("rotation", 4 * scene.deformable_body.size()));
   state.time = saved.scalar("time");
   state.steps = static_cast<std::uint64_t>(saved.count("steps"));
+  if (with_lists) {
+    state.list_origin = from_floats<Vec4>(saved.get<float>("list_origin", kFloatsPerVec4 * n));
+    state.list_rebuild_requested = saved.get<std::uint8_t>("list_rebuild_requested", 1).front();
+  }
   return state;
 }
 

@@ -2,8 +2,8 @@
 // The float backends' checkpoint (Backend::save_state), the same arrays for `cpu` and `cuda`:
 // canonical positions and velocities, the held or deactivated flags, the movable rigid bodies,
 // the deformable particles' last rotations (the next step's rotation iteration starts from them:
-// elastic_physics.hpp) and the time and step count. Everything else a step computes from these
-// before reading it.
+// elastic_physics.hpp), the time and step count and, for `cuda` with neighbour lists, what makes a
+// restart record the same lists. Everything else a step computes from these before reading it.
 #include "float_scene.hpp"
 #include "sim/state_arrays.hpp"
 
@@ -19,11 +19,17 @@ struct FloatRunState {
   std::vector<Quat> rotation;  // per deformable particle
   double time = 0.0;
   std::uint64_t steps = 0;
+  // The cuda backend's neighbour lists, where it keeps them (list_skin.hpp): each particle's
+  // canonical position at the last grid rebuild, from which a restart records the same lists
+  // again, and whether the next step must rebuild. Empty and 0 otherwise.
+  std::vector<Vec4> list_origin;
+  std::uint8_t list_rebuild_requested = 0;
 };
 
 StateArrays save_float_state(const FloatRunState& state);
 // The state saved for `scene`: sizes are checked against it, and each rigid body keeps its
-// particle range, mass and inertia from it (only what moves is restored).
-FloatRunState restore_float_state(const StateArrays& saved, const FloatScene& scene);
+// particle range, mass and inertia from it (only what moves is restored). `with_lists`: the
+// lists' arrays are read too (and required).
+FloatRunState restore_float_state(const StateArrays& saved, const FloatScene& scene, bool with_lists);
 
 }  // namespace mssph::kernels

@@ -12,10 +12,11 @@
 // Each quantity is a sum over neighbours, assembled once by density_sum_over() and
 // force_sum_over() from the candidates a source hands them: on a GPU (density_sum, force_sum) lane
 // `lane` of a particle's team visits every lanes-th candidate of the 27 cells, and the lanes'
-// partial sums are added (same pair arithmetic, another summation order); a team's force sum
-// visits the neighbours its density pass listed instead (density_sum_listing, force_sum_listed);
-// the host visits the particle's neighbour list. Lists (neighbour_list.hpp) give the same bits as
-// the walks they were recorded from.
+// partial sums are added (same pair arithmetic, another summation order); a team's lanes visit
+// the lists a rebuild's density pass recorded instead (density_sum_recording, density_sum_listed,
+// force_sum_listed; list_skin.hpp); the host visits the particle's neighbour list. Lists
+// (neighbour_list.hpp) give the same bits as the walks they were recorded from, as long as the
+// particles stay where they were.
 #include "neighbour_list.hpp"
 #include "particle_views.hpp"
 #include "simulation_domain.hpp"
@@ -30,13 +31,11 @@ struct DensitySum {
 };
 
 // Candidates beyond the support (about 85 % of the 27 cells' volume) are rejected on r^2, the
-// force pair's test, before their distance is taken. Returns whether t is a neighbour (within the
-// support), whose term was added.
-MSSPH_HD bool add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, std::uint32_t t) {
+// force pair's test, before their distance is taken. Returns r^2, the candidate's squared distance.
+MSSPH_HD float add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, std::uint32_t t) {
   const float r2 = squared_norm(x_i - xyz(v.position[t]));
-  if (r2 >= v.step.smoothing.h2) return false;
-  sum.delta += v.step.smoothing.spiky(v.step.smoothing.pair_distance(r2).r);
-  return true;
+  if (r2 < v.step.smoothing.h2) sum.delta += v.step.smoothing.spiky(v.step.smoothing.pair_distance(r2).r);
+  return r2;
 }
 
 // A deformable particle reads the density of its contact layer: its own body's neighbours are not
@@ -45,11 +44,13 @@ MSSPH_HD bool add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, s
 MSSPH_HD bool reads_contact_layer_density(const BodyParameters& body) { return body.kind == kDeformable; }
 
 // Particle s's live density sum over the candidates that candidates(visit) hands to visit;
-// summed(t) is called for every neighbour t whose term it adds. The walk is written once for a
-// contact layer and once for every other particle, so a particle's case is decided once, not at
-// each of its ~200 candidates.
-template <class Candidates, class Summed>
-MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates, Summed&& summed) {
+// considered(t, r2) is called for every candidate t the sum considers (all but a contact layer's
+// own body), with its squared distance r2; its term is added when r2 < h^2. The walk is written
+// once for a contact layer and once for every other particle, so a particle's case is decided
+// once, not at each of its ~200 candidates.
+template <class Candidates, class Considered>
+MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates,
+                                     Considered&& considered) {
   const Vec4 p_i = v.position[s];
   const Vec3 x_i = xyz(p_i);
   const std::uint32_t body_i = body_of(p_i);
@@ -57,18 +58,16 @@ MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candi
   if (reads_contact_layer_density(v.bodies[body_i])) {
     candidates([&](std::uint32_t t) {
       if (body_of(v.position[t]) == body_i) return;  // its own body: at rest, in density_from
-      if (add_density_pair(sum, v, x_i, t)) summed(t);
+      considered(t, add_density_pair(sum, v, x_i, t));
     });
   } else {
-    candidates([&](std::uint32_t t) {
-      if (add_density_pair(sum, v, x_i, t)) summed(t);
-    });
+    candidates([&](std::uint32_t t) { considered(t, add_density_pair(sum, v, x_i, t)); });
   }
   return sum;
 }
 template <class Candidates>
 MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates) {
-  return density_sum_over(v, s, candidates, [](std::uint32_t) {});
+  return density_sum_over(v, s, candidates, [](std::uint32_t, float) {});
 }
 
 // Lane `lane` of `lanes`' share of particle s's live density sum, from the grid.
@@ -80,23 +79,34 @@ MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint3
 // Boundary particles receive no force: they skip the force sum.
 MSSPH_HD bool receives_forces(const BodyParameters& body) { return body.kind != kBoundary; }
 
-// density_sum's share, recording the neighbours it sums in list `list` (neighbour_list.hpp) for
-// the force pass (force_sum_listed); a particle that receives no forces records none. Its force
-// sum takes exactly these: every neighbour of the walk, but a contact layer's own body, which its
-// density skips and which adds nothing to its force sum (add_force_pair: no pressure among a
+// density_sum's share on a step that rebuilt the grid, recording in list `list`
+// (neighbour_list.hpp) every candidate it considers closer than record_radius2: (h + skin)^2
+// (list_skin.hpp). The force pass of this step and the passes of the steps until the next rebuild
+// visit it (force_sum_listed, density_sum_listed): a contact layer's own body is not listed, which
+// its density skips and which adds nothing to its force sum (add_force_pair: no pressure among a
 // deformable body's own particles).
-MSSPH_HD DensitySum density_sum_listing(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
-                                        const NeighbourLists& lists, std::uint32_t list) {
-  const Vec4 p_i = v.position[s];
-  const bool listed = receives_forces(v.bodies[body_of(p_i)]);
+MSSPH_HD DensitySum density_sum_recording(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
+                                          const NeighbourLists& lists, std::uint32_t list, float record_radius2) {
   ListRecorder recorder(lists, list);
   const DensitySum sum = density_sum_over(
-      v, s, [&](auto&& visit) { v.grid.for_each_candidate(xyz(p_i), lane, lanes, visit); },
-      [&](std::uint32_t t) {
-        if (listed) recorder.record(t);
+      v, s, [&](auto&& visit) { v.grid.for_each_candidate(xyz(v.position[s]), lane, lanes, visit); },
+      [&](std::uint32_t t, float r2) {
+        if (r2 < record_radius2) recorder.record(t);
       });
-  if (listed) lists.count[list] = recorder.count();
+  lists.count[list] = recorder.count();
   return sum;
+}
+
+// The same share on a step that kept the lists: over list `list`, which a rebuild recorded
+// (density_sum_recording) and which the check since then keeps valid (list_skin.hpp). A list that
+// overflowed at its rebuild forces the next one, so it is walked only on the rebuild's own step,
+// whose grid is fresh.
+MSSPH_HD DensitySum density_sum_listed(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
+                                       const NeighbourLists& lists, std::uint32_t list) {
+  return density_sum_over(v, s, [&](auto&& visit) {
+    for_each_listed(
+        lists, list, [&](auto&& all) { v.grid.for_each_candidate(xyz(v.position[s]), lane, lanes, all); }, visit);
+  });
 }
 
 // The number density behind particle s's pressure from its live sum: a deformable particle adds its
@@ -238,8 +248,9 @@ MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, std::ui
   return force_sum_over(v, i, [&](auto&& visit) { v.grid.for_each_candidate(i.x, lane, lanes, visit); });
 }
 
-// The same share from list `list`, which the density pass recorded from it (density_sum_listing);
-// an overflowed list walks the share itself. met_boundary as in force_sum_over.
+// The same share from list `list`, which a rebuild's density pass recorded from it
+// (density_sum_recording); an overflowed list walks the share itself. met_boundary as in
+// force_sum_over.
 template <class MetBoundary>
 MSSPH_HD ForceSum force_sum_listed(const SortedView& v, const ForceParticle& i, std::uint32_t lane, std::uint32_t lanes,
                                    const NeighbourLists& lists, std::uint32_t list, MetBoundary&& met_boundary) {

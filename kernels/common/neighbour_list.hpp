@@ -1,21 +1,22 @@
 #pragma once
-// Neighbour lists of one step: the candidates of the 27 cells (CellRanges) that lie within the
-// support h, in the order the grid walk visits them. A sum visits a list's ~30 neighbours instead
+// Neighbour lists: the candidates of the 27 cells (CellRanges) that lie within a radius of their
+// particle, in the order the grid walk visits them. A sum visits a list's ~30-45 entries instead
 // of the walk's ~200 candidates; since a candidate beyond the support adds nothing to either sum
 // (add_density_pair, add_force_pair reject r^2 >= h^2 with the same arithmetic), a sum over the
 // list takes the same terms in the same order as a sum over the walk: the same bits.
 //
 // One layout, written and read by two pairs of loops:
-// - the host records one list per particle before its sums (record_neighbours), without a branch
-//   on the distance (every candidate is written, the count advances only for one within the
-//   support), since on the host that branch is mispredicted about one candidate in six; its
-//   density and force passes read the list (for_each_neighbour);
-// - a GPU team's density pass records one list per lane, its share of the walk, as it sums
-//   (density_sum_listing, through ListRecorder), and the force pass visits it instead of walking
-//   the cells again (for_each_listed).
+// - the host records one list per particle and step, of radius h, before its sums
+//   (record_neighbours), without a branch on the distance (every candidate is written, the count
+//   advances only for one within the support), since on the host that branch is mispredicted
+//   about one candidate in six; its density and force passes read the list (for_each_neighbour);
+// - a GPU team's density pass, on a step that rebuilt the grid, records one list per lane, its
+//   share of the walk, of radius h + skin, as it sums (density_sum_recording, through
+//   ListRecorder); the force pass visits it instead of walking the cells again, and so do both
+//   passes of the steps until the next rebuild (for_each_listed; list_skin.hpp says when).
 // The host's loops use that its rows are contiguous, the GPU's that a warp's lanes read together.
 // Once a list is full its last entry takes every further candidate, so a list holds at most
-// capacity - 1 neighbours; a list whose count reaches its capacity overflowed, and its reader
+// capacity - 1 entries; a list whose count reaches its capacity overflowed, and its reader
 // falls back to the walk it was recorded from.
 #include "particle_views.hpp"
 

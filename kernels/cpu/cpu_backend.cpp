@@ -174,12 +174,19 @@ void CpuBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& posi
 }
 
 StateArrays CpuBackend::save_state() {
-  return save_float_state({scene_.position, scene_.velocity, scene_.fixed, scene_.rigid_bodies, rotation_, time_,
-                           static_cast<std::uint64_t>(std::llround(time_ / setup_.dt))});
+  FloatRunState run;
+  run.position = scene_.position;
+  run.velocity = scene_.velocity;
+  run.fixed = scene_.fixed;
+  run.rigid_bodies = scene_.rigid_bodies;
+  run.rotation = rotation_;
+  run.time = time_;
+  run.steps = static_cast<std::uint64_t>(std::llround(time_ / setup_.dt));
+  return save_float_state(run);
 }
 
 void CpuBackend::restore_state(const StateArrays& state) {
-  FloatRunState restored = restore_float_state(state, scene_);
+  FloatRunState restored = restore_float_state(state, scene_, false);
   scene_.position = std::move(restored.position);
   scene_.velocity = std::move(restored.velocity);
   scene_.fixed = std::move(restored.fixed);

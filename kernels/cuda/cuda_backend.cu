@@ -1,11 +1,14 @@
 // The `cuda` backend: the step's kernels (neighbour_grid, step_kernels, rigid_bodies) captured in
 // a CUDA graph and replayed each step (a second graph with events between the phases for when
 // phase timing is asked for); the device arrays
-// (device_state) and what the logs and the haptic loop read back (body_readback).
+// (device_state) and what the logs and the haptic loop read back (body_readback). A scene small
+// enough for teams of lanes keeps neighbour lists with a skin and rebuilds the grid only when they
+// expire (list_skin.hpp): a conditional node of the graph, decided on the device.
 #include "cuda_backend.hpp"
 
 #include "../common/eigen_conversion.hpp"
 #include "../common/float_state.hpp"
+#include "../common/list_skin.hpp"
 #include "../common/read_back.hpp"
 #include "body_readback.cuh"
 #include "cuda_device.cuh"
@@ -22,6 +25,53 @@
 
 namespace mssph::kernels {
 namespace {
+
+// The scene in the kernels' form. With teams of lanes (choose_team_lanes), whose lists have a
+// skin, the grid's cells are h + skin wide (list_skin.hpp).
+FloatScene cuda_scene(const ParticleSetup& setup, unsigned team_lanes) {
+  FloatScene scene = make_float_scene(setup);
+  if (team_lanes > 1) scene.grid = choose_grid_shape(scene.position, list_cell_size(setup.smoothing_length));
+  return scene;
+}
+
+// Appends to the graph that `stream` is capturing a node that runs what record_body(s) launches
+// into stream s when, and only when, `condition` is set (a conditional node; CUDA 12.4).
+// body_stream captures the node's body.
+template <class RecordBody>
+void capture_if(cudaStream_t stream, cudaStream_t body_stream, cudaGraphConditionalHandle condition,
+                RecordBody&& record_body) {
+  cudaStreamCaptureStatus status{};
+  cudaGraph_t graph = nullptr;
+  const cudaGraphNode_t* dependencies = nullptr;
+  std::size_t dependency_count = 0;
+  cuda_check(cudaStreamGetCaptureInfo(stream, &status, nullptr, &graph, &dependencies, nullptr, &dependency_count),
+             "read the capture's graph");
+  cudaGraphNodeParams params{};
+  params.type = cudaGraphNodeTypeConditional;
+  params.conditional.handle = condition;
+  params.conditional.type = cudaGraphCondTypeIf;
+  params.conditional.size = 1;
+  cudaGraphNode_t node = nullptr;
+  cuda_check(cudaGraphAddNode(&node, graph, dependencies, nullptr, dependency_count, &params), "add a conditional node");
+  cuda_check(cudaStreamUpdateCaptureDependencies(stream, &node, nullptr, 1, cudaStreamSetCaptureDependencies),
+             "order the capture after the conditional node");
+  cuda_check(cudaStreamBeginCaptureToGraph(body_stream, params.conditional.phGraph_out[0], nullptr, nullptr, 0,
+                                           cudaStreamCaptureModeThreadLocal),
+             "begin capturing a conditional body");
+  record_body(body_stream);
+  cudaGraph_t body = nullptr;
+  cuda_check(cudaStreamEndCapture(body_stream, &body), "end capturing a conditional body");
+}
+
+// A condition of the graph that `stream` is capturing, reset to 0 at each launch.
+cudaGraphConditionalHandle capture_condition(cudaStream_t stream) {
+  cudaStreamCaptureStatus status{};
+  cudaGraph_t graph = nullptr;
+  cuda_check(cudaStreamGetCaptureInfo(stream, &status, nullptr, &graph), "read the capture's graph");
+  cudaGraphConditionalHandle condition{};
+  cuda_check(cudaGraphConditionalHandleCreate(&condition, graph, 0, cudaGraphCondAssignDefault), "create a condition");
+  return condition;
+}
 
 class CudaBackend final : public Backend {
  public:
@@ -41,6 +91,7 @@ class CudaBackend final : public Backend {
   std::vector<double> last_phase_seconds() const override;
   void set_phase_timing(bool on) override { phase_timing_ = on; }
   void synchronize() override { cuda_check(cudaStreamSynchronize(stream_), "synchronise"); }
+  std::optional<std::uint64_t> neighbour_grid_builds() override;
   ForceEvaluation evaluate_forces() override;
   void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) override;
   StateArrays save_state() override;
@@ -54,12 +105,16 @@ class CudaBackend final : public Backend {
   };
   StepGraph capture_step(bool timed);
   void record_step(cudaStream_t stream, bool timed);
+  void record_neighbour_grid(cudaStream_t stream);
+  bool keeps_lists() const { return team_lanes_ > 1; }
+  void request_list_rebuild();
+  void record_lists_at(const std::vector<Vec4>& origin, bool rebuild_requested);
 
   ParticleSetup setup_;
-  FloatScene scene_;
   std::string device_name_;
+  unsigned team_lanes_ = 1;  // lanes per particle in the neighbour sums (choose_team_lanes)
+  FloatScene scene_;
   ChunkTables chunks_;
-  unsigned team_lanes_ = 1;             // lanes per particle in the neighbour sums (choose_team_lanes)
   unsigned deformable_team_lanes_ = 1;  // lanes per deformable particle in its bond sums (choose_bond_team_lanes)
   DeviceState state_;
   BodyReadback readback_;
@@ -67,6 +122,7 @@ class CudaBackend final : public Backend {
   std::uint64_t steps_ = 0;
 
   cudaStream_t stream_ = nullptr;
+  cudaStream_t capture_stream_ = nullptr;  // captures the conditional grid rebuild (capture_if)
   std::array<cudaEvent_t, kPhaseCount + 1> events_{};  // events_[p], events_[p + 1] enclose phase p
   StepGraph plain_step_;  // the step alone
   StepGraph timed_step_;  // the step with the phase events: ~10 us more on an H100 (Backend::set_phase_timing)
@@ -77,16 +133,17 @@ class CudaBackend final : public Backend {
 
 CudaBackend::CudaBackend(ParticleSetup setup)
     : setup_(std::move(setup)),
-      scene_(make_float_scene(setup_)),
       device_name_(require_usable_device()),
-      chunks_(make_chunk_tables(scene_, setup_.bodies)),
       team_lanes_(choose_team_lanes(setup_.size(), resident_threads())),
+      scene_(cuda_scene(setup_, team_lanes_)),
+      chunks_(make_chunk_tables(scene_, setup_.bodies)),
       deformable_team_lanes_(choose_bond_team_lanes(scene_.deformable_body.size(), resident_threads())),
       state_(allocate_device_state(scene_, chunks_, scan_temp_bytes(scene_.grid.cell_count()), team_lanes_,
                                    device_name_)),
       readback_(scene_, setup_.bodies, chunks_),
       external_wrench_(scene_.rigid_bodies.size()) {
   cuda_check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "create stream");
+  cuda_check(cudaStreamCreateWithFlags(&capture_stream_, cudaStreamNonBlocking), "create capture stream");
   for (cudaEvent_t& e : events_) cuda_check(cudaEventCreate(&e), "create event");
 
   plain_step_ = capture_step(false);
@@ -102,6 +159,7 @@ CudaBackend::~CudaBackend() {
   for (cudaEvent_t e : events_) {
     if (e) cudaEventDestroy(e);
   }
+  if (capture_stream_) cudaStreamDestroy(capture_stream_);
   if (stream_) cudaStreamDestroy(stream_);
 }
 
@@ -125,7 +183,7 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
     if (timed) cuda_check(cudaEventRecordWithFlags(events_[event], stream, cudaEventRecordExternal), "record phase event");
   };
   mark(kNeighbours);
-  launch_neighbour_grid(state_, scene_.grid, stream);
+  record_neighbour_grid(stream);
   mark(kRotations);
   launch_elasticity(scene_, state_, deformable_team_lanes_, stream);
   mark(kDensities);
@@ -138,7 +196,33 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
   cuda_check(cudaGetLastError(), "launch step kernels");
 }
 
-// The step's first three phases outside the graph, then the force sums written out in canonical
+// The grid: rebuilt every step without lists; with them, only when the check at the step's start
+// finds them expired (list_skin.hpp).
+void CudaBackend::record_neighbour_grid(cudaStream_t stream) {
+  if (!keeps_lists()) {
+    launch_neighbour_grid(state_, scene_.grid, stream);
+    return;
+  }
+  const cudaGraphConditionalHandle rebuild = capture_condition(stream);
+  launch_list_check(state_, list_skin(scene_.step.smoothing.h), rebuild, stream);
+  capture_if(stream, capture_stream_, rebuild, [&](cudaStream_t body) { launch_neighbour_grid(state_, scene_.grid, body); });
+}
+
+// The next step rebuilds the grid and records the lists: the particles were moved from the host.
+void CudaBackend::request_list_rebuild() {
+  if (!keeps_lists()) return;
+  const std::uint32_t requested = 1;
+  cuda_check(cudaMemcpy(&state_.list_refresh.data()->requested, &requested, sizeof requested, cudaMemcpyHostToDevice),
+             "request a grid rebuild");
+}
+
+std::optional<std::uint64_t> CudaBackend::neighbour_grid_builds() {
+  if (!keeps_lists()) return std::nullopt;
+  synchronize();
+  return state_.list_refresh.download().front().rebuilds;
+}
+
+// The step's first three phases outside the graph (the grid rebuilt, the lists recorded), then the force sums written out in canonical
 // order instead of being integrated.
 ForceEvaluation CudaBackend::evaluate_forces() {
   launch_neighbour_grid(state_, scene_.grid, stream_);
@@ -157,17 +241,47 @@ void CudaBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& pos
     }
   }
   state_.position.upload(current);
+  request_list_rebuild();
 }
 
 StateArrays CudaBackend::save_state() {
   cuda_check(cudaStreamSynchronize(stream_), "checkpoint");
-  return save_float_state({state_.position.download(), state_.velocity.download(), state_.fixed.download(),
-                           state_.rigid_bodies.download(), state_.rotation.download(), time_, steps_});
+  FloatRunState run;
+  run.position = state_.position.download();
+  run.velocity = state_.velocity.download();
+  run.fixed = state_.fixed.download();
+  run.rigid_bodies = state_.rigid_bodies.download();
+  run.rotation = state_.rotation.download();
+  run.time = time_;
+  run.steps = steps_;
+  if (keeps_lists()) {
+    // The lists' origin back in canonical order: the positions the last rebuild sorted.
+    const std::vector<Vec4> origin = state_.list_origin.download();
+    const std::vector<std::uint32_t> id = state_.sorted_id.download();
+    run.list_origin.assign(origin.size(), Vec4{0, 0, 0, 0});
+    for (std::size_t s = 0; s < origin.size(); ++s) run.list_origin[id[s]] = make_vec4(xyz(origin[s]), 0.0f);
+    run.list_rebuild_requested = state_.list_refresh.download().front().requested != 0;
+  }
+  return save_float_state(run);
+}
+
+// A restart's lists: the grid rebuilt and the lists recorded where the particles stood at the saved
+// run's last rebuild, which gives the same cell order and the same lists, so that the restarted run
+// sums as the saved one did (its logs bit-identical to a run left alone).
+void CudaBackend::record_lists_at(const std::vector<Vec4>& origin, bool rebuild_requested) {
+  state_.position.upload(origin);
+  launch_neighbour_grid(state_, scene_.grid, stream_);
+  launch_densities(scene_, state_, team_lanes_, stream_);
+  cuda_check(cudaStreamSynchronize(stream_), "record the restart's lists");
+  std::vector<ListRefreshState> refresh = state_.list_refresh.download();
+  refresh.front().requested = rebuild_requested ? 1u : 0u;
+  state_.list_refresh.upload(refresh);
 }
 
 void CudaBackend::restore_state(const StateArrays& saved) {
-  const FloatRunState restored = restore_float_state(saved, scene_);
+  const FloatRunState restored = restore_float_state(saved, scene_, keeps_lists());
   cuda_check(cudaStreamSynchronize(stream_), "restore a checkpoint");
+  if (keeps_lists()) record_lists_at(restored.list_origin, restored.list_rebuild_requested != 0);
   state_.position.upload(restored.position);
   state_.velocity.upload(restored.velocity);
   state_.fixed.upload(restored.fixed);
@@ -245,9 +359,10 @@ ParticleSnapshot CudaBackend::snapshot() {
 }  // namespace
 
 std::size_t cuda_backend_bytes(const ParticleSetup& setup) {
-  const FloatScene scene = make_float_scene(setup);
+  const unsigned team_lanes = choose_team_lanes(setup.size(), resident_threads());
+  const FloatScene scene = cuda_scene(setup, team_lanes);
   return device_array_sizes(scene, make_chunk_tables(scene, setup.bodies), scan_temp_bytes(scene.grid.cell_count()),
-                            choose_team_lanes(setup.size(), resident_threads()))
+                            team_lanes)
       .total_bytes;
 }
 

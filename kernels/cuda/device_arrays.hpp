@@ -3,6 +3,7 @@
 // that both allocates them (device_state.cu) and counts their bytes before anything is allocated
 // (device_array_sizes below): the memory check and the allocation cannot disagree. No CUDA here,
 // so the list is tested without a GPU.
+#include "../common/list_skin.hpp"
 #include "chunk_tables.hpp"
 
 #include <cstddef>
@@ -44,8 +45,11 @@ struct DeviceArrays {
   Array<Vec4> sorted_position, sorted_velocity;
   Array<VolumePressure> volume_pressure;
   Array<unsigned char> scan_storage;  // CUB's temporary storage for the cell-table scan
-  // A team's neighbour lists, one per lane (empty for one lane per particle).
+  // A team's neighbour lists, one per lane, where each sorted particle stood when they were
+  // recorded, and when to record them again (list_skin.hpp). Empty for one lane per particle.
   Array<std::uint32_t> list_count, list_index;
+  Array<Vec4> list_origin;
+  Array<ListRefreshState> list_refresh;
   // Deformable bodies (empty without them).
   Array<Vec4> elastic_force;
   Array<ElasticParameters> elastic_bodies;
@@ -66,16 +70,20 @@ struct DeviceArrays {
 };
 
 // Entries of each lane's neighbour list when a team of `lanes` lanes shares each particle's
-// neighbour sums (step_kernels.cu): the density pass records them, the force pass visits them
-// instead of walking the 27 cells again (common/neighbour_list.hpp). A particle has about 30
-// neighbours at h = 2 dx, split over its lanes, not evenly; a list holds capacity - 1 of them, and
-// a lane with more walks its share of the cells again, so the capacities hold the longest lists of
-// a lattice 13 % denser than at rest (neighbour_list_test). One lane per particle
-// (large scenes) keeps no lists: at 1M particles their 4-byte entries would double the fluid's 128
-// bytes per particle, and its warps load each candidate once for all 32 lanes, neighbouring
-// particles walking the same cells, where lists would scatter those loads.
+// neighbour sums (step_kernels.cu): a rebuild's density pass records them, with a skin
+// (list_skin.hpp), and the passes until the next rebuild visit them instead of walking the 27 cells
+// (common/neighbour_list.hpp). A particle has about 30 neighbours at h = 2 dx, 40 within h + skin,
+// split over its lanes, not evenly; a list holds capacity - 1 of them, and a lane with more walks
+// its share of the cells again and has the next step rebuild the grid. The capacities are twice
+// the longest lists of a lattice 13 % denser than at rest (neighbour_list_test): at those longest
+// lists plus one (13, 20, 28 entries), some list of the 30k-particle fluid block overflowed at
+// nearly every rebuild on an H100, so the grid was rebuilt at 100 % of the steps; at twice them, at
+// 7 % (results/performance.md). One lane per particle (large scenes) keeps no lists: at 1M
+// particles their 4-byte entries would double the fluid's 128 bytes per particle, and its warps
+// load each candidate once for all 32 lanes, neighbouring particles walking the same cells, where
+// lists would scatter those loads.
 constexpr std::uint32_t team_list_capacity(unsigned lanes) {
-  return lanes >= 8 ? 13 : lanes == 4 ? 16 : lanes == 2 ? 24 : 0;
+  return lanes >= 8 ? 26 : lanes == 4 ? 40 : lanes == 2 ? 56 : 0;
 }
 inline std::size_t team_list_count(std::size_t particles, unsigned lanes) { return lanes > 1 ? particles * lanes : 0; }
 
@@ -112,7 +120,8 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   visit("fixed", a.fixed, copy_of(scene.fixed));
   visit("keys", a.keys, Uninitialised{n});
   visit("unordered_id", a.unordered_id, Uninitialised{n});  // a cell's particles in the order they took its slots
-  visit("sorted_id", a.sorted_id, Uninitialised{n});
+  // Zero until the first rebuild: the check before it (list_skin.hpp) reads the ids it copies by.
+  visit("sorted_id", a.sorted_id, Filled<std::uint32_t>{n, 0u});
   // Zero at the start; the slot kernel takes every count back to zero for the next step.
   visit("cell_count", a.cell_count, Filled<std::uint32_t>{cell_table, 0u});
   visit("cell_start", a.cell_start, Uninitialised{cell_table});
@@ -124,6 +133,10 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   const std::size_t lists = team_list_count(n, team_lanes);
   visit("list_count", a.list_count, Uninitialised{lists});
   visit("list_index", a.list_index, Uninitialised{lists * team_list_capacity(team_lanes)});
+  const bool listing = lists > 0;
+  visit("list_origin", a.list_origin, Filled<Vec4>{listing ? n : 0, zero});
+  // A rebuild requested: the first step has no lists yet.
+  visit("list_refresh", a.list_refresh, Filled<ListRefreshState>{listing ? 1u : 0u, ListRefreshState{1, 0, 0, 0, 0}});
   visit("bodies", a.bodies, copy_of(scene.bodies));
   visit("rigid_bodies", a.rigid_bodies, copy_of(scene.rigid_bodies));
   visit("rigid_chunks", a.rigid_chunks, copy_of(chunks.rigid));

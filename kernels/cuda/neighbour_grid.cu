@@ -1,6 +1,7 @@
 #include "neighbour_grid.cuh"
 
 #include "../common/fluid_physics.hpp"
+#include "../common/list_skin.hpp"
 #include "thread_blocks.cuh"
 
 #include <cub/cub.cuh>
@@ -48,8 +49,22 @@ struct CellOrder {
   Vec4* sorted_velocity;
 };
 
-__global__ void cell_rank_kernel(std::uint32_t n, CellOrder order) {
+// The teams' lists (list_skin.hpp): where each sorted particle stood at the last rebuild, and the
+// state of their refresh. Null pointers without lists.
+struct ListOrigin {
+  Vec4* origin;
+  ListRefreshState* refresh;
+};
+
+// With lists, a rebuild also records where each particle stands, marks the step as one whose
+// density pass records the lists, and takes back the request that caused it.
+__global__ void cell_rank_kernel(std::uint32_t n, CellOrder order, ListOrigin lists) {
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (lists.refresh && i == 0) {
+    lists.refresh->recorded = 1;
+    lists.refresh->requested = 0;
+    ++lists.refresh->rebuilds;
+  }
   if (i >= n) return;
   const std::uint32_t key = order.keys[i];
   const std::uint32_t first = order.cell_start[key];
@@ -59,7 +74,45 @@ __global__ void cell_rank_kernel(std::uint32_t n, CellOrder order) {
   const std::uint32_t s = first + rank;
   order.sorted_id[s] = i;
   place_in_cell_order(s, i, order.position, order.velocity, order.body, order.sorted_position, order.sorted_velocity);
+  if (lists.origin) lists.origin[s] = order.sorted_position[s];
 }
+
+// A step's start with lists: every particle is copied into the cell order of the last rebuild
+// and checked against the trigger (list_skin.hpp); the block that finishes last sets `rebuild`,
+// the condition of the graph's node that holds the four kernels above, when a particle moved past
+// it or a rebuild was requested. One thread sets it: concurrent calls of cudaGraphSetConditional
+// are undefined.
+__global__ void list_check_kernel(std::uint32_t n, CellOrder order, ListOrigin lists, ListSkin skin,
+                                  cudaGraphConditionalHandle rebuild) {
+  const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
+  bool moved_far = false;
+  if (s < n) {
+    const std::uint32_t i = order.sorted_id[s];
+    place_in_cell_order(s, i, order.position, order.velocity, order.body, order.sorted_position, order.sorted_velocity);
+    moved_far = moved_past_trigger(xyz(order.position[i]), xyz(lists.origin[s]), skin);
+  }
+  __shared__ bool last;
+  if (__syncthreads_or(moved_far) && threadIdx.x == 0) atomicOr(&lists.refresh->moved_far, 1u);
+  if (threadIdx.x == 0) {
+    __threadfence();  // the flag is visible before the block counts as done
+    last = atomicAdd(&lists.refresh->blocks_done, 1u) + 1u == gridDim.x;
+  }
+  __syncthreads();
+  if (!last || threadIdx.x != 0) return;
+  __threadfence();
+  const bool any_moved_far = atomicExch(&lists.refresh->moved_far, 0u) != 0;
+  cudaGraphSetConditional(rebuild, any_moved_far || lists.refresh->requested != 0 ? 1u : 0u);
+  lists.refresh->blocks_done = 0;  // ready for the next step
+  lists.refresh->recorded = 0;     // until the rebuild, if any, says otherwise
+}
+
+CellOrder cell_order(DeviceState& state) {
+  return {state.keys.data(),      state.cell_start.data(),      state.unordered_id.data(),
+          state.position.data(),  state.velocity.data(),        state.body.data(),
+          state.sorted_id.data(), state.sorted_position.data(), state.sorted_velocity.data()};
+}
+
+ListOrigin list_origin(DeviceState& state) { return {state.list_origin.data(), state.list_refresh.data()}; }
 
 }  // namespace
 
@@ -84,10 +137,13 @@ void launch_neighbour_grid(DeviceState& state, const GridShape& grid, cudaStream
              "cell-table scan");
   cell_slot_kernel<<<blocks_for(n), kBlock, 0, stream>>>(state.keys.data(), n, state.cell_start.data(),
                                                         state.cell_count.data(), state.unordered_id.data());
-  const CellOrder order{state.keys.data(),      state.cell_start.data(),     state.unordered_id.data(),
-                        state.position.data(),  state.velocity.data(),       state.body.data(),
-                        state.sorted_id.data(), state.sorted_position.data(), state.sorted_velocity.data()};
-  cell_rank_kernel<<<blocks_for(n), kBlock, 0, stream>>>(n, order);
+  cell_rank_kernel<<<blocks_for(n), kBlock, 0, stream>>>(n, cell_order(state), list_origin(state));
+}
+
+void launch_list_check(DeviceState& state, const ListSkin& skin, cudaGraphConditionalHandle rebuild,
+                       cudaStream_t stream) {
+  const auto n = static_cast<std::uint32_t>(state.position.size());
+  list_check_kernel<<<blocks_for(n), kBlock, 0, stream>>>(n, cell_order(state), list_origin(state), skin, rebuild);
 }
 
 }  // namespace mssph::kernels

@@ -1,6 +1,7 @@
 #include "step_kernels.cuh"
 
 #include "../common/fluid_physics.hpp"
+#include "../common/list_skin.hpp"
 #include "thread_blocks.cuh"
 
 #include <type_traits>
@@ -85,17 +86,27 @@ __global__ void elastic_force_kernel(DeformableView view) {
   if (active && lane == 0) store_elastic_force(view, d, force);
 }
 
-// A team's lane records the neighbours of its share in its list (lists: one per thread) for the
-// force pass; one lane alone records none (device_arrays.hpp, team_list_capacity, says why).
+// A team's lane, on a step that rebuilt the grid, records the candidates of its share within
+// h + skin in its list (lists: one per thread), for the force pass and the steps until the next
+// rebuild, and asks for the next step to rebuild if the list overflowed; on the other steps it
+// sums over that list. One lane alone records none and walks every step (device_arrays.hpp,
+// team_list_capacity, says why).
 template <unsigned Lanes>
-__global__ void density_kernel(SortedView view, VolumePressure* volume_pressure, NeighbourLists lists) {
+__global__ void density_kernel(SortedView view, VolumePressure* volume_pressure, NeighbourLists lists,
+                               ListRefreshState* refresh, float record_radius2) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
   DensitySum sum{0.0f};
   if (active) {
     if constexpr (Lanes > 1) {
-      sum = density_sum_listing(view, s, lane, Lanes, lists, blockIdx.x * blockDim.x + threadIdx.x);
+      const std::uint32_t list = blockIdx.x * blockDim.x + threadIdx.x;
+      if (refresh->recorded) {
+        sum = density_sum_recording(view, s, lane, Lanes, lists, list, record_radius2);
+        if (lists.count[list] >= lists.capacity) refresh->requested = 1;
+      } else {
+        sum = density_sum_listed(view, s, lane, Lanes, lists, list);
+      }
     } else {
       sum = density_sum(view, s, lane, Lanes);
     }
@@ -122,8 +133,8 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
   ForceSum sum = zero_force_sum();
-  // A team's lane visits the neighbours its density pass listed instead of walking its share of
-  // the 27 cells again, and remembers the boundary neighbours it meets, for the wall check below.
+  // A team's lane visits the list of its last rebuild (density_kernel) instead of walking its share
+  // of the 27 cells again, and remembers the boundary neighbours it meets, for the wall check below.
   // One lane alone (large scenes) does neither: it has no lists (density_kernel), and it meets a
   // wall particle's ~9 boundary neighbours, whose registers cost it 14 %.
   constexpr bool kTeam = Lanes > 1;
@@ -210,7 +221,8 @@ void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
     density_kernel<L><<<blocks_for(n * L), kBlock, 0, stream>>>(sorted_view(scene, state), state.volume_pressure.data(),
-                                                                 team_lists(state, L));
+                                                                 team_lists(state, L), state.list_refresh.data(),
+                                                                 list_skin(scene.step.smoothing.h).record_radius2);
   });
 }
 

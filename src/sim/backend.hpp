@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -100,6 +101,11 @@ class Backend {
 
   // Blocks until queued work is done: a GPU backend returns from step() before the step has run.
   virtual void synchronize() {}
+
+  // How many times the neighbour grid was built since the backend was made, where a backend builds
+  // it only on some steps: the cuda backend's teams keep neighbour lists with a skin and rebuild
+  // when they expire (kernels/common/list_skin.hpp). Empty when it is built every step.
+  virtual std::optional<std::uint64_t> neighbour_grid_builds() { return std::nullopt; }
 
   // The step's phases, the same for every backend so that `/timing/phases` compare by name:
   // the paper's loop (3.2) after the neighbour search.

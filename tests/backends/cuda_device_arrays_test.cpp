@@ -150,19 +150,22 @@ TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
 }
 
 // Only a team keeps neighbour lists: one lane per particle (large scenes) spends no bytes on them,
-// and every team size has lists of at least two entries (a list holds capacity - 1 neighbours).
+// and every team size has lists of at least two entries (a list holds capacity - 1 neighbours),
+// each particle's place at the rebuild (16 bytes) and one refresh state (list_skin.hpp).
 TEST_F(DeviceArraysTest, OnlyTeamsKeepNeighbourLists) {
   const std::size_t n = setup.size();
   const std::size_t one_lane = kernels::device_array_sizes(scene, chunks, kScanBytes, 1).total_bytes;
   const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes, 1);
-  EXPECT_EQ(bytes_of(listed, "list_count"), 0u);
-  EXPECT_EQ(bytes_of(listed, "list_index"), 0u);
+  for (const char* name : {"list_count", "list_index", "list_origin", "list_refresh"}) {
+    EXPECT_EQ(bytes_of(listed, name), 0u) << name;
+  }
   for (const unsigned lanes : {2u, 4u, 8u}) {
     SCOPED_TRACE(::testing::Message() << lanes << " lanes");
     const std::uint32_t capacity = kernels::team_list_capacity(lanes);
     EXPECT_GE(capacity, 2u);
     EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes, lanes).total_bytes - one_lane,
-              n * lanes * (1 + capacity) * sizeof(std::uint32_t));
+              n * lanes * (1 + capacity) * sizeof(std::uint32_t) + n * sizeof(kernels::Vec4) +
+                  sizeof(kernels::ListRefreshState));
   }
 }
 

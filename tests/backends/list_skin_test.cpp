@@ -1,0 +1,142 @@
+// The GPU teams' lists with a skin (kernels/common/list_skin.hpp), on the host: recorded once,
+// they must give every particle the same neighbours as a fresh search for as long as no particle
+// has moved past the trigger, and the trigger must fire before a pair can come within the support
+// unlisted.
+#include "common/fluid_physics.hpp"
+#include "common/list_skin.hpp"
+#include "neighbour_list_fixtures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace mssph::testing {
+namespace {
+
+constexpr std::uint32_t kCapacity = 64;  // holds every list of these tests (asserted)
+
+bool within_support(const kernels::SortedView& v, std::uint32_t s, std::uint32_t t) {
+  return kernels::squared_norm(kernels::xyz(v.position[s]) - kernels::xyz(v.position[t])) < v.step.smoothing.h2;
+}
+
+// What a density or force sum of s must take where the particles stand now, found by testing every
+// particle, no grid, no list: the particles within h, but a deformable particle's own body.
+std::vector<std::uint32_t> neighbours_by_brute_force(const kernels::SortedView& v, std::uint32_t s) {
+  const std::uint32_t body_s = kernels::body_of(v.position[s]);
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t t = 0; t < v.step.particle_count; ++t) {
+    if (body_s == kDeformableBody && kernels::body_of(v.position[t]) == body_s) continue;
+    if (within_support(v, s, t)) out.push_back(t);
+  }
+  return out;
+}
+
+// The entries of s's lists (all its lanes) within h where the particles stand now: what the
+// passes of a step that keeps the lists sum over.
+std::vector<std::uint32_t> neighbours_from_lists(const kernels::SortedView& v, const TeamLists& team, std::uint32_t s) {
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t lane = 0; lane < team.lanes; ++lane) {
+    const std::uint32_t list = team.list_of(s, lane);
+    EXPECT_LT(team.count[list], team.lists.capacity) << "particle " << s << ": the test needs the list itself";
+    for (const std::uint32_t t : team.entries(list)) {
+      if (within_support(v, s, t)) out.push_back(t);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+Vec3 random_direction(std::mt19937_64& random) {
+  std::normal_distribution<float> normal;
+  const Vec3 d{normal(random), normal(random), normal(random)};
+  return d * (1.0f / std::sqrt(kernels::squared_norm(d)));
+}
+
+// Every particle moves by just under the trigger, in a random direction; the lists recorded before
+// must still hold every particle's neighbours, among them pairs that were beyond h when recorded.
+TEST(ListSkin, ListsHoldEveryNeighbourWhileNoParticleMovedPastTheTrigger) {
+  for (const std::uint32_t lanes : {2u, 4u, 8u}) {
+    SCOPED_TRACE(::testing::Message() << lanes << " lanes");
+    std::mt19937_64 random(1967 + lanes);
+    JitteredLattice lattice(random, compressed_by_up_to_4_percent(random), static_cast<float>(kernels::list_cell_size(1.0)));
+    const kernels::SortedView v = lattice.view();  // views the lattice's positions, which move below
+    const kernels::ListSkin skin = kernels::list_skin(v.step.smoothing.h);
+    const TeamLists team(v, lanes, kCapacity, skin.record_radius2);
+
+    std::vector<Vec3> recorded(lattice.size());
+    std::vector<std::vector<std::uint32_t>> neighbours_then(lattice.size());
+    for (std::uint32_t s = 0; s < lattice.size(); ++s) {
+      recorded[s] = kernels::xyz(v.position[s]);
+      neighbours_then[s] = neighbours_by_brute_force(v, s);
+    }
+    std::uniform_real_distribution<float> fraction(0.9f, 1.0f);
+    for (std::uint32_t s = 0; s < lattice.size(); ++s) {
+      lattice.move(s, random_direction(random) * (0.999f * fraction(random) * std::sqrt(skin.trigger2)));
+    }
+
+    std::size_t entered_the_support = 0;
+    for (std::uint32_t s = 0; s < lattice.size(); ++s) {
+      ASSERT_FALSE(kernels::moved_past_trigger(kernels::xyz(v.position[s]), recorded[s], skin)) << "particle " << s;
+      const std::vector<std::uint32_t> now = neighbours_by_brute_force(v, s);
+      ASSERT_EQ(neighbours_from_lists(v, team, s), now) << "particle " << s;
+      for (const std::uint32_t t : now) {
+        entered_the_support += std::binary_search(neighbours_then[s].begin(), neighbours_then[s].end(), t) ? 0 : 1;
+      }
+    }
+    // Not vacuous: the moves brought pairs within h that were beyond it when the lists were recorded.
+    EXPECT_GT(entered_the_support, 100u);
+  }
+}
+
+// Two fluid particles just beyond the recording radius h + skin: unlisted. Approaching each other
+// by the trigger each, they stay beyond h, so the lists are still right and no rebuild is due;
+// a little farther, each past half the skin, they come within h, unlisted, and that is the moment
+// the check must force a rebuild.
+TEST(ListSkin, TheTriggerFiresBeforeAPairComesWithinTheSupportUnlisted) {
+  const float h = 0.04f;
+  const kernels::ListSkin skin = kernels::list_skin(h);
+  const float skin_width = kernels::kSkinOverSupport * h;
+  const float trigger = std::sqrt(skin.trigger2);
+  const Vec3 a{0.1f, 0.1f, 0.1f};
+  const Vec3 b = a + Vec3{h + 1.002f * skin_width, 0, 0};
+  const Vec3 towards_b{1, 0, 0};
+
+  kernels::GridShape shape;
+  shape.inverse_cell_size = static_cast<float>(1.0 / kernels::list_cell_size(h));
+  SortedParticles sorted = sort_into_grid({kernels::make_vec4(a, kernels::index_as_float_bits(0)),
+                                           kernels::make_vec4(b, kernels::index_as_float_bits(0))},
+                                          shape);
+  const std::vector<kernels::BodyParameters> bodies = {{kernels::kFluid, kernels::kNotRigid, 0, 1000, 100, 1.0f}};
+  kernels::SortedView v{};
+  v.step.smoothing = kernels::SmoothingKernels::for_support(h);
+  v.step.particle_count = 2;
+  v.bodies = bodies.data();
+  v.grid = sorted.grid();
+  v.position = sorted.position.data();
+  const TeamLists team(v, 2, kCapacity, skin.record_radius2);
+  const std::uint32_t s_a = kernels::xyz(sorted.position[0]).x == a.x ? 0 : 1, s_b = 1 - s_a;
+  ASSERT_EQ(neighbours_from_lists(v, team, s_a), std::vector<std::uint32_t>{s_a}) << "only itself is listed";
+
+  const auto place = [&](float approach) {
+    sorted.position[s_a] = kernels::make_vec4(a + towards_b * approach, sorted.position[s_a].w);
+    sorted.position[s_b] = kernels::make_vec4(b - towards_b * approach, sorted.position[s_b].w);
+  };
+  place(0.999f * trigger);
+  EXPECT_FALSE(kernels::moved_past_trigger(kernels::xyz(sorted.position[s_a]), a, skin));
+  EXPECT_FALSE(kernels::moved_past_trigger(kernels::xyz(sorted.position[s_b]), b, skin));
+  EXPECT_FALSE(within_support(v, s_a, s_b)) << "within the trigger the pair stays beyond h";
+  EXPECT_EQ(neighbours_from_lists(v, team, s_a), neighbours_by_brute_force(v, s_a));
+
+  place(0.505f * skin_width);
+  EXPECT_TRUE(within_support(v, s_a, s_b)) << "each past half the skin, the pair comes within h";
+  EXPECT_NE(neighbours_from_lists(v, team, s_a), neighbours_by_brute_force(v, s_a)) << "and the lists miss it";
+  EXPECT_TRUE(kernels::moved_past_trigger(kernels::xyz(sorted.position[s_a]), a, skin));
+  EXPECT_TRUE(kernels::moved_past_trigger(kernels::xyz(sorted.position[s_b]), b, skin));
+}
+
+}  // namespace
+}  // namespace mssph::testing

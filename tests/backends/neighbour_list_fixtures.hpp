@@ -1,0 +1,124 @@
+#pragma once
+// The neighbour-list tests' particles: a jittered, compressed lattice of three bodies (walls,
+// fluid, a deformable block whose own neighbours the density sum skips) sorted into a grid small
+// enough to wrap, so periodic images share cells with real neighbours; and a GPU team's lists of
+// them, recorded on the host.
+#include "common/fluid_physics.hpp"
+#include "common/neighbour_list.hpp"
+#include "sorted_particles.hpp"
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace mssph::testing {
+
+using kernels::Vec3;
+using kernels::Vec4;
+
+constexpr std::uint32_t kWallBody = 0, kFluidBody = 1, kDeformableBody = 2;
+
+// 12 x 12 x 12 lattice sites, spacing dx (compressed), jittered by 0.1 dx: the lowest
+// two layers are wall, the sites with x above the middle deformable, the rest fluid. Support
+// h = 2 dx; cells of side h (or cell_size_over_h times h), 4 per axis: the lattice spans about 6
+// cells, so the grid wraps.
+class JitteredLattice {
+ public:
+  // Spacing 0.02 m times `compression` (1: none); cells of cell_size_over_h times h.
+  JitteredLattice(std::mt19937_64& random, float compression, float cell_size_over_h = 1.0f) {
+    const float dx = 0.02f * compression;
+    std::uniform_real_distribution<float> jitter(-0.1f * dx, 0.1f * dx);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    std::vector<Vec4> particles;
+    const int sites = 12;
+    for (int i = 0; i < sites; ++i) {
+      for (int j = 0; j < sites; ++j) {
+        for (int k = 0; k < sites; ++k) {
+          const std::uint32_t body = k < 2 ? kWallBody : (i >= sites / 2 ? kDeformableBody : kFluidBody);
+          const Vec3 site{static_cast<float>(i) * dx, static_cast<float>(j) * dx, static_cast<float>(k) * dx};
+          particles.push_back(kernels::make_vec4(site + Vec3{jitter(random), jitter(random), jitter(random)},
+                                                 kernels::index_as_float_bits(body)));
+        }
+      }
+    }
+    kernels::GridShape shape;
+    shape.inverse_cell_size = 1.0f / (cell_size_over_h * 2.0f * dx);
+    sorted_ = sort_into_grid(particles, shape);
+    for (std::size_t s = 0; s < particles.size(); ++s) {
+      velocity_.push_back(Vec4{unit(random), unit(random), unit(random), 0.0f});
+      volume_pressure_.push_back({dx * dx * dx * (1.0f + 0.1f * unit(random)), 1000.0f * (1.0f + unit(random))});
+    }
+    bodies_ = {{kernels::kBoundary, kernels::kNotRigid, 0, 1000, 100, 0.0f},
+               {kernels::kFluid, kernels::kNotRigid, 0, 1000, 100, 1.0f},
+               {kernels::kDeformable, kernels::kNotRigid, 0, 1000, 100, 2.0f}};
+    step_.smoothing = kernels::SmoothingKernels::for_support(2.0 * dx);
+    step_.inverse_gradient_consistency = 1.0f;
+    step_.particle_count = static_cast<std::uint32_t>(particles.size());
+  }
+
+  // Moves sorted particle s by `by`, keeping the cell order and the grid (as a step that keeps the
+  // lists does).
+  void move(std::uint32_t s, Vec3 by) {
+    sorted_.position[s] = kernels::make_vec4(kernels::xyz(sorted_.position[s]) + by, sorted_.position[s].w);
+  }
+
+  kernels::SortedView view() const {
+    kernels::SortedView v{};
+    v.step = step_;
+    v.bodies = bodies_.data();
+    v.grid = sorted_.grid();
+    v.position = sorted_.position.data();
+    v.velocity = velocity_.data();
+    v.volume_pressure = volume_pressure_.data();
+    return v;
+  }
+  std::uint32_t size() const { return step_.particle_count; }
+
+ private:
+  SortedParticles sorted_;
+  std::vector<Vec4> velocity_;
+  std::vector<kernels::VolumePressure> volume_pressure_;
+  std::vector<kernels::BodyParameters> bodies_;
+  kernels::StepParameters step_{};
+};
+
+inline float compressed_by_up_to_4_percent(std::mt19937_64& random) {
+  return std::uniform_real_distribution<float>(0.96f, 1.0f)(random);
+}
+
+// The lists of a team of `lanes` lanes for every particle of the view, laid out as on the GPU, as
+// a rebuild's density pass records them within record_radius2 (density_sum_recording), and the
+// density sums of that pass.
+struct TeamLists {
+  std::uint32_t lanes;
+  std::vector<std::uint32_t> count, index;
+  kernels::NeighbourLists lists;
+  std::vector<float> density;  // per list: its lane's share of the particle's density sum
+
+  static constexpr std::uint32_t kUnwritten = 0xdeadbeefu;
+
+  TeamLists(const kernels::SortedView& v, std::uint32_t lanes_, std::uint32_t capacity, float record_radius2)
+      : lanes(lanes_),
+        count(std::size_t{v.step.particle_count} * lanes, kUnwritten),
+        index(count.size() * capacity, kUnwritten),
+        density(count.size()) {
+    lists = kernels::lane_lists(capacity, static_cast<std::uint32_t>(count.size()), count.data(), index.data());
+    for (std::uint32_t s = 0; s < v.step.particle_count; ++s) {
+      for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+        density[list_of(s, lane)] =
+            kernels::density_sum_recording(v, s, lane, lanes, lists, list_of(s, lane), record_radius2).delta;
+      }
+    }
+  }
+  std::uint32_t list_of(std::uint32_t s, std::uint32_t lane) const { return s * lanes + lane; }
+  std::uint32_t entry(std::uint32_t list, std::uint32_t k) const { return index[list + std::size_t{k} * count.size()]; }
+  // The list's entries as recorded, or nothing for an overflowed or unrecorded list.
+  std::vector<std::uint32_t> entries(std::uint32_t list) const {
+    std::vector<std::uint32_t> out;
+    if (count[list] >= lists.capacity) return out;
+    for (std::uint32_t k = 0; k < count[list]; ++k) out.push_back(entry(list, k));
+    return out;
+  }
+};
+
+}  // namespace mssph::testing
