@@ -1,8 +1,8 @@
 #pragma once
 // What the kernels read and write, passed by value as a few small views (not dozens of loose
 // parameters). Arrays in "canonical" order follow ParticleSetup's particle order (bodies
-// contiguous); arrays in "sorted" order follow the neighbour grid's cell order and are rebuilt
-// every step.
+// contiguous); arrays in "sorted" order follow the neighbour grid's cell order, copied anew every
+// step (in the order of the last rebuild where the GPU keeps lists: list_skin.hpp).
 #include "cell_grid.hpp"
 #include "smoothing_kernels.hpp"
 #include "vec_math.hpp"
