@@ -222,8 +222,8 @@ std::optional<std::uint64_t> CudaBackend::neighbour_grid_builds() {
   return state_.list_refresh.download().front().rebuilds;
 }
 
-// The step's first three phases outside the graph (the grid rebuilt, the lists recorded), then the force sums written out in canonical
-// order instead of being integrated.
+// The step's first three phases outside the graph (the grid rebuilt, the lists recorded), then the
+// force sums written out in canonical order instead of being integrated.
 ForceEvaluation CudaBackend::evaluate_forces() {
   launch_neighbour_grid(state_, scene_.grid, stream_);
   launch_elasticity(scene_, state_, deformable_team_lanes_, stream_);
