@@ -79,8 +79,8 @@ __global__ void cell_rank_kernel(std::uint32_t n, CellOrder order, ListOrigin li
 
 // A step's start with lists: every particle is copied into the cell order of the last rebuild
 // and checked against the trigger (list_skin.hpp); the block that finishes last sets `rebuild`,
-// the condition of the graph's node that holds the four kernels above, when a particle moved past
-// it or a rebuild was requested. One thread sets it: concurrent calls of cudaGraphSetConditional
+// the condition of the graph's node that holds the grid's kernels (launch_neighbour_grid), when a
+// particle moved past it or a rebuild was requested. One thread sets it: concurrent calls of cudaGraphSetConditional
 // are undefined.
 __global__ void list_check_kernel(std::uint32_t n, CellOrder order, ListOrigin lists, ListSkin skin,
                                   cudaGraphConditionalHandle rebuild) {
