@@ -19,18 +19,12 @@ namespace {
 
 constexpr std::uint32_t kCapacity = 64;  // holds every list of these tests (asserted)
 
-bool within_support(const kernels::SortedView& v, std::uint32_t s, std::uint32_t t) {
-  return kernels::squared_norm(kernels::xyz(v.position[s]) - kernels::xyz(v.position[t])) < v.step.smoothing.h2;
-}
-
 // What a density or force sum of s must take where the particles stand now, found by testing every
 // particle, no grid, no list: the particles within h, but a deformable particle's own body.
 std::vector<std::uint32_t> neighbours_by_brute_force(const kernels::SortedView& v, std::uint32_t s) {
-  const std::uint32_t body_s = kernels::body_of(v.position[s]);
   std::vector<std::uint32_t> out;
   for (std::uint32_t t = 0; t < v.step.particle_count; ++t) {
-    if (body_s == kDeformableBody && kernels::body_of(v.position[t]) == body_s) continue;
-    if (within_support(v, s, t)) out.push_back(t);
+    if (!own_deformable_body(v, s, t) && within_support(v, s, t)) out.push_back(t);
   }
   return out;
 }

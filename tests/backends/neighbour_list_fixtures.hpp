@@ -82,6 +82,21 @@ class JitteredLattice {
   kernels::StepParameters step_{};
 };
 
+// Whether sorted particles s and t of the view are closer than sqrt(radius2), or than h.
+inline bool closer_than(const kernels::SortedView& v, std::uint32_t s, std::uint32_t t, float radius2) {
+  return kernels::squared_norm(kernels::xyz(v.position[s]) - kernels::xyz(v.position[t])) < radius2;
+}
+inline bool within_support(const kernels::SortedView& v, std::uint32_t s, std::uint32_t t) {
+  return closer_than(v, s, t, v.step.smoothing.h2);
+}
+
+// Whether t belongs to a deformable particle s's own body, which s's density sum skips (its
+// contact layer's number density) and its lists leave out.
+inline bool own_deformable_body(const kernels::SortedView& v, std::uint32_t s, std::uint32_t t) {
+  const std::uint32_t body_s = kernels::body_of(v.position[s]);
+  return body_s == kDeformableBody && kernels::body_of(v.position[t]) == body_s;
+}
+
 inline float compressed_by_up_to_4_percent(std::mt19937_64& random) {
   return std::uniform_real_distribution<float>(0.96f, 1.0f)(random);
 }

@@ -39,10 +39,6 @@ std::vector<std::uint32_t> visited(const kernels::SortedView& v, const kernels::
   return out;
 }
 
-bool within_support(const kernels::SortedView& v, std::uint32_t s, std::uint32_t t) {
-  return kernels::squared_norm(kernels::xyz(v.position[s]) - kernels::xyz(v.position[t])) < v.step.smoothing.h2;
-}
-
 // The grid walk's candidates within the support, in its order.
 std::vector<std::uint32_t> walk_within_support(const kernels::SortedView& v, std::uint32_t s) {
   std::vector<std::uint32_t> out;
@@ -133,11 +129,9 @@ TEST(NeighbourLists, AFullListFallsBackToTheGridWalk) {
 // sqrt(radius2), but a deformable particle's own body.
 std::vector<std::uint32_t> listed_share(const kernels::SortedView& v, std::uint32_t s, std::uint32_t lane,
                                         std::uint32_t lanes, float radius2) {
-  const std::uint32_t body_s = kernels::body_of(v.position[s]);
   std::vector<std::uint32_t> out;
   v.grid.for_each_candidate(kernels::xyz(v.position[s]), lane, lanes, [&](std::uint32_t t) {
-    if (body_s == kDeformableBody && kernels::body_of(v.position[t]) == body_s) return;
-    if (kernels::squared_norm(kernels::xyz(v.position[s]) - kernels::xyz(v.position[t])) < radius2) out.push_back(t);
+    if (!own_deformable_body(v, s, t) && closer_than(v, s, t, radius2)) out.push_back(t);
   });
   return out;
 }
