@@ -103,10 +103,7 @@ MSSPH_HD DensitySum density_sum_recording(const SortedView& v, std::uint32_t s, 
 // whose grid is fresh.
 MSSPH_HD DensitySum density_sum_listed(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
                                        const NeighbourLists& lists, std::uint32_t list) {
-  return density_sum_over(v, s, [&](auto&& visit) {
-    for_each_listed(
-        lists, list, [&](auto&& all) { v.grid.for_each_candidate(xyz(v.position[s]), lane, lanes, all); }, visit);
-  });
+  return density_sum_over(v, s, listed_share(v.grid, xyz(v.position[s]), lane, lanes, lists, list));
 }
 
 // The number density behind particle s's pressure from its live sum: a deformable particle adds its
@@ -199,19 +196,17 @@ struct ForceSum {
 
 MSSPH_HD ForceSum zero_force_sum() { return {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, 0}; }
 
-// Adds candidate t's pressure and viscosity forces on i; returns whether t is a boundary
-// neighbour (counted in boundary_neighbours).
-MSSPH_HD bool add_force_pair(ForceSum& sum, const ForceParticle& i, const SortedView& v, std::uint32_t t) {
-  if (t == i.s) return false;
+// Adds candidate t's pressure and viscosity forces on i, and counts t if it is a boundary neighbour.
+MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const SortedView& v, std::uint32_t t) {
+  if (t == i.s) return;
   const Vec4 p_j = v.position[t];
   const Vec3 r_ij = i.x - xyz(p_j);
   const float r2 = squared_norm(r_ij);
-  if (r2 >= v.step.smoothing.h2) return false;
+  if (r2 >= v.step.smoothing.h2) return;
   const std::uint32_t body_j = body_of(p_j);
   const bool same_body = body_j == i.body;
-  const bool boundary = v.bodies[body_j].kind == kBoundary;
-  if (boundary) ++sum.boundary_neighbours;
-  if (same_body && i.parameters.kind != kFluid) return boundary;  // rigid, deformable: no pressure among themselves
+  if (v.bodies[body_j].kind == kBoundary) ++sum.boundary_neighbours;
+  if (same_body && i.parameters.kind != kFluid) return;  // rigid, deformable: no pressure among themselves
   const VolumePressure vp_j = v.volume_pressure[t];
   const Vec3 u_j = xyz(v.velocity[t]);
   const PairDistance d = v.step.smoothing.pair_distance(r2);
@@ -222,25 +217,17 @@ MSSPH_HD bool add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
   sum.pressure += pressure;
   sum.viscosity += viscosity;
   if (!same_body) sum.interaction += interaction_force(pressure, viscosity);
-  return boundary;
 }
 
 // Particle i's pressure and viscosity sums over the candidates that candidates(visit) hands to
-// visit; met_boundary(t) is called for every boundary neighbour t among them.
-template <class Candidates, class MetBoundary>
-MSSPH_HD ForceSum force_sum_over(const SortedView& v, const ForceParticle& i, Candidates&& candidates,
-                                 MetBoundary&& met_boundary) {
-  ForceSum sum = zero_force_sum();
-  if (receives_forces(i.parameters)) {
-    candidates([&](std::uint32_t t) {
-      if (add_force_pair(sum, i, v, t)) met_boundary(t);
-    });
-  }
-  return sum;
-}
+// visit.
 template <class Candidates>
 MSSPH_HD ForceSum force_sum_over(const SortedView& v, const ForceParticle& i, Candidates&& candidates) {
-  return force_sum_over(v, i, candidates, [](std::uint32_t) {});
+  ForceSum sum = zero_force_sum();
+  if (receives_forces(i.parameters)) {
+    candidates([&](std::uint32_t t) { add_force_pair(sum, i, v, t); });
+  }
+  return sum;
 }
 
 // Lane `lane` of `lanes`' share of particle i's pressure and viscosity sums, from the grid.
@@ -249,18 +236,10 @@ MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, std::ui
 }
 
 // The same share from list `list`, which a rebuild's density pass recorded from it
-// (density_sum_recording); an overflowed list walks the share itself. met_boundary as in
-// force_sum_over.
-template <class MetBoundary>
+// (density_sum_recording); an overflowed list walks the share itself.
 MSSPH_HD ForceSum force_sum_listed(const SortedView& v, const ForceParticle& i, std::uint32_t lane, std::uint32_t lanes,
-                                   const NeighbourLists& lists, std::uint32_t list, MetBoundary&& met_boundary) {
-  return force_sum_over(
-      v, i,
-      [&](auto&& visit) {
-        for_each_listed(
-            lists, list, [&](auto&& all) { v.grid.for_each_candidate(i.x, lane, lanes, all); }, visit);
-      },
-      met_boundary);
+                                   const NeighbourLists& lists, std::uint32_t list) {
+  return force_sum_over(v, i, listed_share(v.grid, i.x, lane, lanes, lists, list));
 }
 
 // ---- Step 4: integration ----
@@ -312,13 +291,17 @@ MSSPH_HD bool wall_check_share(const SortedView& v, const Advance& a, std::uint3
   return a.may_hit_wall && touches_wall(v, a.previous, xyz(a.position), lane, lanes);
 }
 
-// The same share from the boundary neighbours the lane met in its force sum, unless some lane of
-// the team met more than it holds (RecentBoundaryNeighbours): the same decision, without the walk.
+// The same share for a GPU team's lane from its list `list` (or the walk an overflowed list was
+// recorded from): the candidates its force sum visited, instead of its share of the 27 cells
+// around the new position. Every boundary particle that can reject the move was within h of the
+// particle at the step's start (ForceSum::boundary_neighbours), so some lane of the team lists it,
+// and every listed candidate is a real one: the team's decision is keep_out_of_walls'. The lanes
+// of 8 each visit ~6 list entries instead of ~36 candidates, each behind two dependent loads; that
+// walk, in the slowest team, set the length of a small scene's force pass (results/performance.md).
 MSSPH_HD bool wall_check_share(const SortedView& v, const Advance& a, std::uint32_t lane, std::uint32_t lanes,
-                               const RecentBoundaryNeighbours& met, bool some_lane_overflowed) {
-  if (!a.may_hit_wall) return false;
-  if (some_lane_overflowed) return touches_wall(v, a.previous, xyz(a.position), lane, lanes);
-  return touches_recent_wall(v, met, a.previous, xyz(a.position));
+                               const NeighbourLists& lists, std::uint32_t list) {
+  return a.may_hit_wall &&
+         touches_wall_among(v, a.previous, xyz(a.position), listed_share(v.grid, a.previous, lane, lanes, lists, list));
 }
 
 // The rest of steps 3 and 4, in one lane, given whether the wall check rejected the move:

@@ -101,6 +101,17 @@ MSSPH_HD void for_each_listed(const NeighbourLists& lists, std::uint32_t list, W
   for (std::uint32_t k = 0; k < count; ++k, entry += lists.entry_stride) visit(*entry);
 }
 
+// Lane `lane` of `lanes`' share of the candidates around x as list `list` holds them (a GPU team's
+// lists), as a candidate source: candidates(visit) calls visit(t) for each; an overflowed list
+// walks the lane's share of the 27 cells around x, the walk it was recorded from.
+MSSPH_HD auto listed_share(const CellRanges& grid, Vec3 x, std::uint32_t lane, std::uint32_t lanes,
+                           const NeighbourLists& lists, std::uint32_t list) {
+  return [&grid, x, lane, lanes, &lists, list](auto&& visit) {
+    for_each_listed(
+        lists, list, [&](auto&& all) { grid.for_each_candidate(x, lane, lanes, all); }, visit);
+  };
+}
+
 // Calls visit(t) for every neighbour t of sorted particle s in the host's lists, in the grid
 // walk's order: for_each_listed for a contiguous row (through for_each_listed and its runtime
 // stride the cpu backend's density and force passes measured 3-10 % slower on the 2-core CI machine).

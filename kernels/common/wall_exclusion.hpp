@@ -37,46 +37,21 @@ MSSPH_HD BoundaryApproach boundary_approach(const SortedView& v, Vec3 previous, 
   return {!clear, away, r2_old};
 }
 
+// Whether one of the candidates that candidates(visit) hands to visit is a boundary particle that
+// rejects the move.
+template <class Candidates>
+MSSPH_HD bool touches_wall_among(const SortedView& v, Vec3 previous, Vec3 moved, Candidates&& candidates) {
+  bool touches = false;
+  candidates([&](std::uint32_t t) { touches = touches || boundary_approach(v, previous, moved, t).rejects_move; });
+  return touches;
+}
+
 // Whether lane `lane` of a team of `lanes` finds, among its share of the candidates
 // (CellRanges::for_each_candidate), a boundary particle that rejects the move. The move is
 // rejected iff some lane of the team finds one; one lane alone (lanes = 1) tests every candidate.
 MSSPH_HD bool touches_wall(const SortedView& v, Vec3 previous, Vec3 moved, std::uint32_t lane, std::uint32_t lanes) {
-  bool touches = false;
-  v.grid.for_each_candidate(moved, lane, lanes, [&](std::uint32_t t) {
-    touches = touches || boundary_approach(v, previous, moved, t).rejects_move;
-  });
-  return touches;
-}
-
-// The boundary neighbours one GPU lane met in its share of the force sum (add_force_pair), the last
-// kCapacity of them in registers. A boundary particle that rejects the move ends within d_wall of
-// the moved particle, so it was within d_wall plus the move, less than h, of it at the step's start
-// (ForceSum::boundary_neighbours says why the move stays below h - d_wall): a neighbour that some
-// lane of the team met. When no lane met more than it holds, each lane tests what it holds instead
-// of its share of the 27 cells around the new position, and the team's decision is the same.
-struct RecentBoundaryNeighbours {
-  static constexpr std::uint32_t kCapacity = 4;
-  std::uint32_t count = 0;  // met; more than kCapacity: the oldest are gone
-  std::uint32_t t0 = 0, t1 = 0, t2 = 0, t3 = 0;
-
-  MSSPH_HD void remember(std::uint32_t t) {
-    t3 = t2;
-    t2 = t1;
-    t1 = t0;
-    t0 = t;
-    ++count;
-  }
-  MSSPH_HD bool overflowed() const { return count > kCapacity; }
-};
-
-// Whether one of the boundary neighbours held (none overflowed) rejects the move.
-MSSPH_HD bool touches_recent_wall(const SortedView& v, const RecentBoundaryNeighbours& met, Vec3 previous, Vec3 moved) {
-  const std::uint32_t held[RecentBoundaryNeighbours::kCapacity] = {met.t0, met.t1, met.t2, met.t3};
-  bool touches = false;
-  for (std::uint32_t k = 0; k < RecentBoundaryNeighbours::kCapacity; ++k) {
-    if (k < met.count) touches = touches || boundary_approach(v, previous, moved, held[k]).rejects_move;
-  }
-  return touches;
+  return touches_wall_among(v, previous, moved,
+                            [&](auto&& visit) { v.grid.for_each_candidate(moved, lane, lanes, visit); });
 }
 
 // Applies the rejection of the move from `previous` to `position` (with `velocity`): if some

@@ -134,35 +134,24 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
   const bool active = s < view.step.particle_count;
   ForceSum sum = zero_force_sum();
   // A team's lane visits the list of its last rebuild (density_kernel) instead of walking its share
-  // of the 27 cells again, and remembers the boundary neighbours it meets, for the wall check below.
-  // One lane alone (large scenes) does neither: it has no lists (density_kernel), and it meets a
-  // wall particle's ~9 boundary neighbours, whose registers cost it 14 %.
+  // of the 27 cells again; one lane alone (large scenes) has no lists (density_kernel) and walks.
   constexpr bool kTeam = Lanes > 1;
-  RecentBoundaryNeighbours met;
+  const std::uint32_t list = blockIdx.x * blockDim.x + threadIdx.x;
   if (active) {
     const ForceParticle particle = load_force_particle(view, s);
-    if constexpr (kTeam) {
-      sum = force_sum_listed(view, particle, lane, Lanes, lists, blockIdx.x * blockDim.x + threadIdx.x,
-                             [&](std::uint32_t t) { met.remember(t); });
-    } else {
-      sum = force_sum(view, particle, lane, Lanes);
-    }
+    sum = kTeam ? force_sum_listed(view, particle, lane, Lanes, lists, list) : force_sum(view, particle, lane, Lanes);
   }
   sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction),
          team_sum<Lanes>(sum.boundary_neighbours)};
-  const bool some_lane_overflowed = kTeam && team_sum<Lanes>(met.overflowed() ? 1u : 0u) > 0;
   // apply_forces split over the team: every lane advances the particle from the same team sum
-  // (same bits), tests the boundary neighbours it met (or its share of the candidates) for a
+  // (same bits), tests its list again (one lane: every candidate around the new position) for a
   // wall, and the team counts the lanes that found one; lane 0 then rejects the move if any did
   // (its one-lane velocity projection, rare) and stores.
   Advance advance{};
   std::uint32_t lanes_touching_wall = 0;
   if (active) {
     advance = advance_particle(view, state, s, sum);
-    // One lane calls the plain walk: passing it an empty `met` with the walk forced compiles to
-    // other code for the 1M-particle kernel (checked in its PTX), which the wall-check
-    // measurements did not cover.
-    const bool touches = kTeam ? wall_check_share(view, advance, lane, Lanes, met, some_lane_overflowed)
+    const bool touches = kTeam ? wall_check_share(view, advance, lane, Lanes, lists, list)
                                : wall_check_share(view, advance, lane, Lanes);
     lanes_touching_wall = touches ? 1u : 0u;
   }

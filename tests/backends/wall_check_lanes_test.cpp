@@ -5,8 +5,10 @@
 // force kernel uses (choose_team_lanes: 1, 2, 4, 8). Checked here on the host, where the same
 // functions run, on random moves next to a wall corner.
 #include "common/fluid_physics.hpp"
+#include "common/list_skin.hpp"
 #include "common/wall_exclusion.hpp"
-#include "sorted_particles.hpp"
+#include "cuda/device_arrays.hpp"
+#include "neighbour_list_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,18 +22,15 @@
 namespace mssph::testing {
 namespace {
 
-using kernels::Vec3;
-using kernels::Vec4;
-
-constexpr std::uint32_t kWallBody = 0;   // body 0: the boundary (walls)
-constexpr std::uint32_t kFluidBody = 1;  // body 1: fluid, candidates the wall check must skip
+// Bodies (neighbour_list_fixtures.hpp): kWallBody the boundary (walls), kFluidBody fluid, whose
+// particles the wall check must skip.
 
 // A corner of three walls (the planes x = 0, y = 0, z = 0, two lattice layers each, spacing dx)
-// filled with a jittered fluid lattice, sorted into the kernels' grid (cells of side h = 2 dx) as
-// the cpu backend sorts it (sort_into_grid).
+// filled with a jittered fluid lattice, sorted into the kernels' grid (cells of side h = 2 dx, or
+// cell_size_over_h times h) as the cpu backend sorts it (sort_into_grid).
 class WallCorner {
  public:
-  WallCorner(float dx, std::mt19937_64& random) : dx_(dx) {
+  WallCorner(float dx, std::mt19937_64& random, float cell_size_over_h = 1.0f) : dx_(dx) {
     std::uniform_real_distribution<float> jitter(-0.05f * dx, 0.05f * dx);
     std::vector<Vec4> particles;
     const int extent = 7;  // lattice sites per axis inside the corner
@@ -47,8 +46,8 @@ class WallCorner {
       }
     }
     kernels::GridShape shape;
-    shape.inverse_cell_size = 1.0f / (2.0f * dx);
-    shape.bits_x = shape.bits_y = shape.bits_z = 4;  // 16 cells of 2 dx: the corner does not wrap
+    shape.inverse_cell_size = 1.0f / (cell_size_over_h * 2.0f * dx);
+    shape.bits_x = shape.bits_y = shape.bits_z = 4;  // 16 cells of 2 dx or more: the corner does not wrap
     sorted_ = sort_into_grid(particles, shape);
     velocity_.assign(particles.size(), Vec4{0, 0, 0, 0});
     volume_pressure_.assign(particles.size(), kernels::VolumePressure{dx * dx * dx, 0.0f});
@@ -66,7 +65,19 @@ class WallCorner {
     v.bodies = bodies_.data();
     v.grid = sorted_.grid();
     v.position = sorted_.position.data();
+    v.step.particle_count = static_cast<std::uint32_t>(sorted_.position.size());
     return v;
+  }
+
+  // A fluid particle (its sorted index) of the lattice layer next to some wall plane.
+  std::uint32_t fluid_particle_near_a_wall(std::mt19937_64& random) const {
+    std::uniform_int_distribution<std::size_t> any(0, sorted_.position.size() - 1);
+    for (;;) {
+      const std::size_t s = any(random);
+      const Vec4 p = sorted_.position[s];
+      const float nearest = std::fmin(p.x, std::fmin(p.y, p.z));
+      if (kernels::body_of(p) == kFluidBody && nearest < dx_) return static_cast<std::uint32_t>(s);
+    }
   }
 
  private:
@@ -129,55 +140,62 @@ TEST(WallCheckLanes, AnyLaneTouchingAWallIsExactlyARejectedMove) {
   EXPECT_GT(split_hits, rejected_moves);
 }
 
-// The GPU's force kernel tests, instead of its share of the 27 cells around the new position, the
-// boundary neighbours each lane met in its share of the force sum (RecentBoundaryNeighbours),
-// unless some lane met more than it holds. The team's decision must again be exactly
-// keep_out_of_walls'. Moves up to 0.6 dx, below h - d_wall = 1.2 dx (ForceSum::boundary_neighbours).
-TEST(WallCheckLanes, TheBoundaryNeighboursMetInTheForceSumDecideAsTheWalkDoes) {
+// The GPU's force kernel has each lane of a team test, instead of its share of the 27 cells around
+// the new position, its list again (wall_check_share with lists): the candidates its force sum
+// visited, which a rebuild recorded within h + skin in cells of h + skin (list_skin.hpp; that they
+// still hold every neighbour after the particles have moved is list_skin_test's). The team's
+// decision must again be exactly keep_out_of_walls', from lists that hold their lane's share and
+// from lists that overflowed (capacity 2 holds one entry), which walk the share of the 27 cells
+// around the step's start instead. Moves up to 0.6 dx, below h - d_wall = 1.2 dx
+// (ForceSum::boundary_neighbours).
+TEST(WallCheckLanes, TheTeamsListsDecideAsTheWalkDoes) {
   std::mt19937_64 random(20111024);
-  const std::uint32_t team_sizes[] = {1, 2, 4, 8};
-  int rejected_moves = 0, decided_from_held = 0, decided_by_walk = 0;
-  for (int c = 0; c < 20; ++c) {
+  int moves = 0, rejected_moves = 0, decided_with_an_overflowed_list = 0;
+  for (int c = 0; c < 10; ++c) {
     const float dx = std::uniform_real_distribution<float>(0.01f, 0.05f)(random);
-    const WallCorner corner(dx, random);
+    const WallCorner corner(dx, random, static_cast<float>(kernels::list_cell_size(1.0)));
     const kernels::SortedView v = corner.view();
-    for (int m = 0; m < 100; ++m) {
-      std::uniform_real_distribution<float> near_wall(-0.2f * dx, 1.5f * dx);
-      const Vec3 previous{near_wall(random), near_wall(random), near_wall(random)};
-      Vec4 position = kernels::make_vec4(previous + random_vector(random, 0.35f * dx), 0.0f);
-      Vec4 velocity = kernels::make_vec4(random_vector(random, 1.0f), 0.0f);
-      kernels::Advance advance{0, true, false, previous, position, velocity};
-      const bool rejected = kernels::keep_out_of_walls(v, previous, position, velocity);
-      rejected_moves += rejected ? 1 : 0;
-      // A fluid particle that is not among the sorted ones (its slot matches none).
-      const kernels::ForceParticle particle{0xffffffffu, kFluidBody, v.bodies[kFluidBody], previous, {0, 0, 0}, {0, 0}};
-      for (const std::uint32_t lanes : team_sizes) {
-        std::vector<kernels::RecentBoundaryNeighbours> met(lanes);
-        std::uint32_t boundary_neighbours = 0;
-        bool some_lane_overflowed = false;
-        for (std::uint32_t lane = 0; lane < lanes; ++lane) {
-          const kernels::ForceSum share = kernels::force_sum_over(
-              v, particle, [&](auto&& visit) { v.grid.for_each_candidate(previous, lane, lanes, visit); },
-              [&](std::uint32_t t) { met[lane].remember(t); });
-          boundary_neighbours += share.boundary_neighbours;
-          some_lane_overflowed = some_lane_overflowed || met[lane].overflowed();
+    const float record_radius2 = kernels::list_skin(v.step.smoothing.h).record_radius2;
+    for (const std::uint32_t lanes : {2u, 4u, 8u}) {
+      for (const std::uint32_t capacity : {kernels::team_list_capacity(lanes), 2u}) {
+        const TeamLists team(v, lanes, capacity, record_radius2);
+        for (int m = 0; m < 40; ++m) {
+          const std::uint32_t s = corner.fluid_particle_near_a_wall(random);
+          const Vec3 previous = kernels::xyz(v.position[s]);
+          Vec4 position = kernels::make_vec4(previous + random_vector(random, 0.35f * dx), 0.0f);
+          Vec4 velocity = kernels::make_vec4(random_vector(random, 1.0f), 0.0f);
+          kernels::Advance advance{0, true, false, previous, position, velocity};
+          const bool rejected = kernels::keep_out_of_walls(v, previous, position, velocity);
+          const kernels::ForceParticle particle = kernels::load_force_particle(v, s);
+          std::uint32_t boundary_neighbours = 0;
+          bool some_list_overflowed = false;
+          for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+            const std::uint32_t list = team.list_of(s, lane);
+            boundary_neighbours += kernels::force_sum_listed(v, particle, lane, lanes, team.lists, list).boundary_neighbours;
+            some_list_overflowed = some_list_overflowed || team.count[list] >= capacity;
+          }
+          advance.may_hit_wall = boundary_neighbours > 0;
+          bool team_rejects = false;
+          for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+            team_rejects = kernels::wall_check_share(v, advance, lane, lanes, team.lists, team.list_of(s, lane)) ||
+                           team_rejects;
+          }
+          EXPECT_EQ(team_rejects, rejected) << "dx " << dx << ", configuration " << c << ", particle " << s
+                                            << ", team of " << lanes << " lanes, capacity " << capacity;
+          ++moves;
+          rejected_moves += rejected ? 1 : 0;
+          decided_with_an_overflowed_list += some_list_overflowed ? 1 : 0;
         }
-        advance.may_hit_wall = boundary_neighbours > 0;
-        bool team_rejects = false;
-        for (std::uint32_t lane = 0; lane < lanes; ++lane) {
-          team_rejects = kernels::wall_check_share(v, advance, lane, lanes, met[lane], some_lane_overflowed) || team_rejects;
-        }
-        EXPECT_EQ(team_rejects, rejected) << "dx " << dx << ", configuration " << c << ", move " << m << ", team of "
-                                          << lanes << " lanes, " << (some_lane_overflowed ? "walked" : "held");
-        (some_lane_overflowed ? decided_by_walk : decided_from_held) += 1;
       }
     }
   }
-  std::cout << rejected_moves << " rejected moves of 2000; decided from the held neighbours " << decided_from_held
-            << " times, by the walk " << decided_by_walk << " times\n";
-  EXPECT_GT(rejected_moves, 200);
-  EXPECT_GT(decided_from_held, 1000);  // both paths must be common, or the check says little
-  EXPECT_GT(decided_by_walk, 500);
+  std::cout << rejected_moves << " rejected moves of " << moves << "; " << decided_with_an_overflowed_list
+            << " decided with some list overflowed\n";
+  // Both answers and both kinds of list must be common, or the check says little.
+  EXPECT_GT(rejected_moves, moves / 10);
+  EXPECT_LT(rejected_moves, moves - moves / 10);
+  EXPECT_GT(decided_with_an_overflowed_list, moves / 10);
+  EXPECT_LT(decided_with_an_overflowed_list, moves - moves / 10);
 }
 
 }  // namespace
