@@ -89,7 +89,9 @@ MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists
 
 // Calls visit(t) for every entry of list `list` in its order; an overflowed list calls
 // walk(visit) instead, the walk it was recorded from (whose out-of-support candidates add nothing
-// to a sum).
+// to a sum). Entry k + 1 is loaded before entry k is visited, so that its load is in flight
+// during the visit's own loads instead of after them: a small scene's lanes have few warps to
+// hide those latencies behind.
 template <class Walk, class Visit>
 MSSPH_HD void for_each_listed(const NeighbourLists& lists, std::uint32_t list, Walk&& walk, Visit&& visit) {
   const std::uint32_t count = lists.count[list];
@@ -98,7 +100,13 @@ MSSPH_HD void for_each_listed(const NeighbourLists& lists, std::uint32_t list, W
     return;
   }
   const std::uint32_t* entry = lists.first_entry(list);
-  for (std::uint32_t k = 0; k < count; ++k, entry += lists.entry_stride) visit(*entry);
+  std::uint32_t next = count > 0 ? *entry : 0u;
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const std::uint32_t t = next;
+    entry += lists.entry_stride;
+    if (k + 1 < count) next = *entry;
+    visit(t);
+  }
 }
 
 // Lane `lane` of `lanes`' share of the candidates around x as list `list` holds them (a GPU team's
