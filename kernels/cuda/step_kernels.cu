@@ -181,9 +181,12 @@ unsigned most_lanes_within(std::size_t particles, std::size_t threads) {
 }  // namespace
 
 // A small scene then has ~8x the threads in flight; a scene that fills the GPU on its own keeps
-// one lane per particle, which wastes no shuffles.
+// one lane per particle, which wastes no shuffles. Between them, up to four waves of resident
+// threads, teams of 2 lanes: with them come the lists (list_skin.hpp), whose skipped grid walks
+// pay for the second lane (results/performance.md).
 unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads) {
-  return most_lanes_within(particles, 2 * resident_threads);
+  const unsigned lanes = most_lanes_within(particles, 2 * resident_threads);
+  return lanes == 1 && particles * 2 <= 4 * resident_threads ? 2 : lanes;
 }
 
 // The bond passes' ~60 registers let half as many threads reside as the GPU could hold, and since
