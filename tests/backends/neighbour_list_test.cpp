@@ -127,8 +127,8 @@ TEST(NeighbourLists, AFullListFallsBackToTheGridWalk) {
 
 // Lane `lane`'s share of the walk, filtered as its list must be: the candidates closer than
 // sqrt(radius2), but a deformable particle's own body.
-std::vector<std::uint32_t> listed_share(const kernels::SortedView& v, std::uint32_t s, std::uint32_t lane,
-                                        std::uint32_t lanes, float radius2) {
+std::vector<std::uint32_t> expected_list_entries(const kernels::SortedView& v, std::uint32_t s, std::uint32_t lane,
+                                                 std::uint32_t lanes, float radius2) {
   std::vector<std::uint32_t> out;
   v.grid.for_each_candidate(kernels::xyz(v.position[s]), lane, lanes, [&](std::uint32_t t) {
     if (!own_deformable_body(v, s, t) && closer_than(v, s, t, radius2)) out.push_back(t);
@@ -160,7 +160,7 @@ TEST(TeamNeighbourLists, KeepEveryLanesSumsAndListItsShareWithinTheSkin) {
               << "particle " << s << ", lane " << lane;
           // Every particle records, a boundary particle too: the density of the steps until the
           // next rebuild reads its list.
-          const std::vector<std::uint32_t> expected = listed_share(v, s, lane, lanes, record_radius2);
+          const std::vector<std::uint32_t> expected = expected_list_entries(v, s, lane, lanes, record_radius2);
           ASSERT_EQ(team.count[list], expected.size()) << "particle " << s << ", lane " << lane;
           if (expected.size() >= capacity) {
             ++overflowed;
