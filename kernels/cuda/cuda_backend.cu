@@ -3,7 +3,7 @@
 // phase timing is asked for); the device arrays
 // (device_state) and what the logs and the haptic loop read back (body_readback). A scene small
 // enough for teams of lanes keeps neighbour lists with a skin and rebuilds the grid only when they
-// expire (list_skin.hpp): a conditional node of the graph, decided on the device.
+// expire (list_skin.hpp), a decision the grid kernel takes on the device.
 #include "cuda_backend.hpp"
 
 #include "../common/eigen_conversion.hpp"
@@ -32,45 +32,6 @@ FloatScene cuda_scene(const ParticleSetup& setup, unsigned team_lanes) {
   FloatScene scene = make_float_scene(setup);
   if (team_lanes > 1) scene.grid = choose_grid_shape(scene.position, list_cell_size(setup.smoothing_length));
   return scene;
-}
-
-// Appends to the graph that `stream` is capturing a node that runs what record_body(s) launches
-// into stream s when, and only when, `condition` is set (a conditional node; CUDA 12.4).
-// body_stream captures the node's body.
-template <class RecordBody>
-void capture_if(cudaStream_t stream, cudaStream_t body_stream, cudaGraphConditionalHandle condition,
-                RecordBody&& record_body) {
-  cudaStreamCaptureStatus status{};
-  cudaGraph_t graph = nullptr;
-  const cudaGraphNode_t* dependencies = nullptr;
-  std::size_t dependency_count = 0;
-  cuda_check(cudaStreamGetCaptureInfo(stream, &status, nullptr, &graph, &dependencies, nullptr, &dependency_count),
-             "read the capture's graph");
-  cudaGraphNodeParams params{};
-  params.type = cudaGraphNodeTypeConditional;
-  params.conditional.handle = condition;
-  params.conditional.type = cudaGraphCondTypeIf;
-  params.conditional.size = 1;
-  cudaGraphNode_t node = nullptr;
-  cuda_check(cudaGraphAddNode(&node, graph, dependencies, nullptr, dependency_count, &params), "add a conditional node");
-  cuda_check(cudaStreamUpdateCaptureDependencies(stream, &node, nullptr, 1, cudaStreamSetCaptureDependencies),
-             "order the capture after the conditional node");
-  cuda_check(cudaStreamBeginCaptureToGraph(body_stream, params.conditional.phGraph_out[0], nullptr, nullptr, 0,
-                                           cudaStreamCaptureModeThreadLocal),
-             "begin capturing a conditional body");
-  record_body(body_stream);
-  cudaGraph_t body = nullptr;
-  cuda_check(cudaStreamEndCapture(body_stream, &body), "end capturing a conditional body");
-}
-
-// A condition of the graph that `stream` is capturing, reset to 0 at each launch.
-cudaGraphConditionalHandle capture_condition(cudaStream_t stream) {
-  cudaStreamCaptureStatus status{};
-  cudaGraph_t graph = nullptr;
-  cuda_check(cudaStreamGetCaptureInfo(stream, &status, nullptr, &graph), "read the capture's graph");
-  cudaGraphConditionalHandle condition{};
-  cuda_check(cudaGraphConditionalHandleCreate(&condition, graph, 0, cudaGraphCondAssignDefault), "create a condition");
-  return condition;
 }
 
 class CudaBackend final : public Backend {
@@ -122,7 +83,6 @@ class CudaBackend final : public Backend {
   std::uint64_t steps_ = 0;
 
   cudaStream_t stream_ = nullptr;
-  cudaStream_t capture_stream_ = nullptr;  // captures the conditional grid rebuild (capture_if)
   std::array<cudaEvent_t, kPhaseCount + 1> events_{};  // events_[p], events_[p + 1] enclose phase p
   StepGraph plain_step_;  // the step alone
   StepGraph timed_step_;  // the step with the phase events: ~10 us more on an H100 (Backend::set_phase_timing)
@@ -138,12 +98,11 @@ CudaBackend::CudaBackend(ParticleSetup setup)
       scene_(cuda_scene(setup_, team_lanes_)),
       chunks_(make_chunk_tables(scene_, setup_.bodies)),
       deformable_team_lanes_(choose_bond_team_lanes(scene_.deformable_body.size(), resident_threads())),
-      state_(allocate_device_state(scene_, chunks_, scan_temp_bytes(scene_.grid.cell_count()), team_lanes_,
+      state_(allocate_device_state(scene_, chunks_, grid_kernel_blocks(setup_.size(), scene_.grid.cell_count()), team_lanes_,
                                    device_name_)),
       readback_(scene_, setup_.bodies, chunks_),
       external_wrench_(scene_.rigid_bodies.size()) {
   cuda_check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "create stream");
-  cuda_check(cudaStreamCreateWithFlags(&capture_stream_, cudaStreamNonBlocking), "create capture stream");
   for (cudaEvent_t& e : events_) cuda_check(cudaEventCreate(&e), "create event");
 
   plain_step_ = capture_step(false);
@@ -159,7 +118,6 @@ CudaBackend::~CudaBackend() {
   for (cudaEvent_t e : events_) {
     if (e) cudaEventDestroy(e);
   }
-  if (capture_stream_) cudaStreamDestroy(capture_stream_);
   if (stream_) cudaStreamDestroy(stream_);
 }
 
@@ -199,13 +157,11 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
 // The grid: rebuilt every step without lists; with them, only when the check at the step's start
 // finds them expired (list_skin.hpp).
 void CudaBackend::record_neighbour_grid(cudaStream_t stream) {
-  if (!keeps_lists()) {
+  if (keeps_lists()) {
+    launch_list_step_grid(state_, scene_.grid, list_skin(scene_.step.smoothing.h), stream);
+  } else {
     launch_neighbour_grid(state_, scene_.grid, stream);
-    return;
   }
-  const cudaGraphConditionalHandle rebuild = capture_condition(stream);
-  launch_list_check(state_, list_skin(scene_.step.smoothing.h), rebuild, stream);
-  capture_if(stream, capture_stream_, rebuild, [&](cudaStream_t body) { launch_neighbour_grid(state_, scene_.grid, body); });
 }
 
 // The next step rebuilds the grid and records the lists: the particles were moved from the host.
@@ -361,8 +317,8 @@ ParticleSnapshot CudaBackend::snapshot() {
 std::size_t cuda_backend_bytes(const ParticleSetup& setup) {
   const unsigned team_lanes = choose_team_lanes(setup.size(), resident_threads());
   const FloatScene scene = cuda_scene(setup, team_lanes);
-  return device_array_sizes(scene, make_chunk_tables(scene, setup.bodies), scan_temp_bytes(scene.grid.cell_count()),
-                            team_lanes)
+  return device_array_sizes(scene, make_chunk_tables(scene, setup.bodies),
+                            grid_kernel_blocks(setup.size(), scene.grid.cell_count()), team_lanes)
       .total_bytes;
 }
 

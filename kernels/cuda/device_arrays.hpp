@@ -44,7 +44,7 @@ struct DeviceArrays {
   Array<std::uint32_t> keys, unordered_id, sorted_id, cell_count, cell_start;
   Array<Vec4> sorted_position, sorted_velocity;
   Array<VolumePressure> volume_pressure;
-  Array<unsigned char> scan_storage;  // CUB's temporary storage for the cell-table scan
+  Array<std::uint32_t> block_total;  // the grid kernel's: each block's share of the cell table
   // A team's neighbour lists, one per lane, where each sorted particle stood when they were
   // recorded, and when to record them again (list_skin.hpp). Empty for one lane per particle.
   Array<std::uint32_t> list_count, list_index;
@@ -88,12 +88,12 @@ constexpr std::uint32_t team_list_capacity(unsigned lanes) {
 inline std::size_t team_list_count(std::size_t particles, unsigned lanes) { return lanes > 1 ? particles * lanes : 0; }
 
 // Calls visit(name, array, contents) for every array of a scene, contents being CopyOf<T>,
-// Filled<T> or Uninitialised. `scan_bytes`: CUB's temporary storage for the cell-table scan
-// (scan_temp_bytes, which needs the CUDA runtime); `team_lanes`: lanes per particle of the
+// Filled<T> or Uninitialised. `grid_blocks`: blocks of the grid kernel (grid_kernel_blocks, which
+// needs the CUDA runtime); `team_lanes`: lanes per particle of the
 // neighbour sums (choose_team_lanes).
 template <template <class> class Array, class Visit>
 void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, const ChunkTables& chunks,
-                           std::size_t scan_bytes, unsigned team_lanes, Visit&& visit) {
+                           std::size_t grid_blocks, unsigned team_lanes, Visit&& visit) {
   const std::size_t n = scene.position.size();
   const std::size_t cell_table = std::size_t{scene.grid.cell_count()} + 1;
   const Vec4 zero{0, 0, 0, 0};
@@ -128,7 +128,7 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   visit("sorted_position", a.sorted_position, Uninitialised{n});
   visit("sorted_velocity", a.sorted_velocity, Uninitialised{n});
   visit("volume_pressure", a.volume_pressure, Filled<VolumePressure>{n, VolumePressure{0, 0}});
-  visit("scan_storage", a.scan_storage, Uninitialised{scan_bytes});
+  visit("block_total", a.block_total, Uninitialised{grid_blocks});
   // Written by the density pass before the force pass reads them, for every particle that receives forces.
   const std::size_t lists = team_list_count(n, team_lanes);
   visit("list_count", a.list_count, Uninitialised{lists});
@@ -136,7 +136,7 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   const bool listing = lists > 0;
   visit("list_origin", a.list_origin, Filled<Vec4>{listing ? n : 0, zero});
   // A rebuild requested: the first step has no lists yet.
-  visit("list_refresh", a.list_refresh, Filled<ListRefreshState>{listing ? 1u : 0u, ListRefreshState{1, 0, 0, 0, 0}});
+  visit("list_refresh", a.list_refresh, Filled<ListRefreshState>{listing ? 1u : 0u, ListRefreshState{1, 0, 0, 0}});
   visit("bodies", a.bodies, copy_of(scene.bodies));
   visit("rigid_bodies", a.rigid_bodies, copy_of(scene.rigid_bodies));
   visit("rigid_chunks", a.rigid_chunks, copy_of(chunks.rigid));
@@ -159,10 +159,10 @@ struct DeviceArraySizes {
   std::size_t total_bytes = 0;
 };
 
-inline DeviceArraySizes device_array_sizes(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes,
+inline DeviceArraySizes device_array_sizes(const FloatScene& scene, const ChunkTables& chunks, std::size_t grid_blocks,
                                            unsigned team_lanes) {
   DeviceArraySizes sizes;
-  for_each_device_array(sizes.arrays, scene, chunks, scan_bytes, team_lanes,
+  for_each_device_array(sizes.arrays, scene, chunks, grid_blocks, team_lanes,
                         [&](const char*, auto& array, const auto& contents) {
                           array.count = contents.count;
                           sizes.total_bytes += array.bytes();

@@ -43,9 +43,9 @@ struct Allocate {
 
 }  // namespace
 
-DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes,
+DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& chunks, std::size_t grid_blocks,
                                   unsigned team_lanes, const std::string& device_name) {
-  const std::size_t needed = device_array_sizes(scene, chunks, scan_bytes, team_lanes).total_bytes;
+  const std::size_t needed = device_array_sizes(scene, chunks, grid_blocks, team_lanes).total_bytes;
   std::size_t free_bytes = 0;
   std::size_t total_bytes = 0;
   cuda_check(cudaMemGetInfo(&free_bytes, &total_bytes), "read free device memory");
@@ -55,7 +55,7 @@ DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& ch
                      " of " + describe_bytes(total_bytes) + " are free");
   }
   DeviceState state;
-  for_each_device_array(state, scene, chunks, scan_bytes, team_lanes, Allocate{});
+  for_each_device_array(state, scene, chunks, grid_blocks, team_lanes, Allocate{});
   return state;
 }
 

@@ -15,7 +15,7 @@ using DeviceState = DeviceArrays<DeviceBuffer>;
 
 // Allocates and fills every array of for_each_device_array. Throws InputError before allocating
 // when they do not fit into the device's free memory (naming particles and bytes).
-DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes,
+DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& chunks, std::size_t grid_blocks,
                                   unsigned team_lanes, const std::string& device_name);
 
 SortedView sorted_view(const FloatScene& scene, const DeviceState& state);

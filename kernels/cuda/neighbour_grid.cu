@@ -2,148 +2,197 @@
 
 #include "../common/fluid_physics.hpp"
 #include "../common/list_skin.hpp"
+#include "cuda_check.hpp"
 #include "thread_blocks.cuh"
 
+#include <cooperative_groups.h>
 #include <cub/cub.cuh>
+
+#include <algorithm>
 
 namespace mssph::kernels {
 namespace {
 
-// The neighbour grid by a counting sort, stable like a sort of (key, index) pairs (the cpu
-// backend's order), so every run lays the particles out alike. Three kernels and a CUB scan:
-// 1. each particle's cell key, and a count per cell (integer atomics: the counts, not their
-//    order, are kept);
-// 2. an exclusive scan of the counts: the cell table, cell_start[k] = particles in cells below k;
-// 3. each particle takes a slot in its cell's range (atomically, in no fixed order), writes its
-//    index there and gives back its count, so the counts are zero again for the next step; then
-// 4. each particle counts the particles of its cell with a smaller index in those slots: its rank
-//    in the canonical order within the cell, so its place in cell order, where it copies itself.
-//    (A thread per cell sorting its slots, as before, was serial per cell: 62 of the 123 us of
-//    the grid at 1M particles on an H100.)
-__global__ void cell_count_kernel(const Vec4* position, std::uint32_t n, GridShape grid, std::uint32_t* keys,
-                                  std::uint32_t* cell_count) {
-  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i >= n) return;
-  const std::uint32_t key = grid.key_of(xyz(position[i]));
-  keys[i] = key;
-  atomicAdd(&cell_count[key], 1u);
-}
+namespace cg = cooperative_groups;
 
-__global__ void cell_slot_kernel(const std::uint32_t* keys, std::uint32_t n, const std::uint32_t* cell_start,
-                                 std::uint32_t* cell_count, std::uint32_t* unordered_id) {
-  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i >= n) return;
-  const std::uint32_t key = keys[i];
-  unordered_id[cell_start[key] + atomicSub(&cell_count[key], 1u) - 1u] = i;
-}
-
-struct CellOrder {
-  const std::uint32_t* keys;
-  const std::uint32_t* cell_start;
-  const std::uint32_t* unordered_id;
+// What the grid kernel reads and writes. The list fields are null without the teams' lists.
+struct GridArrays {
+  GridShape grid;
+  std::uint32_t n;
   const Vec4* position;
   const Vec4* velocity;
   const std::uint32_t* body;
+  std::uint32_t* keys;
+  std::uint32_t* cell_count;
+  std::uint32_t* cell_start;
+  std::uint32_t* unordered_id;
+  std::uint32_t* block_total;  // one per block of the kernel (scan_cell_counts)
   std::uint32_t* sorted_id;
   Vec4* sorted_position;
   Vec4* sorted_velocity;
+  Vec4* list_origin;           // where each sorted particle stood at the last rebuild
+  ListRefreshState* refresh;   // whether to rebuild, and whether this step did
 };
 
-// The teams' lists (list_skin.hpp): where each sorted particle stood at the last rebuild, and the
-// state of their refresh. Null pointers without lists.
-struct ListOrigin {
-  Vec4* origin;
-  ListRefreshState* refresh;
-};
-
-// With lists, a rebuild also records where each particle stands, marks the step as one whose
-// density pass records the lists, and takes back the request that caused it.
-__global__ void cell_rank_kernel(std::uint32_t n, CellOrder order, ListOrigin lists) {
-  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (lists.refresh && i == 0) {
-    lists.refresh->recorded = 1;
-    lists.refresh->requested = 0;
-    ++lists.refresh->rebuilds;
-  }
-  if (i >= n) return;
-  const std::uint32_t key = order.keys[i];
-  const std::uint32_t first = order.cell_start[key];
-  const std::uint32_t end = order.cell_start[key + 1];
-  std::uint32_t rank = 0;
-  for (std::uint32_t slot = first; slot < end; ++slot) rank += order.unordered_id[slot] < i ? 1u : 0u;
-  const std::uint32_t s = first + rank;
-  order.sorted_id[s] = i;
-  place_in_cell_order(s, i, order.position, order.velocity, order.body, order.sorted_position, order.sorted_velocity);
-  if (lists.origin) lists.origin[s] = order.sorted_position[s];
+// Visits items first, first + stride, ... below count: every thread of the kernel's grid, which
+// is no larger than the blocks that fit on the device at once (a cooperative launch).
+template <class Visit>
+__device__ void for_each_grid_item(std::uint32_t count, Visit&& visit) {
+  const std::uint32_t stride = gridDim.x * blockDim.x;
+  for (std::uint32_t k = blockIdx.x * blockDim.x + threadIdx.x; k < count; k += stride) visit(k);
 }
 
-// A step's start with lists: every particle is copied into the cell order of the last rebuild
-// and checked against the trigger (list_skin.hpp); the block that finishes last sets `rebuild`,
-// the condition of the graph's node that holds the grid's kernels (launch_neighbour_grid), when a
-// particle moved past it or a rebuild was requested. One thread sets it: concurrent calls of cudaGraphSetConditional
-// are undefined.
-__global__ void list_check_kernel(std::uint32_t n, CellOrder order, ListOrigin lists, ListSkin skin,
-                                  cudaGraphConditionalHandle rebuild) {
-  const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
-  bool moved_far = false;
-  if (s < n) {
-    const std::uint32_t i = order.sorted_id[s];
-    place_in_cell_order(s, i, order.position, order.velocity, order.body, order.sorted_position, order.sorted_velocity);
-    moved_far = moved_past_trigger(xyz(order.position[i]), xyz(lists.origin[s]), skin);
-  }
-  __shared__ bool last;
-  if (__syncthreads_or(moved_far) && threadIdx.x == 0) atomicOr(&lists.refresh->moved_far, 1u);
-  if (threadIdx.x == 0) {
-    __threadfence();  // the flag is visible before the block counts as done
-    last = atomicAdd(&lists.refresh->blocks_done, 1u) + 1u == gridDim.x;
-  }
+// Stage 2 below: cell_start, the exclusive scan of the cell counts. Block b owns a contiguous
+// range of the table: it adds up its range's counts, then, once every block has, the totals of
+// the blocks before it, and scans its range from there a tile at a time (cub::BlockScan).
+__device__ void scan_cell_counts(const GridArrays& a, cg::grid_group grid) {
+  using Reduce = cub::BlockReduce<std::uint32_t, kBlock>;
+  using Scan = cub::BlockScan<std::uint32_t, kBlock>;
+  __shared__ union {
+    typename Reduce::TempStorage reduce;
+    typename Scan::TempStorage scan;
+  } storage;
+  __shared__ std::uint32_t range_offset;
+  const std::uint32_t entries = a.grid.cell_count() + 1;
+  const std::uint32_t range = (entries + gridDim.x - 1) / gridDim.x;
+  const std::uint32_t first = min(blockIdx.x * range, entries);
+  const std::uint32_t end = min(first + range, entries);
+  std::uint32_t in_range = 0;
+  for (std::uint32_t k = first + threadIdx.x; k < end; k += blockDim.x) in_range += a.cell_count[k];
+  in_range = Reduce(storage.reduce).Sum(in_range);
+  if (threadIdx.x == 0) a.block_total[blockIdx.x] = in_range;
+  grid.sync();
+  std::uint32_t before = 0;
+  for (std::uint32_t b = threadIdx.x; b < blockIdx.x; b += blockDim.x) before += a.block_total[b];
+  before = Reduce(storage.reduce).Sum(before);
+  if (threadIdx.x == 0) range_offset = before;
   __syncthreads();
-  if (!last || threadIdx.x != 0) return;
-  __threadfence();
-  const bool any_moved_far = atomicExch(&lists.refresh->moved_far, 0u) != 0;
-  cudaGraphSetConditional(rebuild, any_moved_far || lists.refresh->requested != 0 ? 1u : 0u);
-  lists.refresh->blocks_done = 0;  // ready for the next step
-  lists.refresh->recorded = 0;     // until the rebuild, if any, says otherwise
+  std::uint32_t running = range_offset;
+  for (std::uint32_t tile = first; tile < end; tile += blockDim.x) {
+    const std::uint32_t k = tile + threadIdx.x;
+    std::uint32_t below = 0;
+    std::uint32_t tile_total = 0;
+    Scan(storage.scan).ExclusiveSum(k < end ? a.cell_count[k] : 0u, below, tile_total);
+    if (k < end) a.cell_start[k] = running + below;
+    running += tile_total;
+    __syncthreads();  // the next tile reuses the scan's storage
+  }
 }
 
-CellOrder cell_order(DeviceState& state) {
-  return {state.keys.data(),      state.cell_start.data(),      state.unordered_id.data(),
-          state.position.data(),  state.velocity.data(),        state.body.data(),
-          state.sorted_id.data(), state.sorted_position.data(), state.sorted_velocity.data()};
+// With lists, a step's start: every particle is copied into the cell order of the last rebuild
+// and checked against the trigger (list_skin.hpp). Returns, the same in every thread, whether the
+// grid must be rebuilt: a particle moved past the trigger or a rebuild was requested.
+__device__ bool lists_expired(const GridArrays& a, const ListSkin& skin, cg::grid_group grid) {
+  bool moved_far = false;
+  for_each_grid_item(a.n, [&](std::uint32_t s) {
+    const std::uint32_t i = a.sorted_id[s];
+    place_in_cell_order(s, i, a.position, a.velocity, a.body, a.sorted_position, a.sorted_velocity);
+    moved_far = moved_far || moved_past_trigger(xyz(a.position[i]), xyz(a.list_origin[s]), skin);
+  });
+  if (__syncthreads_or(moved_far) && threadIdx.x == 0) atomicOr(&a.refresh->moved_far, 1u);
+  grid.sync();
+  return a.refresh->moved_far != 0 || a.refresh->requested != 0;
 }
 
-ListOrigin list_origin(DeviceState& state) { return {state.list_origin.data(), state.list_refresh.data()}; }
+// The neighbour grid by a counting sort, stable like a sort of (key, index) pairs (the cpu
+// backend's order), so every run lays the particles out alike. One cooperative kernel whose
+// stages wait for each other at grid-wide barriers:
+// 1. each particle's cell key, and a count per cell (integer atomics: the counts, not their
+//    order, are kept);
+// 2. the cell table, cell_start[k] = particles in cells below k (scan_cell_counts);
+// 3. each particle takes a slot in its cell's range (atomically, in no fixed order), writes its
+//    index there and gives back its count, so the counts are zero again for the next rebuild;
+// 4. each particle counts the particles of its cell with a smaller index in those slots: its rank
+//    in the canonical order within the cell, so its place in cell order, where it copies itself.
+// With lists (`check`), the kernel first checks them (lists_expired) and, while they hold, ends
+// there: one launch per step. (The check as its own kernel followed by a conditional graph node
+// around the rebuild's five kernels took 6.9 us more per step on an H100; results/performance.md.)
+// A rebuild with lists also records where each particle stands, marks the step as one whose
+// density pass records the lists, and takes back the request that caused it.
+__global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check, ListSkin skin) {
+  const cg::grid_group grid = cg::this_grid();
+  if (check && !lists_expired(a, skin, grid)) {
+    if (grid.thread_rank() == 0) a.refresh->recorded = 0;
+    return;
+  }
+  for_each_grid_item(a.n, [&](std::uint32_t i) {
+    const std::uint32_t key = a.grid.key_of(xyz(a.position[i]));
+    a.keys[i] = key;
+    atomicAdd(&a.cell_count[key], 1u);
+  });
+  grid.sync();
+  scan_cell_counts(a, grid);
+  grid.sync();
+  for_each_grid_item(a.n, [&](std::uint32_t i) {
+    const std::uint32_t key = a.keys[i];
+    a.unordered_id[a.cell_start[key] + atomicSub(&a.cell_count[key], 1u) - 1u] = i;
+  });
+  grid.sync();
+  if (a.refresh && grid.thread_rank() == 0) {
+    *a.refresh = {/*requested=*/0, /*moved_far=*/0, /*recorded=*/1, a.refresh->rebuilds + 1};
+  }
+  for_each_grid_item(a.n, [&](std::uint32_t i) {
+    const std::uint32_t key = a.keys[i];
+    const std::uint32_t first = a.cell_start[key];
+    const std::uint32_t end = a.cell_start[key + 1];
+    std::uint32_t rank = 0;
+    for (std::uint32_t slot = first; slot < end; ++slot) rank += a.unordered_id[slot] < i ? 1u : 0u;
+    const std::uint32_t s = first + rank;
+    a.sorted_id[s] = i;
+    place_in_cell_order(s, i, a.position, a.velocity, a.body, a.sorted_position, a.sorted_velocity);
+    if (a.list_origin) a.list_origin[s] = a.sorted_position[s];
+  });
+}
+
+GridArrays grid_arrays(DeviceState& state, const GridShape& grid) {
+  return {grid,
+          static_cast<std::uint32_t>(state.position.size()),
+          state.position.data(),
+          state.velocity.data(),
+          state.body.data(),
+          state.keys.data(),
+          state.cell_count.data(),
+          state.cell_start.data(),
+          state.unordered_id.data(),
+          state.block_total.data(),
+          state.sorted_id.data(),
+          state.sorted_position.data(),
+          state.sorted_velocity.data(),
+          state.list_origin.data(),
+          state.list_refresh.data()};
+}
+
+void launch_grid_kernel(DeviceState& state, const GridShape& grid, bool check, const ListSkin& skin,
+                        cudaStream_t stream) {
+  GridArrays a = grid_arrays(state, grid);
+  const unsigned blocks = grid_kernel_blocks(a.n, grid.cell_count());
+  void* arguments[] = {&a, &check, const_cast<ListSkin*>(&skin)};
+  cuda_check(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(&grid_kernel), dim3(blocks), dim3(kBlock),
+                                         arguments, 0, stream),
+             "launch the neighbour grid");
+}
 
 }  // namespace
 
-std::size_t scan_temp_bytes(std::uint32_t cells) {
-  std::size_t bytes = 0;
-  cuda_check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, static_cast<const std::uint32_t*>(nullptr),
-                                           static_cast<std::uint32_t*>(nullptr), cells + 1),
-             "size the cell-table scan");
-  return bytes;
+// As many blocks as the items need, at most as many as fit on the device at once.
+unsigned grid_kernel_blocks(std::size_t particles, std::uint32_t cells) {
+  int device = 0;
+  int multiprocessors = 0;
+  int per_multiprocessor = 0;
+  cuda_check(cudaGetDevice(&device), "get the device");
+  cuda_check(cudaDeviceGetAttribute(&multiprocessors, cudaDevAttrMultiProcessorCount, device), "count multiprocessors");
+  cuda_check(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&per_multiprocessor, grid_kernel, kBlock, 0),
+             "size the neighbour grid's cooperative launch");
+  const unsigned resident = static_cast<unsigned>(multiprocessors * per_multiprocessor);
+  return std::max(1u, std::min(resident, blocks_for(std::max<std::size_t>(particles, std::size_t{cells} + 1))));
 }
 
-// Counts per cell, their scan (the cell table), slots, each particle's rank in its cell and its
-// cell-ordered copy (see cell_count_kernel).
 void launch_neighbour_grid(DeviceState& state, const GridShape& grid, cudaStream_t stream) {
-  const auto n = static_cast<std::uint32_t>(state.position.size());
-  const std::uint32_t cells = grid.cell_count();
-  cell_count_kernel<<<blocks_for(n), kBlock, 0, stream>>>(state.position.data(), n, grid, state.keys.data(),
-                                                         state.cell_count.data());
-  std::size_t scan_bytes = state.scan_storage.size();
-  cuda_check(cub::DeviceScan::ExclusiveSum(state.scan_storage.data(), scan_bytes, state.cell_count.data(),
-                                           state.cell_start.data(), cells + 1, stream),
-             "cell-table scan");
-  cell_slot_kernel<<<blocks_for(n), kBlock, 0, stream>>>(state.keys.data(), n, state.cell_start.data(),
-                                                        state.cell_count.data(), state.unordered_id.data());
-  cell_rank_kernel<<<blocks_for(n), kBlock, 0, stream>>>(n, cell_order(state), list_origin(state));
+  launch_grid_kernel(state, grid, false, ListSkin{}, stream);
 }
 
-void launch_list_check(DeviceState& state, const ListSkin& skin, cudaGraphConditionalHandle rebuild,
-                       cudaStream_t stream) {
-  const auto n = static_cast<std::uint32_t>(state.position.size());
-  list_check_kernel<<<blocks_for(n), kBlock, 0, stream>>>(n, cell_order(state), list_origin(state), skin, rebuild);
+void launch_list_step_grid(DeviceState& state, const GridShape& grid, const ListSkin& skin, cudaStream_t stream) {
+  launch_grid_kernel(state, grid, true, skin, stream);
 }
 
 }  // namespace mssph::kernels

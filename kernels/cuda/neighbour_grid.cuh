@@ -1,6 +1,7 @@
 #pragma once
 // The neighbour grid on the GPU: the cell table and the cell-ordered copies of the particles that
-// the density and force sums walk (kernels/common/cell_grid.hpp).
+// the density and force sums walk (kernels/common/cell_grid.hpp). One cooperative kernel
+// (neighbour_grid.cu).
 #include "../common/list_skin.hpp"
 #include "device_state.cuh"
 
@@ -9,8 +10,8 @@
 
 namespace mssph::kernels {
 
-// Temporary storage of the cell table's scan over cells + 1 counts [bytes].
-std::size_t scan_temp_bytes(std::uint32_t cells);
+// Blocks of the grid kernel for a scene: the size of its per-block array (block_total).
+unsigned grid_kernel_blocks(std::size_t particles, std::uint32_t cells);
 
 // Sorts the particles into the grid's cells from their canonical positions: cell_start,
 // sorted_id and the cell-ordered positions and velocities. With the teams' lists, also where each
@@ -18,9 +19,8 @@ std::size_t scan_temp_bytes(std::uint32_t cells);
 void launch_neighbour_grid(DeviceState& state, const GridShape& grid, cudaStream_t stream);
 
 // With the teams' lists, a step's start: copies the particles into the cell order of the last
-// rebuild and sets the condition `rebuild` (of the graph being captured) when the lists are no
-// longer valid (list_skin.hpp), so that a conditional node runs launch_neighbour_grid.
-void launch_list_check(DeviceState& state, const ListSkin& skin, cudaGraphConditionalHandle rebuild,
-                       cudaStream_t stream);
+// rebuild and, when the lists are no longer valid (list_skin.hpp), rebuilds the grid as
+// launch_neighbour_grid does. The decision is taken on the device.
+void launch_list_step_grid(DeviceState& state, const GridShape& grid, const ListSkin& skin, cudaStream_t stream);
 
 }  // namespace mssph::kernels

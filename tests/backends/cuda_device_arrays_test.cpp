@@ -31,11 +31,11 @@ std::size_t element_bytes(const ArraySize<T>&) {
 }
 
 // Every array the list visits, with its bytes, in the list's order.
-std::vector<ListedArray> listed_arrays(const FloatScene& scene, const ChunkTables& chunks, std::size_t scan_bytes,
+std::vector<ListedArray> listed_arrays(const FloatScene& scene, const ChunkTables& chunks, std::size_t grid_blocks,
                                        unsigned team_lanes) {
   DeviceArrays<ArraySize> arrays;
   std::vector<ListedArray> listed;
-  kernels::for_each_device_array(arrays, scene, chunks, scan_bytes, team_lanes,
+  kernels::for_each_device_array(arrays, scene, chunks, grid_blocks, team_lanes,
                                  [&](const char* name, auto& array, const auto& contents) {
                                    listed.push_back({name, element_bytes(array) * contents.count});
                                  });
@@ -58,16 +58,16 @@ struct DeviceArraysTest : ::testing::Test {
   ParticleSetup setup = coarse_scene("sphere_drop_deformable.json", 0.01);
   FloatScene scene = kernels::make_float_scene(setup);
   ChunkTables chunks = kernels::make_chunk_tables(scene, setup.bodies);
-  static constexpr std::size_t kScanBytes = 1000;  // stands in for CUB's figure (needs the CUDA runtime)
+  static constexpr std::size_t kGridBlocks = 264;  // stands in for grid_kernel_blocks (needs a device)
   static constexpr unsigned kTeamLanes = 4;        // stands in for choose_team_lanes' (needs a device)
 };
 
 TEST_F(DeviceArraysTest, CountedBytesAreTheSumOfTheListedArrays) {
-  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes, kTeamLanes);
+  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kGridBlocks, kTeamLanes);
   std::size_t sum = 0;
   for (const ListedArray& a : listed) sum += a.bytes;
-  EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes, kTeamLanes).total_bytes, sum);
-  EXPECT_EQ(bytes_of(listed, "scan_storage"), kScanBytes);
+  EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kGridBlocks, kTeamLanes).total_bytes, sum);
+  EXPECT_EQ(bytes_of(listed, "block_total"), kGridBlocks * sizeof(std::uint32_t));
 }
 
 // An array declared in DeviceArrays but allocated outside the list would escape the count: every
@@ -78,7 +78,7 @@ TEST_F(DeviceArraysTest, EveryDeclaredArrayIsListedOnce) {
   constexpr std::size_t declared = sizeof(DeviceArrays<ArraySize>) / sizeof(std::size_t);
   ASSERT_FALSE(scene.deformable_body.empty());
   ASSERT_FALSE(scene.rigid_bodies.empty());
-  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes, kTeamLanes);
+  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kGridBlocks, kTeamLanes);
   std::set<std::string> names;
   for (const ListedArray& a : listed) names.insert(a.name);
   EXPECT_EQ(names.size(), listed.size()) << "an array is listed twice";
@@ -104,7 +104,7 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
     if (body.kind == BodyKind::deformable) deformable_particles += body.count;
   }
   ASSERT_EQ(deformables, deformable_particles);
-  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes, kTeamLanes);
+  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kGridBlocks, kTeamLanes);
   EXPECT_EQ(bytes_of(listed, "position"), n * 16);
   EXPECT_EQ(bytes_of(listed, "sorted_id"), n * 4);
   EXPECT_EQ(bytes_of(listed, "cell_start"), (cells + 1) * 4);
@@ -144,8 +144,8 @@ TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
       d * 3 * sizeof(kernels::Mat3) +                                       // correction, corrected_stress_action, deformation
       d * sizeof(std::uint32_t) +                                           // bond_count
       scene.bond_neighbour.size() * sizeof(std::uint32_t);                  // bond_neighbour
-  EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes, kTeamLanes).total_bytes -
-                kernels::device_array_sizes(without, chunks, kScanBytes, kTeamLanes).total_bytes,
+  EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kGridBlocks, kTeamLanes).total_bytes -
+                kernels::device_array_sizes(without, chunks, kGridBlocks, kTeamLanes).total_bytes,
             deformable_bytes);
 }
 
@@ -154,8 +154,8 @@ TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
 // each particle's place at the rebuild (16 bytes) and one refresh state (list_skin.hpp).
 TEST_F(DeviceArraysTest, OnlyTeamsKeepNeighbourLists) {
   const std::size_t n = setup.size();
-  const std::size_t one_lane = kernels::device_array_sizes(scene, chunks, kScanBytes, 1).total_bytes;
-  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kScanBytes, 1);
+  const std::size_t one_lane = kernels::device_array_sizes(scene, chunks, kGridBlocks, 1).total_bytes;
+  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kGridBlocks, 1);
   for (const char* name : {"list_count", "list_index", "list_origin", "list_refresh"}) {
     EXPECT_EQ(bytes_of(listed, name), 0u) << name;
   }
@@ -163,7 +163,7 @@ TEST_F(DeviceArraysTest, OnlyTeamsKeepNeighbourLists) {
     SCOPED_TRACE(::testing::Message() << lanes << " lanes");
     const std::uint32_t capacity = kernels::team_list_capacity(lanes);
     EXPECT_GE(capacity, 2u);
-    EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kScanBytes, lanes).total_bytes - one_lane,
+    EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kGridBlocks, lanes).total_bytes - one_lane,
               n * lanes * (1 + capacity) * sizeof(std::uint32_t) + n * sizeof(kernels::Vec4) +
                   sizeof(kernels::ListRefreshState));
   }
