@@ -1,5 +1,6 @@
 #include "neighbour_grid.cuh"
 
+#include "../common/block_share.hpp"
 #include "../common/fluid_physics.hpp"
 #include "../common/list_skin.hpp"
 #include "cuda_check.hpp"
@@ -42,9 +43,9 @@ __device__ void for_each_grid_item(std::uint32_t count, Visit&& visit) {
   for (std::uint32_t k = blockIdx.x * blockDim.x + threadIdx.x; k < count; k += stride) visit(k);
 }
 
-// Stage 2 below: cell_start, the exclusive scan of the cell counts. Block b owns a contiguous
-// range of the table: it adds up its range's counts, then, once every block has, the totals of
-// the blocks before it, and scans its range from there a tile at a time (cub::BlockScan).
+// Stage 2 below: cell_start, the exclusive scan of the cell counts. Each block owns a share of the
+// table (block_share): it adds up its share's counts, then, once every block has, the totals of
+// the blocks before it, and scans its share from there a tile at a time (cub::BlockScan).
 __device__ void scan_cell_counts(const GridArrays& a, cg::grid_group grid) {
   using Reduce = cub::BlockReduce<std::uint32_t, kBlock>;
   using Scan = cub::BlockScan<std::uint32_t, kBlock>;
@@ -52,22 +53,19 @@ __device__ void scan_cell_counts(const GridArrays& a, cg::grid_group grid) {
     typename Reduce::TempStorage reduce;
     typename Scan::TempStorage scan;
   } storage;
-  __shared__ std::uint32_t range_offset;
-  const std::uint32_t entries = a.grid.cell_count() + 1;
-  const std::uint32_t range = (entries + gridDim.x - 1) / gridDim.x;
-  const std::uint32_t first = min(blockIdx.x * range, entries);
-  const std::uint32_t end = min(first + range, entries);
-  std::uint32_t in_range = 0;
-  for (std::uint32_t k = first + threadIdx.x; k < end; k += blockDim.x) in_range += a.cell_count[k];
-  in_range = Reduce(storage.reduce).Sum(in_range);
-  if (threadIdx.x == 0) a.block_total[blockIdx.x] = in_range;
+  __shared__ std::uint32_t share_offset;
+  const auto [first, end] = block_share(a.grid.cell_count() + 1, gridDim.x, blockIdx.x);
+  std::uint32_t in_share = 0;
+  for (std::uint32_t k = first + threadIdx.x; k < end; k += blockDim.x) in_share += a.cell_count[k];
+  in_share = Reduce(storage.reduce).Sum(in_share);
+  if (threadIdx.x == 0) a.block_total[blockIdx.x] = in_share;
   grid.sync();
   std::uint32_t before = 0;
   for (std::uint32_t b = threadIdx.x; b < blockIdx.x; b += blockDim.x) before += a.block_total[b];
   before = Reduce(storage.reduce).Sum(before);
-  if (threadIdx.x == 0) range_offset = before;
+  if (threadIdx.x == 0) share_offset = before;
   __syncthreads();
-  std::uint32_t running = range_offset;
+  std::uint32_t running = share_offset;
   for (std::uint32_t tile = first; tile < end; tile += blockDim.x) {
     const std::uint32_t k = tile + threadIdx.x;
     std::uint32_t below = 0;
