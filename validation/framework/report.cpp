@@ -138,7 +138,10 @@ void write_report_hdf5(const std::string& path, const RunInfo& info, const std::
       h5::Handle group = h5::open_or_create_group(file.id(), case_path + "/" + s.name);
       write_vector(group.id(), "x", s.x, s.x_label);
       for (std::size_t k = 0; k < s.columns.size(); ++k) {
-        write_vector(group.id(), "y" + std::to_string(k), s.columns[k].second, s.columns[k].first);
+        // Appended, not "y" + to_string(k): g++ 12 warns about that form (-Wrestrict, GCC bug 105651).
+        std::string column_name = "y";
+        column_name += std::to_string(k);
+        write_vector(group.id(), column_name, s.columns[k].second, s.columns[k].first);
       }
     }
   }
