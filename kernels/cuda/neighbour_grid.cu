@@ -163,7 +163,8 @@ GridArrays grid_arrays(DeviceState& state, const GridShape& grid) {
 void launch_grid_kernel(DeviceState& state, const GridShape& grid, bool check, const ListSkin& skin,
                         cudaStream_t stream) {
   GridArrays a = grid_arrays(state, grid);
-  const unsigned blocks = grid_kernel_blocks(a.n, grid.cell_count());
+  // One block per entry of block_total, which was sized by grid_kernel_blocks for this device.
+  const auto blocks = static_cast<unsigned>(state.block_total.size());
   void* arguments[] = {&a, &check, const_cast<ListSkin*>(&skin)};
   cuda_check(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(&grid_kernel), dim3(blocks), dim3(kBlock),
                                          arguments, 0, stream),
