@@ -2,8 +2,9 @@
 // The chunk tables of the `cuda` backend's per-body reductions, built on the host (no CUDA here,
 // so they are tested without a GPU). A body of a million particles is summed by many blocks, one
 // per chunk of at most kChunk particles; every sum runs in a fixed order (strided per thread,
-// CUB's block tree, then the chunks in order): no atomics, so runs repeat bit for bit.
+// CUB's block tree, then the chunks in a fixed order): no atomics, so runs repeat bit for bit.
 #include "../common/float_scene.hpp"
+#include "thread_blocks.cuh"
 
 #include <algorithm>
 #include <cstddef>
@@ -14,7 +15,19 @@ namespace mssph::kernels {
 
 inline constexpr std::uint32_t kChunk = 4096;
 
-// A run of at most kChunk particles of one movable rigid body: its interaction wrench.
+// A movable rigid body's chunks (rigid_bodies.cu) hold a whole number of strides of a block's
+// kBlock threads: as many as leave the body at least kRigidChunksPerBody chunks (one stride when
+// it is smaller), at most kChunk particles. A 30k-particle body is summed by 118 blocks, a thread
+// per particle, where 8 chunks of kChunk took each thread through 16 particles in turn; a
+// 1M-particle body keeps chunks of kChunk, whose fewer partial wrenches are added faster.
+inline constexpr std::uint32_t kRigidChunksPerBody = 128;
+
+inline std::uint32_t rigid_chunk_size(std::uint32_t particles) {
+  const std::uint32_t stride = kBlock;
+  return std::clamp(particles / (stride * kRigidChunksPerBody), 1u, kChunk / stride) * stride;
+}
+
+// A run of at most rigid_chunk_size(body particles) of one movable rigid body: its interaction wrench.
 struct RigidChunk {
   std::uint32_t rigid;  // index of the rigid body
   std::uint32_t first;  // canonical particle range
@@ -35,6 +48,7 @@ struct BodyChunk {
 struct ChunkTables {
   std::vector<RigidChunk> rigid;
   std::vector<std::uint32_t> first_rigid_chunk;  // per rigid body, plus the end
+  std::uint32_t rigid_chunk_strides = 0;         // the most strides of kBlock particles in one rigid chunk
   std::vector<BodyChunk> body;
 };
 
@@ -43,8 +57,10 @@ inline ChunkTables make_chunk_tables(const FloatScene& scene, const std::vector<
   for (std::uint32_t r = 0; r < scene.rigid_bodies.size(); ++r) {
     tables.first_rigid_chunk.push_back(static_cast<std::uint32_t>(tables.rigid.size()));
     const RigidBody& body = scene.rigid_bodies[r];
-    for (std::uint32_t first = body.first; first < body.first + body.count; first += kChunk) {
-      tables.rigid.push_back({r, first, std::min(kChunk, body.first + body.count - first)});
+    const std::uint32_t chunk = rigid_chunk_size(body.count);
+    tables.rigid_chunk_strides = std::max(tables.rigid_chunk_strides, chunk / std::uint32_t{kBlock});
+    for (std::uint32_t first = body.first; first < body.first + body.count; first += chunk) {
+      tables.rigid.push_back({r, first, std::min(chunk, body.first + body.count - first)});
     }
   }
   tables.first_rigid_chunk.push_back(static_cast<std::uint32_t>(tables.rigid.size()));

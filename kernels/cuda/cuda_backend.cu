@@ -149,7 +149,7 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
   mark(kForces);
   launch_forces(scene_, state_, team_lanes_, stream);
   mark(kIntegration);
-  launch_rigid_bodies(scene_, state_, readback_.rigid_bodies_on_device(), stream);
+  launch_rigid_bodies(scene_, chunks_, state_, readback_.rigid_bodies_on_device(), stream);
   mark(kPhaseCount);
   cuda_check(cudaGetLastError(), "launch step kernels");
 }

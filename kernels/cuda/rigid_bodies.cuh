@@ -5,8 +5,10 @@
 
 namespace mssph::kernels {
 
-// Nothing without movable rigid bodies. Each body, once integrated, is also stored to
-// `host_copy` (mapped host memory, BodyReadback), where the haptic loop reads it.
-void launch_rigid_bodies(const FloatScene& scene, DeviceState& state, RigidBody* host_copy, cudaStream_t stream);
+// Nothing without movable rigid bodies. `chunks`: the tables the state was allocated with. Each
+// body, once integrated, is also stored to `host_copy` (mapped host memory, BodyReadback), where
+// the haptic loop reads it.
+void launch_rigid_bodies(const FloatScene& scene, const ChunkTables& chunks, DeviceState& state, RigidBody* host_copy,
+                         cudaStream_t stream);
 
 }  // namespace mssph::kernels

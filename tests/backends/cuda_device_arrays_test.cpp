@@ -86,7 +86,7 @@ TEST_F(DeviceArraysTest, EveryDeclaredArrayIsListedOnce) {
 }
 
 // The sizes follow from the scene alone: n particles, the grid's cells, deformable particles and
-// their bonds, chunks of at most kChunk particles.
+// their bonds, chunks of at most kChunk particles (a rigid body's: rigid_chunk_size).
 TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   const std::size_t n = setup.size();
   const std::size_t cells = scene.grid.cell_count();
@@ -98,7 +98,8 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   for (const BodySetup& body : setup.bodies) {
     body_chunks += chunks_of(body.count);
     if (body.moves_as_rigid_body()) {
-      rigid_chunks += chunks_of(body.count);
+      const std::size_t chunk = kernels::rigid_chunk_size(static_cast<std::uint32_t>(body.count));
+      rigid_chunks += (body.count + chunk - 1) / chunk;
       ++rigid_bodies;
     }
     if (body.kind == BodyKind::deformable) deformable_particles += body.count;
@@ -170,7 +171,8 @@ TEST_F(DeviceArraysTest, OnlyTeamsKeepNeighbourLists) {
 }
 
 // Synthetic bodies: a rigid body of 2 kChunk + 5 particles and a deformable one of 3 particles
-// behind a fluid of 10.
+// behind a fluid of 10. The rigid body's chunks are of rigid_chunk_size: one stride of kBlock
+// particles at this size.
 TEST(ChunkTables, ChunksCoverEachBodyInOrderWithAtMostKChunkParticles) {
   FloatScene scene;
   kernels::RigidBody rigid{};
@@ -193,15 +195,18 @@ TEST(ChunkTables, ChunksCoverEachBodyInOrderWithAtMostKChunkParticles) {
   bodies[2].count = 3;
 
   const ChunkTables tables = kernels::make_chunk_tables(scene, bodies);
-  ASSERT_EQ(tables.rigid.size(), 3u);
-  EXPECT_EQ(tables.first_rigid_chunk, (std::vector<std::uint32_t>{0, 3}));
-  const std::uint32_t counts[] = {kChunk, kChunk, 5};
+  const std::uint32_t stride = kernels::kBlock;
+  ASSERT_EQ(kernels::rigid_chunk_size(rigid.count), stride);
+  const std::uint32_t full_chunks = rigid.count / stride;  // and one of the 5 left over
+  ASSERT_EQ(tables.rigid.size(), full_chunks + 1);
+  EXPECT_EQ(tables.first_rigid_chunk, (std::vector<std::uint32_t>{0, full_chunks + 1}));
+  EXPECT_EQ(tables.rigid_chunk_strides, 1u);
   std::uint32_t next = 10;
-  for (std::size_t c = 0; c < 3; ++c) {
+  for (std::size_t c = 0; c < tables.rigid.size(); ++c) {
     EXPECT_EQ(tables.rigid[c].rigid, 0u);
     EXPECT_EQ(tables.rigid[c].first, next);
-    EXPECT_EQ(tables.rigid[c].count, counts[c]);
-    next += counts[c];
+    EXPECT_EQ(tables.rigid[c].count, c < full_chunks ? stride : 5u);
+    next += tables.rigid[c].count;
   }
   // Body chunks: the fluid's one, the rigid body's three, the deformable body's one (which knows
   // its deformable index and its model's limit).
@@ -213,6 +218,26 @@ TEST(ChunkTables, ChunksCoverEachBodyInOrderWithAtMostKChunkParticles) {
   EXPECT_EQ(tables.body[4].first, elastic.first_particle);
   EXPECT_EQ(tables.body[4].first_deformable, 0u);
   EXPECT_EQ(tables.body[4].lowest_valid_volume_ratio, 0.25f);
+}
+
+// A rigid body's chunk: whole strides of kBlock particles, at most kChunk; a body of at least
+// kRigidChunksPerBody strides is spread over at least kRigidChunksPerBody blocks unless its chunks
+// are already kChunk long, and a longer chunk would leave it fewer.
+TEST(ChunkTables, RigidChunksSpreadABodyOverEnoughBlocks) {
+  const std::uint32_t stride = kernels::kBlock;
+  for (const std::uint32_t particles : {1u, 255u, 256u, 30000u, 65535u, 65536u, 100000u, 370000u, 1000000u, 5000000u}) {
+    const std::uint32_t chunk = kernels::rigid_chunk_size(particles);
+    const std::uint32_t chunks = (particles + chunk - 1) / chunk;
+    EXPECT_EQ(chunk % stride, 0u) << particles;
+    EXPECT_GE(chunk, stride) << particles;
+    EXPECT_LE(chunk, kChunk) << particles;
+    if (particles >= stride * kernels::kRigidChunksPerBody && chunk < kChunk) {
+      EXPECT_GE(chunks, kernels::kRigidChunksPerBody) << particles;
+      EXPECT_LT(particles / (chunk + stride), kernels::kRigidChunksPerBody) << particles;
+    }
+  }
+  EXPECT_EQ(kernels::rigid_chunk_size(30000), stride);
+  EXPECT_EQ(kernels::rigid_chunk_size(1000000), kChunk);
 }
 
 }  // namespace
