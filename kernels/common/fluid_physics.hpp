@@ -22,6 +22,9 @@
 #include "simulation_domain.hpp"
 #include "wall_exclusion.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace mssph::kernels {
 
 // ---- Step 2: density and pressure ----
@@ -166,7 +169,9 @@ MSSPH_HD Vec3 viscosity_force_pair(float mu, float volume_i, float volume_j, flo
 // viscosity force of eq. 2 and 3 (reference: interaction_force).
 MSSPH_HD Vec3 interaction_force(Vec3 pressure, Vec3 viscosity) { return pressure + viscosity; }
 
-// What the force sum needs of particle i, loaded once.
+// What the force sum and the leap-frog need of particle i, loaded once, from its cell-ordered
+// copy: the grid made it from the canonical state at the step's start, and nothing has moved a
+// particle since (its position and velocity are the canonical ones, bit for bit).
 struct ForceParticle {
   std::uint32_t s;
   std::uint32_t body;
@@ -186,17 +191,22 @@ struct ForceSum {
   Vec3 pressure;     // [N] from all neighbours
   Vec3 viscosity;    // [N] from all neighbours
   Vec3 interaction;  // [N] the part of both from other bodies (eq. 7)
-  // Boundary particles within h of i at the start of the step. A particle without one cannot end
-  // the step within the wall exclusion distance (0.8 dx) of a boundary particle as long as it
-  // moves less than h - 0.8 dx in a step (at least 0.2 dx, 1.2 dx at the default h = 2 dx; the
-  // CFL bound keeps a step's move far below), so only a particle with one needs the wall check
-  // after its leap-frog (wall_exclusion.hpp).
-  std::uint32_t boundary_neighbours;
+  // The squared distance from i to its nearest boundary particle within h at the start of the
+  // step [m^2], +infinity without one. A particle without one cannot end the step within the wall
+  // exclusion distance (0.8 dx) of a boundary particle as long as it moves less than h - 0.8 dx in
+  // a step (at least 0.2 dx, 1.2 dx at the default h = 2 dx; the CFL bound keeps a step's move far
+  // below), nor can one whose nearest is farther than that distance plus its move
+  // (surely_clear_of_walls): only the others need the wall check after their leap-frog
+  // (wall_exclusion.hpp). A minimum, so the same in any order of the candidates.
+  float nearest_boundary2;
 };
 
-MSSPH_HD ForceSum zero_force_sum() { return {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, 0}; }
+MSSPH_HD ForceSum zero_force_sum() {
+  return {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, std::numeric_limits<float>::infinity()};
+}
 
-// Adds candidate t's pressure and viscosity forces on i, and counts t if it is a boundary neighbour.
+// Adds candidate t's pressure and viscosity forces on i, and takes t's distance if it is a
+// boundary neighbour.
 MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const SortedView& v, std::uint32_t t) {
   if (t == i.s) return;
   const Vec4 p_j = v.position[t];
@@ -205,7 +215,7 @@ MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
   if (r2 >= v.step.smoothing.h2) return;
   const std::uint32_t body_j = body_of(p_j);
   const bool same_body = body_j == i.body;
-  if (v.bodies[body_j].kind == kBoundary) ++sum.boundary_neighbours;
+  if (v.bodies[body_j].kind == kBoundary) sum.nearest_boundary2 = std::fmin(sum.nearest_boundary2, r2);
   if (same_body && i.parameters.kind != kFluid) return;  // rigid, deformable: no pressure among themselves
   const VolumePressure vp_j = v.volume_pressure[t];
   const Vec3 u_j = xyz(v.velocity[t]);
@@ -262,26 +272,29 @@ struct Advance {
   std::uint32_t i;     // canonical index
   bool integrates;     // fluid or deformable: advanced by the leap-frog; the others only record
                        // their interaction force
-  bool may_hit_wall;   // integrates and has a boundary neighbour (ForceSum::boundary_neighbours)
+  bool may_hit_wall;   // integrates, and its move may end within d_wall of a boundary particle
+                       // (ForceSum::nearest_boundary2)
   Vec3 previous;       // x_n [m]
   Vec4 position;       // x_{n+1} [m]
   Vec4 velocity;       // v_{n+1/2} [m/s]
 };
 
-// Advances s by the leap-frog under its total force: its pressure and viscosity sums and, for a
-// deformable particle, its elastic force.
-MSSPH_HD Advance advance_particle(const SortedView& v, const CanonicalState& c, std::uint32_t s, const ForceSum& f) {
-  Advance a{v.id[s], false, false, {0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
-  const BodyParameters& body = v.bodies[c.body[a.i]];
-  if (body.kind != kFluid && body.kind != kDeformable) return a;
+// Advances particle p, canonical index i, by the leap-frog under its total force: its pressure and
+// viscosity sums and, for a deformable particle, its elastic force. Its position and velocity come
+// from its cell-ordered copy (ForceParticle), not from another round trip to the canonical arrays.
+MSSPH_HD Advance advance_particle(const StepParameters& step, const CanonicalState& c, const ForceParticle& p,
+                                  std::uint32_t i, const ForceSum& f) {
+  Advance a{i, false, false, {0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
+  if (p.parameters.kind != kFluid && p.parameters.kind != kDeformable) return a;
   Vec3 total = f.pressure + f.viscosity;
   if (c.elastic_force) total += xyz(c.elastic_force[a.i]);
   a.integrates = true;
-  a.may_hit_wall = f.boundary_neighbours > 0;
-  a.position = c.position[a.i];
-  a.velocity = c.velocity[a.i];
-  a.previous = xyz(a.position);
-  leapfrog(a.position, a.velocity, total, body.sph_mass, c.fixed[a.i] != 0, v.step);
+  a.position = make_vec4(p.x, 0.0f);
+  a.velocity = make_vec4(p.u, 0.0f);
+  a.previous = p.x;
+  leapfrog(a.position, a.velocity, total, p.parameters.sph_mass, c.fixed[a.i] != 0, step);
+  a.may_hit_wall = !surely_clear_of_walls(f.nearest_boundary2, squared_norm(xyz(a.position) - a.previous),
+                                          step.wall_exclusion_distance);
   return a;
 }
 
@@ -294,7 +307,7 @@ MSSPH_HD bool wall_check_share(const SortedView& v, const Advance& a, std::uint3
 // The same share for a GPU team's lane from its list `list` (or the walk an overflowed list was
 // recorded from): the candidates its force sum visited, instead of its share of the 27 cells
 // around the new position. Every boundary particle that can reject the move was within h of the
-// particle at the step's start (ForceSum::boundary_neighbours), so some lane of the team lists it,
+// particle at the step's start (ForceSum::nearest_boundary2), so some lane of the team lists it,
 // and every listed candidate is a real one: the team's decision is keep_out_of_walls'. The lanes
 // of 8 each visit ~6 list entries instead of ~36 candidates, each behind two dependent loads; that
 // walk, in the slowest team, set the length of a small scene's force pass (results/performance.md).
@@ -319,10 +332,10 @@ MSSPH_HD void store_advance(const SortedView& v, const CanonicalState& c, const 
   c.velocity[a.i] = a.velocity;
 }
 
-// Steps 3 and 4 joined for sorted particle s in one lane (the host), given its force sum: the
+// Steps 3 and 4 joined for particle p in one lane (the host), given its force sum: the
 // parts above, the wall check over all of its candidates.
-MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, std::uint32_t s, const ForceSum& f) {
-  const Advance a = advance_particle(v, c, s, f);
+MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, const ForceParticle& p, const ForceSum& f) {
+  const Advance a = advance_particle(v.step, c, p, v.id[p.s], f);
   store_advance(v, c, f, a, wall_check_share(v, a, 0, 1));
 }
 

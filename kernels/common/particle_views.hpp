@@ -80,7 +80,6 @@ struct CanonicalState {
   Vec4* velocity;                 // xyz [m/s]
   Vec4* interaction_force;        // xyz [N]: from other bodies, eq. 7
   const Vec4* elastic_force;      // xyz [N]: deformable particles, else zero (may be null)
-  const std::uint32_t* body;      // body index
   std::uint8_t* fixed;            // HoldCode: held by a fixed region, or since it left the domain
 };
 

@@ -14,6 +14,8 @@
 // particle within h of it.
 #include "particle_views.hpp"
 
+#include <cmath>
+
 namespace mssph::kernels {
 
 // What candidate t of the 27 cells around `moved` means for the move from `previous`.
@@ -35,6 +37,20 @@ MSSPH_HD BoundaryApproach boundary_approach(const SortedView& v, Vec3 previous, 
   // rejecting the move; the run's blow-up check stops such a run.
   const bool clear = r2_new >= limit2 || r2_new >= r2_old;
   return {!clear, away, r2_old};
+}
+
+// Relative margin of surely_clear_of_walls over d_wall. Its distances and boundary_approach's are
+// rounded to a few float ulps (~1e-7 of the distances themselves: differences of coordinates are
+// rounded relative to the difference), so 1e-3 leaves every such rounding far inside it.
+inline constexpr float kWallClearanceMargin = 1e-3f;
+
+// Whether a move of length sqrt(move2) surely ends farther than d_wall from every boundary
+// particle when the nearest one was sqrt(nearest2) away at its start: each then ends at least
+// sqrt(nearest2) - sqrt(move2) away (triangle inequality), so boundary_approach rejects nothing
+// and the wall check can be skipped with the same outcome. +infinity (no boundary particle
+// within h) is clear; a NaN (a blown-up particle) is not.
+MSSPH_HD bool surely_clear_of_walls(float nearest2, float move2, float d_wall) {
+  return std::sqrt(nearest2) - std::sqrt(move2) >= (1.0f + kWallClearanceMargin) * d_wall;
 }
 
 // Whether one of the candidates that candidates(visit) hands to visit is a boundary particle that

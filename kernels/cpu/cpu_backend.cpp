@@ -113,12 +113,13 @@ void CpuBackend::compute_densities() {
 void CpuBackend::compute_forces_and_advance_particles() {
   const SortedView view = sorted_view();
   const CanonicalState state{scene_.position.data(), scene_.velocity.data(), interaction_force_.data(),
-                             rotation_.empty() ? nullptr : elastic_force_.data(), scene_.body.data(), scene_.fixed.data()};
+                             rotation_.empty() ? nullptr : elastic_force_.data(), scene_.fixed.data()};
   const NeighbourLists lists = neighbour_lists();
   const auto n = static_cast<std::uint32_t>(setup_.size());
 #pragma omp parallel for schedule(static)
   for (std::uint32_t s = 0; s < n; ++s) {
-    apply_forces(view, state, s, force_sum_over(view, load_force_particle(view, s), neighbours_of(view, lists, s)));
+    const ForceParticle particle = load_force_particle(view, s);
+    apply_forces(view, state, particle, force_sum_over(view, particle, neighbours_of(view, lists, s)));
   }
 }
 

@@ -77,8 +77,8 @@ NeighbourLists team_lists(DeviceState& state, unsigned team_lanes) {
 
 // elastic_force is empty, so null, without deformable bodies.
 CanonicalState canonical_state(DeviceState& state) {
-  return CanonicalState{state.position.data(),      state.velocity.data(), state.interaction_force.data(),
-                        state.elastic_force.data(), state.body.data(),     state.fixed.data()};
+  return CanonicalState{state.position.data(), state.velocity.data(), state.interaction_force.data(),
+                        state.elastic_force.data(), state.fixed.data()};
 }
 
 DeformableView deformable_view(const FloatScene& scene, DeviceState& state) {

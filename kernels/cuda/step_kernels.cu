@@ -36,6 +36,11 @@ __device__ std::uint32_t team_sum(std::uint32_t x) {
   return x;
 }
 template <unsigned Lanes>
+__device__ float team_min(float x) {
+  for (unsigned offset = 1; offset < Lanes; offset *= 2) x = fminf(x, __shfl_xor_sync(0xffffffffu, x, offset));
+  return x;
+}
+template <unsigned Lanes>
 __device__ Vec3 team_sum(Vec3 v) {
   return {team_sum<Lanes>(v.x), team_sum<Lanes>(v.y), team_sum<Lanes>(v.z)};
 }
@@ -137,12 +142,15 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
   // of the 27 cells again; one lane alone (large scenes) has no lists (density_kernel) and walks.
   constexpr bool kTeam = Lanes > 1;
   const std::uint32_t list = blockIdx.x * blockDim.x + threadIdx.x;
+  ForceParticle particle{};
+  std::uint32_t i = 0;  // canonical index, loaded before the sum so that the leap-frog does not wait for it
   if (active) {
-    const ForceParticle particle = load_force_particle(view, s);
+    i = view.id[s];
+    particle = load_force_particle(view, s);
     sum = kTeam ? force_sum_listed(view, particle, lane, Lanes, lists, list) : force_sum(view, particle, lane, Lanes);
   }
   sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction),
-         team_sum<Lanes>(sum.boundary_neighbours)};
+         team_min<Lanes>(sum.nearest_boundary2)};
   // apply_forces split over the team: every lane advances the particle from the same team sum
   // (same bits), tests its list again (one lane: every candidate around the new position) for a
   // wall, and the team counts the lanes that found one; lane 0 then rejects the move if any did
@@ -150,7 +158,7 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
   Advance advance{};
   std::uint32_t lanes_touching_wall = 0;
   if (active) {
-    advance = advance_particle(view, state, s, sum);
+    advance = advance_particle(view.step, state, particle, i, sum);
     const bool touches = kTeam ? wall_check_share(view, advance, lane, Lanes, lists, list)
                                : wall_check_share(view, advance, lane, Lanes);
     lanes_touching_wall = touches ? 1u : 0u;

@@ -91,7 +91,7 @@ TEST(NeighbourLists, SumsOverTheListAreTheGridWalksBits) {
     ASSERT_TRUE(same_bits(walked_force.pressure, listed_force.pressure)) << "particle " << s;
     ASSERT_TRUE(same_bits(walked_force.viscosity, listed_force.viscosity)) << "particle " << s;
     ASSERT_TRUE(same_bits(walked_force.interaction, listed_force.interaction)) << "particle " << s;
-    ASSERT_EQ(walked_force.boundary_neighbours, listed_force.boundary_neighbours) << "particle " << s;
+    ASSERT_EQ(walked_force.nearest_boundary2, listed_force.nearest_boundary2) << "particle " << s;
     if (i.body == kDeformableBody && !same_bits(walked_force.interaction, Vec3{0, 0, 0})) ++deformable_with_foreign_neighbours;
   }
   // The deformable block meets the fluid and the walls: its particles' sums take the body tests.
@@ -174,7 +174,7 @@ TEST(TeamNeighbourLists, KeepEveryLanesSumsAndListItsShareWithinTheSkin) {
           ASSERT_TRUE(same_bits(walked.pressure, from_list.pressure)) << "particle " << s << ", lane " << lane;
           ASSERT_TRUE(same_bits(walked.viscosity, from_list.viscosity)) << "particle " << s;
           ASSERT_TRUE(same_bits(walked.interaction, from_list.interaction)) << "particle " << s;
-          ASSERT_EQ(walked.boundary_neighbours, from_list.boundary_neighbours) << "particle " << s;
+          ASSERT_EQ(walked.nearest_boundary2, from_list.nearest_boundary2) << "particle " << s;
         }
       }
       // Both of for_each_listed's paths ran, and the lists hold the skin's candidates beyond h.

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -147,7 +148,8 @@ TEST(WallCheckLanes, AnyLaneTouchingAWallIsExactlyARejectedMove) {
 // decision must again be exactly keep_out_of_walls', from lists that hold their lane's share and
 // from lists that overflowed (capacity 2 holds one entry), which walk the share of the 27 cells
 // around the step's start instead. Moves up to 0.6 dx, below h - d_wall = 1.2 dx
-// (ForceSum::boundary_neighbours).
+// (ForceSum::nearest_boundary2); the check runs where the kernel runs it, for a move that is not
+// surely clear of the walls.
 TEST(WallCheckLanes, TheTeamsListsDecideAsTheWalkDoes) {
   std::mt19937_64 random(20111024);
   int moves = 0, rejected_moves = 0, decided_with_an_overflowed_list = 0;
@@ -167,14 +169,16 @@ TEST(WallCheckLanes, TheTeamsListsDecideAsTheWalkDoes) {
           kernels::Advance advance{0, true, false, previous, position, velocity};
           const bool rejected = kernels::keep_out_of_walls(v, previous, position, velocity);
           const kernels::ForceParticle particle = kernels::load_force_particle(v, s);
-          std::uint32_t boundary_neighbours = 0;
+          float nearest_boundary2 = std::numeric_limits<float>::infinity();
           bool some_list_overflowed = false;
           for (std::uint32_t lane = 0; lane < lanes; ++lane) {
             const std::uint32_t list = team.list_of(s, lane);
-            boundary_neighbours += kernels::force_sum_listed(v, particle, lane, lanes, team.lists, list).boundary_neighbours;
+            nearest_boundary2 = std::fmin(
+                nearest_boundary2, kernels::force_sum_listed(v, particle, lane, lanes, team.lists, list).nearest_boundary2);
             some_list_overflowed = some_list_overflowed || team.count[list] >= capacity;
           }
-          advance.may_hit_wall = boundary_neighbours > 0;
+          advance.may_hit_wall = !kernels::surely_clear_of_walls(
+              nearest_boundary2, kernels::squared_norm(kernels::xyz(advance.position) - previous), v.step.wall_exclusion_distance);
           bool team_rejects = false;
           for (std::uint32_t lane = 0; lane < lanes; ++lane) {
             team_rejects = kernels::wall_check_share(v, advance, lane, lanes, team.lists, team.list_of(s, lane)) ||
@@ -199,4 +203,43 @@ TEST(WallCheckLanes, TheTeamsListsDecideAsTheWalkDoes) {
 }
 
 }  // namespace
+
+// The force kernel skips the wall check of a move that is surely clear of the walls: its nearest
+// boundary neighbour at the step's start, less the move's length, farther than d_wall
+// (surely_clear_of_walls). Such a move must never be one that keep_out_of_walls rejects; and the
+// bound must skip a fair share of the moves it keeps, or it saves nothing. Moves of lengths
+// uniform up to 0.6 dx in random directions from fluid particles next to a wall corner, with the
+// nearest boundary distance from the force sum over all candidates.
+TEST(WallCheckLanes, AMoveSurelyClearOfTheWallsIsNeverRejected) {
+  std::mt19937_64 random(20111023);
+  int moves = 0, surely_clear = 0, kept = 0, rejected = 0;
+  for (int c = 0; c < 20; ++c) {
+    const float dx = std::uniform_real_distribution<float>(0.01f, 0.05f)(random);
+    const WallCorner corner(dx, random);
+    const kernels::SortedView v = corner.view();
+    const float d_wall = v.step.wall_exclusion_distance;
+    for (int m = 0; m < 200; ++m) {
+      const std::uint32_t s = corner.fluid_particle_near_a_wall(random);
+      const Vec3 previous = kernels::xyz(v.position[s]);
+      const Vec3 direction = random_vector(random, 1.0f);
+      const float length = std::uniform_real_distribution<float>(0.0f, 0.6f * dx)(random);
+      Vec4 position = kernels::make_vec4(previous + (length / kernels::norm(direction)) * direction, 0.0f);
+      Vec4 velocity{0, 0, 0, 0};
+      const float move2 = kernels::squared_norm(kernels::xyz(position) - previous);
+      const float nearest2 = kernels::force_sum(v, kernels::load_force_particle(v, s), 0, 1).nearest_boundary2;
+      const bool clear = kernels::surely_clear_of_walls(nearest2, move2, d_wall);
+      const bool is_rejected = kernels::keep_out_of_walls(v, previous, position, velocity);
+      ASSERT_FALSE(clear && is_rejected) << "dx " << dx << ", nearest boundary " << std::sqrt(nearest2) / dx
+                                         << " dx, move " << std::sqrt(move2) / dx << " dx";
+      ++moves;
+      surely_clear += clear ? 1 : 0;
+      (is_rejected ? rejected : kept) += 1;
+    }
+  }
+  std::cout << surely_clear << " of " << moves << " moves surely clear of the walls; " << kept << " kept, " << rejected
+            << " rejected\n";
+  EXPECT_GT(rejected, moves / 10);  // moves that reach the walls are common: the bound is tested
+  EXPECT_GT(surely_clear, kept / 4);
+}
+
 }  // namespace mssph::testing
