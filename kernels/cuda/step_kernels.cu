@@ -188,12 +188,15 @@ unsigned most_lanes_within(std::size_t particles, std::size_t threads) {
 
 }  // namespace
 
-// A small scene then has ~8x the threads in flight; a scene that fills the GPU on its own keeps
-// one lane per particle, which wastes no shuffles. Between them, up to four waves of resident
-// threads, teams of 2 lanes: with them come the lists (list_skin.hpp), whose skipped grid walks
-// pay for the second lane (results/performance.md).
+// As many lanes (up to 8) as keep the teams within one wave of the threads the GPU holds: a small
+// scene then has ~8x the threads in flight; a scene that fills the GPU on its own keeps one lane
+// per particle, which wastes no shuffles. Between them, up to four waves of resident threads,
+// teams of 2 lanes: with them come the lists (list_skin.hpp), whose skipped grid walks pay for the
+// second lane. On an H100 the 30k fluid block (46k particles) steps in 43.0 us with teams of 4
+// against 44.8 with 8 (two waves, the rule before), and 47.5 with 2; the 100k block in 88.2
+// against 95.3 (results/performance.md).
 unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads) {
-  const unsigned lanes = most_lanes_within(particles, 2 * resident_threads);
+  const unsigned lanes = most_lanes_within(particles, resident_threads);
   return lanes == 1 && particles * 2 <= 4 * resident_threads ? 2 : lanes;
 }
 
