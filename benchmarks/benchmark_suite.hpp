@@ -4,6 +4,7 @@
 //   step/<backend>/<medium>/<particles>   one simulation step (fluid, rigid, deformable, mixed)
 //   haptic_tick/<backend>                 one coupling evaluation plus the proxy read-back
 //   scene/<backend>/<scene name>          one step of a scene file (`mssph bench SCENE.json`)
+//   calibration/cpu                       a fixed workload that times the machine (machine_calibration.hpp)
 // (Google Benchmark appends "/manual_time" to the step and scene names: they are timed by the
 // clock around each batch of steps, after the device finished it.)
 #include <string>
@@ -15,7 +16,7 @@ namespace mssph::bench {
 // and cuda only when a GPU is visible.
 std::vector<std::string> default_benchmark_backends();
 
-// Registers step/ and haptic_tick/ for each backend.
+// Registers step/ and haptic_tick/ for each backend, and calibration/cpu.
 void register_suite(const std::vector<std::string>& backends);
 
 // Registers scene/<backend>/<name> for the scene file (with --set overrides). Throws InputError

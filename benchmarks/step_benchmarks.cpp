@@ -8,6 +8,7 @@
 #include "haptics/haptics_run.hpp"
 #include "haptics/haptics_session.hpp"
 #include "haptics/virtual_coupling.hpp"
+#include "machine_calibration.hpp"
 #include "mixed_scene.hpp"
 #include "scene/block_scene.hpp"
 #include "scene/scene_builder.hpp"
@@ -176,6 +177,7 @@ void register_suite(const std::vector<std::string>& backends) {
       {"rigid", [](std::size_t n) { return block_scene(BodyKind::rigid, n); }},
       {"deformable", [](std::size_t n) { return block_scene(BodyKind::deformable, n); }},
       {"mixed", [](std::size_t n) { return mixed_scene(n); }}};
+  register_calibration();
   for (const std::string& backend : backends) {
     for (const auto& [medium, scene_of] : media) {
       for (long n : sizes_for(backend)) {

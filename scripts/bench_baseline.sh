@@ -43,7 +43,7 @@ for i in $(seq 1 "$runs"); do
   echo "bench baseline: noise run $i of $runs ($((SECONDS - start)) s so far)" >&2
   gate_bench "$work/run_$i.json"
   # The threshold is irrelevant here: the study reads the ratios and p-values.
-  "$MSSPH" bench compare "$dir/cpu_gate.json" "$work/run_$i.json" --format json > "$dir/noise/same_build_$i.json" || [[ $? == 1 ]]
+  "$MSSPH" bench compare "$dir/cpu_gate.json" "$work/run_$i.json" --normalize-by "$GATE_NORMALIZE_BY" --format json > "$dir/noise/same_build_$i.json" || [[ $? == 1 ]]
   same+=("$dir/noise/same_build_$i.json")
 done
 
@@ -52,7 +52,7 @@ delay_us=$("$MSSPH" bench compare "$dir/cpu_gate.json" "$dir/cpu_gate.json" --fo
   /usr/bin/python3 -c 'import json, sys; print(round(1e6 * min(b["baseline_median_seconds"] for b in json.load(sys.stdin)["benchmarks"] if b["name"].startswith("step/"))))')
 echo "bench baseline: known slowdown run, MSSPH_BENCH_STEP_DELAY_US=$delay_us" >&2
 MSSPH_BENCH_STEP_DELAY_US=$delay_us gate_bench "$work/delayed.json"
-"$MSSPH" bench compare "$dir/cpu_gate.json" "$work/delayed.json" --format json > "$dir/noise/delayed.json" || [[ $? == 1 ]]
+"$MSSPH" bench compare "$dir/cpu_gate.json" "$work/delayed.json" --normalize-by "$GATE_NORMALIZE_BY" --format json > "$dir/noise/delayed.json" || [[ $? == 1 ]]
 
 status=0
 {

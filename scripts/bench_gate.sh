@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The CPU benchmark gate of CI: runs the gate's short CPU benchmark (scripts/bench_gate_settings.sh)
-# and compares it with the CI machine's baseline, printing the markdown table (also appended to
-# $GITHUB_STEP_SUMMARY when that is set). Run after scripts/build.sh.
+# and compares it with the CI machine's baseline, normalized by the calibration benchmark
+# (GATE_NORMALIZE_BY), printing the markdown table (also appended to $GITHUB_STEP_SUMMARY when
+# that is set). Run after scripts/build.sh.
 #
 #   scripts/bench_gate.sh [--baseline FILE] [--threshold T] [--out FILE]
 #
@@ -36,7 +37,8 @@ for attempt in $(seq 1 "$GATE_ATTEMPTS"); do
   gate_bench "$out"
   echo "bench gate: benchmarks took $((SECONDS - start)) s; comparing with $baseline, threshold $threshold" >&2
   status=0
-  report=$("$MSSPH" bench compare "$baseline" "$out" --threshold "$threshold" --format markdown) || status=$?
+  report=$("$MSSPH" bench compare "$baseline" "$out" --threshold "$threshold" --normalize-by "$GATE_NORMALIZE_BY" \
+    --format markdown) || status=$?
   echo "$report"
   if [[ -n ${GITHUB_STEP_SUMMARY:-} && -n $report ]]; then echo "$report" >> "$GITHUB_STEP_SUMMARY"; fi
   # Only "slower" (1) is worth another run; a pass or bad input (2) is final.

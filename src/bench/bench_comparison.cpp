@@ -14,17 +14,21 @@ std::string context_value(const BenchmarkResults& results, const std::string& ke
   return it == results.context.end() ? "(not recorded)" : it->second;
 }
 
+// machine_ratio: how much slower the current file's machine ran (1 without normalization); the
+// current times are divided by it for the ratio and the test, the medians shown stay as measured.
 BenchmarkComparison compare_one(const std::string& name, const std::vector<double>& baseline,
-                                const std::vector<double>& current, const CompareOptions& options,
-                                std::optional<double>& smallest_attainable_p) {
+                                const std::vector<double>& current, double machine_ratio,
+                                const CompareOptions& options, std::optional<double>& smallest_attainable_p) {
   BenchmarkComparison c;
   c.name = name;
   c.baseline_repetitions = baseline.size();
   c.current_repetitions = current.size();
   c.baseline_median = median(baseline);
   c.current_median = median(current);
-  c.ratio = c.current_median / c.baseline_median;
-  const MannWhitneyResult test = mann_whitney_u(current, baseline);
+  std::vector<double> adjusted = current;
+  for (double& t : adjusted) t /= machine_ratio;
+  c.ratio = median(adjusted) / c.baseline_median;
+  const MannWhitneyResult test = mann_whitney_u(adjusted, baseline);
   c.u = test.u;
   c.p_value = test.p_value;
   c.exact = test.exact;
@@ -42,6 +46,21 @@ BenchmarkComparison compare_one(const std::string& name, const std::vector<doubl
     if (c.verdict == Verdict::not_significant) c.verdict = Verdict::untestable;
   }
   return c;
+}
+
+Normalization normalization(const BenchmarkResults& baseline, const BenchmarkResults& current, const std::string& name) {
+  Normalization n{name, 0.0, 0.0};
+  for (const BenchmarkResults* file : {&baseline, &current}) {
+    const auto it = file->seconds.find(name);
+    if (it == file->seconds.end()) {
+      throw InputError(file->path + ": no benchmark \"" + name + "\" to normalize by (--normalize-by); "
+                       "run it with the others, e.g. --filter '...|^" + name + "$'");
+    }
+    const double m = median(it->second);
+    if (!(m > 0.0)) throw InputError(file->path + ": benchmark \"" + name + "\" has no positive time to normalize by");
+    (file == &baseline ? n.baseline_median : n.current_median) = m;
+  }
+  return n;
 }
 
 }  // namespace
@@ -91,17 +110,24 @@ ComparisonReport compare(const BenchmarkResults& baseline, const BenchmarkResult
     }
     throw InputError(message + "\n(--force compares them anyway)");
   }
+  double machine_ratio = 1.0;
+  if (options.normalize_by) {
+    report.normalization = normalization(baseline, current, *options.normalize_by);
+    machine_ratio = report.normalization->machine_ratio();
+  }
+  const auto is_yardstick = [&](const std::string& name) { return options.normalize_by && name == *options.normalize_by; };
   for (const std::string& name : baseline.names) {
+    if (is_yardstick(name)) continue;
     const auto it = current.seconds.find(name);
     if (it == current.seconds.end()) {
       report.only_in_baseline.push_back(name);
       continue;
     }
     report.benchmarks.push_back(
-        compare_one(name, baseline.seconds.at(name), it->second, options, report.smallest_attainable_p));
+        compare_one(name, baseline.seconds.at(name), it->second, machine_ratio, options, report.smallest_attainable_p));
   }
   for (const std::string& name : current.names) {
-    if (!baseline.seconds.count(name)) report.only_in_current.push_back(name);
+    if (!baseline.seconds.count(name) && !is_yardstick(name)) report.only_in_current.push_back(name);
   }
   for (const std::string& e : baseline.errors) report.errors.push_back(baseline.path + ": " + e);
   for (const std::string& e : current.errors) report.errors.push_back(current.path + ": " + e);

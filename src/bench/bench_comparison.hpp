@@ -15,6 +15,17 @@ struct CompareOptions {
   double threshold = 0.10;  // a slowdown beyond median ratio 1 + threshold can fail the gate
   double alpha = 0.05;      // significance level of the test
   bool force = false;       // compare files from different machines or build types anyway
+  // A benchmark of both files that times the machine, not the code (calibration/cpu): each file's
+  // times are divided by its median before the ratios and tests, and it is not compared itself.
+  std::optional<std::string> normalize_by;
+};
+
+// How much slower the current file's machine ran the calibration benchmark (normalize_by).
+struct Normalization {
+  std::string name;
+  double baseline_median = 0.0;  // [s]
+  double current_median = 0.0;   // [s]
+  double machine_ratio() const { return current_median / baseline_median; }
 };
 
 enum class Verdict {
@@ -32,7 +43,7 @@ struct BenchmarkComparison {
   std::size_t current_repetitions = 0;
   double baseline_median = 0.0;  // [s]
   double current_median = 0.0;   // [s]
-  double ratio = 0.0;            // current / baseline median
+  double ratio = 0.0;            // current / baseline median, divided by the machine ratio when normalized
   double u = 0.0;                // Mann-Whitney U of the current sample
   double p_value = 1.0;
   bool exact = false;
@@ -51,6 +62,7 @@ struct ComparisonReport {
   std::string current_path;
   CompareOptions options;
   std::vector<ContextDifference> machine_differences;  // only compared under --force
+  std::optional<Normalization> normalization;          // with options.normalize_by
   std::vector<BenchmarkComparison> benchmarks;
   std::vector<std::string> only_in_baseline;
   std::vector<std::string> only_in_current;
@@ -64,8 +76,9 @@ struct ComparisonReport {
 
 std::vector<ContextDifference> machine_differences(const BenchmarkResults& baseline, const BenchmarkResults& current);
 
-// Throws InputError when the files share no benchmark, or, without options.force, when their
-// machine context differs (the message names each differing key and both values).
+// Throws InputError when the files share no benchmark, when a file lacks options.normalize_by or
+// its times are not positive, or, without options.force, when their machine context differs (the
+// message names each differing key and both values).
 ComparisonReport compare(const BenchmarkResults& baseline, const BenchmarkResults& current, const CompareOptions& options);
 
 double median(std::vector<double> values);

@@ -57,6 +57,13 @@ std::vector<std::string> notes_of(const ComparisonReport& report) {
   notes.push_back("p: two-sided Mann-Whitney U test over the repetitions (exact without ties and with at most 20 "
                   "per side, else normal approximation with tie and continuity correction); significant when p < " +
                   format_number("%g", o.alpha) + ".");
+  if (report.normalization) {
+    const Normalization& n = *report.normalization;
+    notes.push_back("Normalized by " + n.name + " (a fixed workload that times the machine): the current file's machine ran it in " +
+                    format_time(n.current_median) + " against the baseline's " + format_time(n.baseline_median) + " (" +
+                    format_number("%.3f", n.machine_ratio()) +
+                    "x); each ratio and test is of the current times divided by that factor, the medians shown are as measured.");
+  }
   notes.push_back("The gate fails (exit 1) on a benchmark whose ratio exceeds " + format_number("%.3f", 1.0 + o.threshold) +
                   " (threshold " + percent(o.threshold) + ") with a significant difference.");
   if (report.smallest_attainable_p) {
@@ -148,6 +155,15 @@ std::string as_json(const ComparisonReport& report) {
   doc["forced_differences"] = nlohmann::json::array();
   for (const ContextDifference& d : report.machine_differences) {
     doc["forced_differences"].push_back({{"key", d.key}, {"baseline", d.baseline}, {"current", d.current}});
+  }
+  if (report.normalization) {
+    const Normalization& n = *report.normalization;
+    doc["normalized_by"] = {{"name", n.name},
+                            {"baseline_median_seconds", n.baseline_median},
+                            {"current_median_seconds", n.current_median},
+                            {"machine_ratio", n.machine_ratio()}};
+  } else {
+    doc["normalized_by"] = nullptr;
   }
   doc["smallest_attainable_p"] =
       report.smallest_attainable_p ? nlohmann::json(*report.smallest_attainable_p) : nlohmann::json(nullptr);

@@ -40,6 +40,7 @@ struct CompareArgs {
   double alpha = 0.05;
   std::string format = "table";
   bool force = false;
+  std::string normalize_by;  // empty: none
 };
 
 // "10%" or "0.1" -> 0.1.
@@ -114,6 +115,7 @@ int run_compare(const CompareArgs& a) {
   options.threshold = parse_threshold(a.threshold);
   options.alpha = a.alpha;
   options.force = a.force;
+  if (!a.normalize_by.empty()) options.normalize_by = a.normalize_by;
   const bench::BenchmarkResults baseline = bench::read_benchmark_results(a.baseline);
   const bench::BenchmarkResults current = bench::read_benchmark_results(a.current);
   const bench::ComparisonReport report = bench::compare(baseline, current, options);
@@ -140,6 +142,9 @@ void add_compare_command(CLI::App& bench, int& exit_code) {
       ->check(CLI::IsMember({"table", "markdown", "json"}))
       ->capture_default_str();
   cmd->add_flag("--force", args->force, "Compare files from different machines or build types anyway");
+  cmd->add_option("--normalize-by", args->normalize_by,
+                  "A benchmark in both files that times the machine (calibration/cpu): divide out how much slower "
+                  "the current file's machine ran it");
   cmd->footer(
       "For each benchmark in both files: the median over its repetitions in each (Google Benchmark's\n"
       "per-repetition entries; mean/median/stddev aggregates are ignored), the ratio current/baseline,\n"
@@ -152,6 +157,8 @@ void add_compare_command(CLI::App& bench, int& exit_code) {
       "\n"
       "The files must come from the same machine and build: their context's mssph_cpu, mssph_gpu and\n"
       "mssph_build_type must agree, else the comparison is refused (naming the field) unless --force.\n"
+      "A shared machine's speed still drifts between hours; --normalize-by calibration/cpu divides\n"
+      "each ratio by the ratio of that fixed workload's medians (the CI gate does).\n"
       "\n"
       "Exit codes: 0 no benchmark significantly slower beyond the threshold; 1 at least one; 2 bad\n"
       "input (a missing or unreadable file, not Google Benchmark JSON, no benchmark in common,\n"
@@ -195,6 +202,8 @@ void add_bench_command(CLI::App& app, int& exit_code) {
       "      counters: step_seconds, particles and phase_<name>_seconds for the phases of a step.\n"
       "  haptic_tick/<backend>  one coupling evaluation plus the proxy's read-back.\n"
       "  scene/<backend>/<name>/manual_time  with SCENE.json: one step of that scene.\n"
+      "  calibration/cpu  a fixed workload (gathered float sums, no mssph code) that times the\n"
+      "      machine itself, for 'mssph bench compare --normalize-by calibration/cpu'.\n"
       "The output's context records the machine and build: mssph_cpu, mssph_cpu_cores, mssph_gpu,\n"
       "mssph_gpu_driver, mssph_cuda_backend, mssph_build_type, mssph_git_commit, mssph_compiler.\n"
       "Repetitions run interleaved in random order. The console table goes to stdout.\n"

@@ -108,6 +108,24 @@ TEST_F(BenchCompare, BadInputExitsTwoAndSaysWhy) {
   }
 }
 
+// The CI gate's normalization through the binary: a machine 1.5x slower for the current file
+// (its calibration and the benchmark alike) passes normalized and fails raw; a file without the
+// calibration benchmark is bad input, named.
+TEST_F(BenchCompare, NormalizedByTheCalibrationAMachineSlowdownPasses) {
+  std::vector<double> slow;
+  for (double t : kBase) slow.push_back(1.5 * t);
+  const std::string a = file("a.json", benchmark_file({{"calibration/cpu", kBase}, {"x", kBase}}));
+  const std::string b = file("b.json", benchmark_file({{"calibration/cpu", slow}, {"x", slow}}));
+  EXPECT_EQ(mssph({"bench", "compare", a, b}).exit_code, 1);
+  const ProcessResult r = mssph({"bench", "compare", a, b, "--normalize-by", "calibration/cpu"});
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  expect_mentions(r.out, {"Normalized by calibration/cpu", "1.500x", "unchanged", "Result: pass"});
+  const std::string c = file("c.json", benchmark_file({{"x", slow}}));
+  const ProcessResult missing = mssph({"bench", "compare", a, c, "--normalize-by", "calibration/cpu"});
+  EXPECT_EQ(missing.exit_code, 2);
+  expect_mentions(missing.err, {"c.json", "no benchmark \"calibration/cpu\" to normalize by"});
+}
+
 TEST_F(BenchCompare, TooFewRepetitionsAreExplained) {
   const std::string a = file("a.json", benchmark_file({{"x", {100, 101, 99}}}));
   const std::string b = file("b.json", benchmark_file({{"x", {300, 301, 299}}}));
@@ -126,7 +144,7 @@ TEST_F(Bench, HelpDocumentsNamesContextTestHookAndExitCodes) {
                           "mssph_git_commit", "MSSPH_BENCH_STEP_DELAY_US", "Test hook", "Exit codes"});
   const ProcessResult c = mssph({"bench", "compare", "--help"});
   EXPECT_EQ(c.exit_code, 0) << c.err;
-  expect_mentions(c.out, {"--threshold", "--format", "--force", "--alpha", "Mann-Whitney U", "exact",
+  expect_mentions(c.out, {"--threshold", "--format", "--force", "--normalize-by", "--alpha", "Mann-Whitney U", "exact",
                           "normal approximation", "0.05", "Exit codes: 0", "1 at least one", "2 bad"});
   expect_mentions(mssph({"--help"}).out, {"bench"});
 }
@@ -137,7 +155,7 @@ TEST_F(Bench, ListsTheStableNames) {
   for (const std::string medium : {"fluid", "rigid", "deformable", "mixed"}) {
     expect_mentions(r.out, {"step/cpu/" + medium + "/2000/manual_time", "step/cpu/" + medium + "/30000/manual_time"});
   }
-  expect_mentions(r.out, {"haptic_tick/cpu"});
+  expect_mentions(r.out, {"haptic_tick/cpu", "calibration/cpu"});
 }
 
 TEST_F(Bench, BadInputExitsTwo) {

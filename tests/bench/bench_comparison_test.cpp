@@ -90,6 +90,53 @@ TEST(BenchComparison, RefusesDifferentMachinesUnlessForced) {
   EXPECT_EQ(report.machine_differences[0].key, "mssph_cpu");
 }
 
+// A machine 1.4x slower for the current file: its calibration benchmark and an unchanged
+// benchmark take 1.4x as long, a benchmark whose code got 30 % slower 1.82x. Raw, both fail the
+// gate; normalized by the calibration, only the real slowdown does, and the calibration itself is
+// not compared.
+TEST(BenchComparison, NormalizingDividesOutTheMachinesSpeed) {
+  const BenchmarkResults base = results("a.json", {{"calibration", kBase}, {"same_code", kBase}, {"slower_code", kBase}});
+  const BenchmarkResults cur = results("b.json", {{"calibration", scaled(kBase, 1.4)},
+                                                  {"same_code", scaled(kBase, 1.4)},
+                                                  {"slower_code", scaled(kBase, 1.4 * 1.3)}});
+  const ComparisonReport raw = compare(base, cur, CompareOptions{});
+  ASSERT_EQ(raw.benchmarks.size(), 3u);
+  EXPECT_EQ(raw.benchmarks[1].verdict, Verdict::slower);
+  EXPECT_EQ(raw.benchmarks[2].verdict, Verdict::slower);
+
+  CompareOptions options;
+  options.normalize_by = "calibration";
+  const ComparisonReport report = compare(base, cur, options);
+  ASSERT_TRUE(report.normalization.has_value());
+  EXPECT_NEAR(report.normalization->machine_ratio(), 1.4, 1e-12);
+  ASSERT_EQ(report.benchmarks.size(), 2u);
+  EXPECT_EQ(report.benchmarks[0].name, "same_code");
+  EXPECT_NEAR(report.benchmarks[0].ratio, 1.0, 1e-12);
+  EXPECT_EQ(report.benchmarks[0].verdict, Verdict::unchanged);
+  EXPECT_NEAR(report.benchmarks[0].current_median, 1.4 * median(kBase), 1e-12);  // shown as measured
+  EXPECT_EQ(report.benchmarks[1].name, "slower_code");
+  EXPECT_NEAR(report.benchmarks[1].ratio, 1.3, 1e-12);
+  EXPECT_EQ(report.benchmarks[1].verdict, Verdict::slower);
+  EXPECT_TRUE(report.only_in_baseline.empty());
+  EXPECT_TRUE(report.only_in_current.empty());
+  EXPECT_NE(format_report(report, ReportFormat::table).find("Normalized by calibration"), std::string::npos);
+  const nlohmann::json doc = nlohmann::json::parse(format_report(report, ReportFormat::json));
+  EXPECT_NEAR(doc["normalized_by"]["machine_ratio"].get<double>(), 1.4, 1e-12);
+}
+
+TEST(BenchComparison, NormalizingNeedsTheCalibrationInBothFiles) {
+  CompareOptions options;
+  options.normalize_by = "calibration";
+  try {
+    compare(results("a.json", {{"calibration", kBase}, {"b", kBase}}), results("b.json", {{"b", kBase}}), options);
+    FAIL() << "compared without the calibration in the current file";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("b.json"), std::string::npos) << message;
+    EXPECT_NE(message.find("\"calibration\""), std::string::npos) << message;
+  }
+}
+
 TEST(BenchComparison, NoCommonBenchmarkIsBadInput) {
   EXPECT_THROW(compare(results("a", {{"x", kBase}}), results("b", {{"y", kBase}}), CompareOptions{}), InputError);
 }
