@@ -122,14 +122,15 @@ __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure,
 
 // Blocks of the force kernel that must fit on a multiprocessor at once, which caps its registers
 // at 65536 / (kBlock * blocks), rounded down to a multiple of 8. One lane per particle (large
-// scenes) compiles to 60 registers without a bound; at 5 blocks (48 registers, 96 bytes spilled)
-// the 1M-particle force pass takes 781 instead of 853 us on an H100, more resident warps hiding
-// its stalls; at 6 (40 registers) 798. Teams of lanes (small scenes) are held to 4 blocks, 64
-// registers, which is what they compile to anyway (62): when they still walked the cells (holding
-// their neighbours in shared memory), at 5 the 30k fluid force pass took 45.9 instead of 43.5 us,
-// at 6 61.0; not measured again since they visit their lists.
+// scenes) compiles to 60 registers without a bound; more resident warps hide its stalls. On an
+// H100, the 1M fluid force pass took 781 us at 5 blocks (48 registers) against 853 unbound and 798
+// at 6 (40 registers), while every particle near a wall walked the 27 cells again for the wall
+// check; since most skip that walk (surely_clear_of_walls), 6 pays: the 1M fluid step 934 -> 901
+// us, rigid 736 -> 703, deformable 1188 -> 1156 (against 5; 4 blocks: 928, 761, 1213). Teams of
+// lanes (small scenes) are held to 4 blocks, 64 registers, which is what they compile to anyway
+// (62); at 5, the 30k and 100k blocks were no faster (results/performance.md).
 template <unsigned Lanes>
-inline constexpr int kForceBlocksPerMultiprocessor = Lanes == 1 ? 5 : 4;
+inline constexpr int kForceBlocksPerMultiprocessor = Lanes == 1 ? 6 : 4;
 
 template <unsigned Lanes>
 __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
