@@ -10,18 +10,20 @@ namespace mssph::kernels {
 
 static_assert(kChunk % kBlock == 0, "a chunk is a whole number of strides");
 
-// Calls visit(i) for this thread's particles of the chunk [first, first + count), in order; the
-// block has kBlock threads. In a full chunk (all but a body's last) the kChunk / kBlock trips are
-// unrolled without a bound test, so the compiler can issue a thread's loads together instead of
-// one round trip to memory after another: with one block per chunk a small body has few blocks,
-// and those round trips were the whole cost. A visit that stores to global memory keeps its
-// loads from moving ahead (the results do not depend on it, only the speed).
+// Calls visit(i) for this thread's particles of the chunk [first, first + count), count <= kChunk,
+// in order; the block has kBlock threads. In a full chunk (all but a body's last) the
+// kChunk / kBlock trips are unrolled without a bound test, a shorter chunk (a body's last, or a
+// rigid body's, rigid_chunk_size) as far with one, so the compiler can issue a thread's loads
+// together instead of one round trip to memory after another: with one block per chunk a small
+// body has few blocks, and those round trips were the whole cost. A visit that stores to global
+// memory keeps its loads from moving ahead (the results do not depend on it, only the speed).
 template <class Visit>
 __device__ void for_each_chunk_particle(std::uint32_t first, std::uint32_t count, Visit&& visit) {
   if (count == kChunk) {
 #pragma unroll
     for (std::uint32_t k = 0; k < kChunk / kBlock; ++k) visit(first + threadIdx.x + k * kBlock);
   } else {
+#pragma unroll(kChunk / kBlock)
     for (std::uint32_t offset = threadIdx.x; offset < count; offset += kBlock) visit(first + offset);
   }
 }

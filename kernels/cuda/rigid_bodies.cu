@@ -1,7 +1,6 @@
 #include "rigid_bodies.cuh"
 
-#include "chunk_tables.hpp"
-#include "thread_blocks.cuh"
+#include "chunk_particles.cuh"
 
 #include <cub/cub.cuh>
 
@@ -19,11 +18,11 @@ __device__ Wrench load_chunk_wrench(const Wrench* partial, std::uint32_t c) {
 }
 
 // One block per chunk (chunk_tables.hpp), thread t taking its particles t, t + kBlock, ... in
-// order: the wrench of the chunk's interaction forces about the body's centre. The block that
-// finishes a body's last chunk (a ticket counter tells) then adds the body's chunk wrenches,
-// thread t those of chunks t, t + kBlock, ... in order and CUB's block tree the threads' sums,
-// and integrates the body (eq. 8, 9): which block does it varies, the sums' order does not, so
-// runs repeat bit for bit. The body goes to `host_copy` too.
+// order (for_each_chunk_particle): the wrench of the chunk's interaction forces about the body's
+// centre. The block that finishes a body's last chunk (a ticket counter tells) then adds the
+// body's chunk wrenches, thread t those of chunks t, t + kBlock, ... in order and CUB's block tree
+// the threads' sums, and integrates the body (eq. 8, 9): which block does it varies, the sums'
+// order does not, so runs repeat bit for bit. The body goes to `host_copy` too.
 __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBody* bodies, RigidBody* host_copy,
                                               CanonicalState state, Wrench* partial,
                                               const std::uint32_t* first_chunk, std::uint32_t* tickets,
@@ -33,13 +32,10 @@ __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBod
   __shared__ bool last;
   const RigidChunk chunk = chunks[blockIdx.x];
   const Vec3 centre = bodies[chunk.rigid].position;
-  // Unrolled so that a thread's loads are in flight together; the adds keep their order.
   Wrench wrench{{0, 0, 0}, {0, 0, 0}};
-#pragma unroll 16
-  for (std::uint32_t offset = threadIdx.x; offset < chunk.count; offset += kBlock) {
-    const std::uint32_t i = chunk.first + offset;
+  for_each_chunk_particle(chunk.first, chunk.count, [&](std::uint32_t i) {
     wrench = wrench + particle_wrench(xyz(state.position[i]), xyz(state.interaction_force[i]), centre);
-  }
+  });
   const Wrench total = BlockReduce(reduce_storage).Reduce(wrench, WrenchSum());
   const std::uint32_t first = first_chunk[chunk.rigid];
   const std::uint32_t end = first_chunk[chunk.rigid + 1];
