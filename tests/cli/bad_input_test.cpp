@@ -27,8 +27,6 @@ class BadInput : public Cli {
   }
 };
 
-const std::string kScene = data_file("tiny_drop.json");
-
 TEST_F(BadInput, MissingSceneFile) {
   expect_rejected({"run", data_file("no_such_scene.json")}, {"no_such_scene.json"});
 }
@@ -42,26 +40,26 @@ TEST_F(BadInput, UnknownKey) {
 }
 
 TEST_F(BadInput, SetValueOutOfRange) {
-  expect_rejected({"run", kScene, "--set", "simulation/dt=-1"}, {"tiny_drop.json", "/simulation/dt"});
+  expect_rejected({"run", kTinyDrop, "--set", "simulation/dt=-1"}, {"tiny_drop.json", "/simulation/dt"});
 }
 
 TEST_F(BadInput, SetPathWithoutParent) {
-  expect_rejected({"run", kScene, "--set", "simulation_settings/dt=1e-4"}, {"simulation_settings"});
+  expect_rejected({"run", kTinyDrop, "--set", "simulation_settings/dt=1e-4"}, {"simulation_settings"});
 }
 
 // A value the JSON library cannot hold (it requires UTF-8), which used to end in a raw library
 // error and exit 1; the corpus manifest cannot hold such bytes, so the case lives here.
 TEST_F(BadInput, SetValueThatIsNotUtf8) {
-  expect_rejected({"run", kScene, "--set", "bodies/ball/description=\xff\xfe"},
+  expect_rejected({"run", kTinyDrop, "--set", "bodies/ball/description=\xff\xfe"},
                   {"tiny_drop.json", "--set /bodies/ball/description=...", "not valid UTF-8"});
 }
 
 TEST_F(BadInput, SetWithoutValue) {
-  expect_rejected({"run", kScene, "--set", "simulation/dt"}, {"--set simulation/dt", "PATH=VALUE"});
+  expect_rejected({"run", kTinyDrop, "--set", "simulation/dt"}, {"--set simulation/dt", "PATH=VALUE"});
 }
 
 TEST_F(BadInput, UnknownBackend) {
-  expect_rejected({"run", kScene, "--backend", "quantum"}, {"--backend", "quantum"});
+  expect_rejected({"run", kTinyDrop, "--backend", "quantum"}, {"--backend", "quantum"});
 }
 
 TEST_F(BadInput, BackendNotBuilt) {
@@ -70,7 +68,7 @@ TEST_F(BadInput, BackendNotBuilt) {
   for (const std::string name : {"reference", "cpu", "cuda"}) {
     if (std::find(built.begin(), built.end(), name) != built.end()) continue;
     SCOPED_TRACE(name);
-    expect_rejected({"run", kScene, "--backend", name}, {"--backend " + std::string(name)});
+    expect_rejected({"run", kTinyDrop, "--backend", name}, {"--backend " + std::string(name)});
     tried = true;
   }
   if (!tried) GTEST_SKIP() << "this build has every backend";
@@ -81,7 +79,7 @@ TEST_F(BadInput, BackendNotBuilt) {
 TEST_F(BadInput, CudaWithoutADevice) {
 #ifdef MSSPH_HAVE_CUDA_BACKEND
   if (!kernels::cuda_devices().empty()) GTEST_SKIP() << "a CUDA device is present";
-  expect_rejected({"run", kScene, "--backend", "cuda"}, {"--backend cuda", "no CUDA device", "--backend cpu"});
+  expect_rejected({"run", kTinyDrop, "--backend", "cuda"}, {"--backend cuda", "no CUDA device", "--backend cpu"});
 #else
   GTEST_SKIP() << "built without the CUDA backend (BackendNotBuilt covers this build)";
 #endif
@@ -89,20 +87,20 @@ TEST_F(BadInput, CudaWithoutADevice) {
 
 TEST_F(BadInput, OutIsADirectory) {
   std::filesystem::create_directory(work("runs"));
-  expect_rejected({"run", kScene, "--out", work("runs")}, {"--out " + work("runs"), "is a directory"});
-  expect_rejected({"run", kScene, "--out", work("runs") + "/"}, {"is a directory"});
+  expect_rejected({"run", kTinyDrop, "--out", work("runs")}, {"--out " + work("runs"), "is a directory"});
+  expect_rejected({"run", kTinyDrop, "--out", work("runs") + "/"}, {"is a directory"});
 }
 
 TEST_F(BadInput, OutUnderARegularFile) {
   { std::ofstream(work("notes.txt")) << "not a directory"; }
-  expect_rejected({"run", kScene, "--out", work("notes.txt/sub/run.h5")}, {work("notes.txt"), "not a directory"});
+  expect_rejected({"run", kTinyDrop, "--out", work("notes.txt/sub/run.h5")}, {work("notes.txt"), "not a directory"});
 }
 
 TEST_F(BadInput, OutInAnUnwritableDirectory) {
   if (geteuid() == 0) GTEST_SKIP() << "running as root, which may write anywhere";
   std::filesystem::create_directory(work("locked"));
   std::filesystem::permissions(work("locked"), std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
-  expect_rejected({"run", kScene, "--out", work("locked/new/run.h5")}, {work("locked"), "cannot create files"});
+  expect_rejected({"run", kTinyDrop, "--out", work("locked/new/run.h5")}, {work("locked"), "cannot create files"});
   std::filesystem::permissions(work("locked"), std::filesystem::perms::owner_all);  // so it can be removed
 }
 

@@ -32,6 +32,9 @@ bool wait_for(Condition ready, std::chrono::milliseconds limit) {
 // A scene under tests/data, by absolute path (the binary runs elsewhere).
 inline std::string data_file(const std::string& name) { return MSSPH_SOURCE_DIR "/tests/data/" + name; }
 
+// The small sphere drop that most CLI tests run.
+inline const std::string kTinyDrop = data_file("tiny_drop.json");
+
 inline nlohmann::json read_json(const std::string& path) { return nlohmann::json::parse(read_file(path)); }
 
 class Cli : public ::testing::Test {

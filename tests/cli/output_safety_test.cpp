@@ -22,7 +22,6 @@ namespace {
 
 using namespace std::chrono_literals;
 
-const std::string kScene = data_file("tiny_drop.json");
 const std::string kPoke = MSSPH_SOURCE_DIR "/tests/haptics/data/poke.json";
 
 std::string recorded_trajectory(const std::string& file) {
@@ -53,9 +52,9 @@ class OutputSafety : public Cli {
 
 TEST_F(OutputSafety, AnExistingLogIsReplacedOnlyWithForce) {
   const std::string out = work("run.h5");
-  ASSERT_EQ(mssph({"run", kScene, "--out", out, "-q"}).exit_code, 0);
-  expect_refused_and_untouched({"run", kScene, "--out", out, "-q"}, out, "exists; pass --force");
-  const ProcessResult forced = mssph({"run", kScene, "--out", out, "-q", "--force"});
+  ASSERT_EQ(mssph({"run", kTinyDrop, "--out", out, "-q"}).exit_code, 0);
+  expect_refused_and_untouched({"run", kTinyDrop, "--out", out, "-q"}, out, "exists; pass --force");
+  const ProcessResult forced = mssph({"run", kTinyDrop, "--out", out, "-q", "--force"});
   EXPECT_EQ(forced.exit_code, 0) << forced.err;
   EXPECT_EQ(status_of(out), "completed");
   EXPECT_EQ(work_entries(), std::vector<std::string>{"run.h5"});
@@ -67,18 +66,18 @@ TEST_F(OutputSafety, DevicesDirectoriesFifosAndLinksAreNeverReplacedEvenWithForc
   { std::ofstream(work("target.h5")) << "someone's data"; }
   std::filesystem::create_symlink(work("target.h5"), work("link.h5"));
   if (std::filesystem::exists("/dev/null")) {
-    expect_refused_and_untouched({"run", kScene, "--out", "/dev/null", "--force"}, "/dev/null", "is a device");
+    expect_refused_and_untouched({"run", kTinyDrop, "--out", "/dev/null", "--force"}, "/dev/null", "is a device");
   }
-  expect_refused_and_untouched({"run", kScene, "--out", work("dir.h5"), "--force"}, work("dir.h5"), "directory");
-  expect_refused_and_untouched({"run", kScene, "--out", work("fifo.h5"), "--force"}, work("fifo.h5"), "a FIFO");
-  expect_refused_and_untouched({"run", kScene, "--out", work("link.h5"), "--force"}, work("link.h5"),
+  expect_refused_and_untouched({"run", kTinyDrop, "--out", work("dir.h5"), "--force"}, work("dir.h5"), "directory");
+  expect_refused_and_untouched({"run", kTinyDrop, "--out", work("fifo.h5"), "--force"}, work("fifo.h5"), "a FIFO");
+  expect_refused_and_untouched({"run", kTinyDrop, "--out", work("link.h5"), "--force"}, work("link.h5"),
                                "a symbolic link");
   EXPECT_EQ(read_file(work("target.h5")), "someone's data");
 }
 
 TEST_F(OutputSafety, TheRunsInputsAreNeverItsOutputs) {
   const std::string scene = work("scene.json");
-  std::filesystem::copy_file(kScene, scene);
+  std::filesystem::copy_file(kTinyDrop, scene);
   expect_refused_and_untouched({"run", scene, "--out", scene, "--force"}, scene, "is the scene file");
   // The same file by another name.
   std::filesystem::create_directory(work("sub"));
@@ -101,21 +100,21 @@ TEST_F(OutputSafety, TheRunsInputsAreNeverItsOutputs) {
 TEST_F(OutputSafety, ALeftoverPartialLogIsReplacedOnlyWithForce) {
   const std::string out = work("left.h5");
   { std::ofstream(out + ".partial") << "a killed run's log"; }
-  expect_refused_and_untouched({"run", kScene, "--out", out, "-q"}, out + ".partial", "did not finish");
-  EXPECT_EQ(mssph({"run", kScene, "--out", out, "-q", "--force"}).exit_code, 0);
+  expect_refused_and_untouched({"run", kTinyDrop, "--out", out, "-q"}, out + ".partial", "did not finish");
+  EXPECT_EQ(mssph({"run", kTinyDrop, "--out", out, "-q", "--force"}).exit_code, 0);
   EXPECT_EQ(status_of(out), "completed");
   EXPECT_FALSE(std::filesystem::exists(out + ".partial"));
 }
 
 TEST_F(OutputSafety, TwoRunsCannotWriteOnePathAndSigintEndsTheFirstWith130) {
   const std::string out = work("shared.h5");
-  const auto first = start({"run", kScene, "--out", out, "-q", "--set", "simulation/duration=1000"});
+  const auto first = start({"run", kTinyDrop, "--out", out, "-q", "--set", "simulation/duration=1000"});
   // The partial file is locked once it is a readable log: wait for its first flush.
   ASSERT_TRUE(wait_for([&] { return std::filesystem::exists(out + ".partial") &&
                                     std::filesystem::file_size(out + ".partial") > 0; },
                        60s));
   for (const bool force : {false, true}) {
-    std::vector<std::string> args{"run", kScene, "--out", out, "-q"};
+    std::vector<std::string> args{"run", kTinyDrop, "--out", out, "-q"};
     if (force) args.push_back("--force");
     const ProcessResult second = mssph(args);
     EXPECT_EQ(second.exit_code, 2) << second.err;
@@ -131,7 +130,7 @@ TEST_F(OutputSafety, TwoRunsCannotWriteOnePathAndSigintEndsTheFirstWith130) {
 
 TEST_F(OutputSafety, SighupEndsTheRunWith129) {
   const std::string out = work("hup.h5");
-  const auto run = start({"run", kScene, "--out", out, "-q", "--set", "simulation/duration=1000"});
+  const auto run = start({"run", kTinyDrop, "--out", out, "-q", "--set", "simulation/duration=1000"});
   ASSERT_TRUE(wait_for([&] { return std::filesystem::exists(out + ".partial") &&
                                     std::filesystem::file_size(out + ".partial") > 0; },
                        60s));
@@ -153,7 +152,7 @@ TEST_F(OutputSafety, AClosedStdoutDoesNotFailACompletedRun) {
     dup2(fds[1], STDOUT_FILENO);
     close(fds[0]);
     close(fds[1]);
-    execl(MSSPH_BINARY, MSSPH_BINARY, "run", kScene.c_str(), "--out", out.c_str(), "-q", static_cast<char*>(nullptr));
+    execl(MSSPH_BINARY, MSSPH_BINARY, "run", kTinyDrop.c_str(), "--out", out.c_str(), "-q", static_cast<char*>(nullptr));
     _exit(127);
   }
   close(fds[0]);  // no reader: the child's write to stdout fails (EPIPE, or SIGPIPE if not ignored)
@@ -174,7 +173,7 @@ TEST_F(OutputSafety, ADiskFullRunExitsOneAndKeepsItsPartialLogMarkedFailed) {
                  << "); AFileSizeLimitIsAWriteErrorNotACrash injects the failure instead";
   }
   const std::string out = mount_point + "/full.h5";
-  const ProcessResult r = mssph({"run", kScene, "--out", out, "-q", "--set", "output/snapshot_interval=0.0005",
+  const ProcessResult r = mssph({"run", kTinyDrop, "--out", out, "-q", "--set", "output/snapshot_interval=0.0005",
                                  "--set", "simulation/duration=1"});
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("disk full writing " + out + ".partial"), std::string::npos) << r.err;
@@ -195,7 +194,7 @@ TEST_F(OutputSafety, AFileSizeLimitIsAWriteErrorNotACrash) {
     const rlimit limit{2500 * 1024, 2500 * 1024};  // room for the start of the log, not for 2000 snapshots
     setrlimit(RLIMIT_FSIZE, &limit);
     freopen(err.c_str(), "w", stderr);
-    execl(MSSPH_BINARY, MSSPH_BINARY, "run", kScene.c_str(), "--out", out.c_str(), "-q", "--set",
+    execl(MSSPH_BINARY, MSSPH_BINARY, "run", kTinyDrop.c_str(), "--out", out.c_str(), "-q", "--set",
           "output/snapshot_interval=0.0005", "--set", "simulation/duration=1", static_cast<char*>(nullptr));
     _exit(127);
   }
@@ -215,7 +214,7 @@ TEST_F(OutputSafety, AFileSizeLimitIsAWriteErrorNotACrash) {
 }
 
 TEST_F(OutputSafety, DryRunPrintsThePlanAndWritesNothing) {
-  const ProcessResult r = mssph({"run", kScene, "--dry-run"});
+  const ProcessResult r = mssph({"run", kTinyDrop, "--dry-run"});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   // tiny_drop: a 0.5 x 0.5 x 0.1 m ground at 5 cm (10 x 10 x 2 = 200) and the ball's 27.
   for (const char* line : {"particles: 227", "ground (boundary): 200", "ball (rigid): 27", "memory estimate: host",
@@ -227,7 +226,7 @@ TEST_F(OutputSafety, DryRunPrintsThePlanAndWritesNothing) {
 
 TEST_F(OutputSafety, ThreadsAreSetAndRecorded) {
   const std::string out = work("threads.h5");
-  const ProcessResult r = mssph({"run", kScene, "--out", out, "--threads", "1"});
+  const ProcessResult r = mssph({"run", kTinyDrop, "--out", out, "--threads", "1"});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("1 threads (--threads)"), std::string::npos) << r.err;
   long long threads = 0;

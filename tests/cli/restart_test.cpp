@@ -16,8 +16,6 @@ namespace {
 
 using namespace std::chrono_literals;
 
-const std::string kScene = data_file("tiny_drop.json");
-
 // Every dataset of a log but those under /timing and /checkpoint, as doubles (exact for the
 // float32, float64 and integer datasets a log holds), by path.
 std::map<std::string, std::vector<double>> logged_data(const std::string& path) {
@@ -129,7 +127,7 @@ INSTANTIATE_TEST_SUITE_P(Backends, Restart,
 class RestartRefusal : public Cli {};
 
 TEST_F(RestartRefusal, ACompletedRun) {
-  ASSERT_EQ(mssph({"run", kScene, "--backend", "cpu", "--out", work("done.h5"), "-q"}).exit_code, 0);
+  ASSERT_EQ(mssph({"run", kTinyDrop, "--backend", "cpu", "--out", work("done.h5"), "-q"}).exit_code, 0);
   const ProcessResult r = mssph({"run", "--restart", work("done.h5")});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("completed"), std::string::npos) << r.err;
@@ -137,7 +135,7 @@ TEST_F(RestartRefusal, ACompletedRun) {
 
 TEST_F(RestartRefusal, ALogWithoutACheckpoint) {
   // A run killed before any checkpoint: no --checkpoint-interval, and SIGKILL writes none.
-  auto run = start({"run", kScene, "--backend", "cpu", "--out", work("killed.h5"), "--set", "simulation/duration=1000"});
+  auto run = start({"run", kTinyDrop, "--backend", "cpu", "--out", work("killed.h5"), "--set", "simulation/duration=1000"});
   ASSERT_TRUE(wait_for([&] { return run->stderr_so_far().find(" particles (") != std::string::npos; }, 60s));
   std::this_thread::sleep_for(300ms);
   run->send(SIGKILL);
@@ -151,7 +149,7 @@ TEST_F(RestartRefusal, ALogWithoutACheckpoint) {
 TEST_F(RestartRefusal, OptionsThatWouldChangeTheRun) {
   for (const std::vector<std::string>& extra :
        {std::vector<std::string>{"--set", "simulation/dt=1e-4"}, {"--backend", "reference"}, {"--out", "x.h5"},
-        {kScene}}) {
+        {kTinyDrop}}) {
     std::vector<std::string> args{"run", "--restart", work("any.h5.partial")};
     args.insert(args.end(), extra.begin(), extra.end());
     const ProcessResult r = mssph(args);
@@ -161,15 +159,15 @@ TEST_F(RestartRefusal, OptionsThatWouldChangeTheRun) {
 }
 
 TEST_F(RestartRefusal, AFileThatIsNoRunLog) {
-  std::filesystem::copy_file(kScene, work("scene.h5.partial"));
+  std::filesystem::copy_file(kTinyDrop, work("scene.h5.partial"));
   const ProcessResult r = mssph({"run", "--restart", work("scene.h5.partial")});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("not an HDF5 file"), std::string::npos) << r.err;
-  EXPECT_EQ(read_file(work("scene.h5.partial")), read_file(kScene)) << "left as it was";
+  EXPECT_EQ(read_file(work("scene.h5.partial")), read_file(kTinyDrop)) << "left as it was";
 }
 
 TEST_F(RestartRefusal, ARunStillWritingItsLog) {
-  auto run = start({"run", kScene, "--backend", "cpu", "--out", work("live.h5"), "--set", "simulation/duration=1000",
+  auto run = start({"run", kTinyDrop, "--backend", "cpu", "--out", work("live.h5"), "--set", "simulation/duration=1000",
                     "--checkpoint-interval", "0.05"});
   ASSERT_TRUE(wait_for([&] { return run->stderr_so_far().find(" particles (") != std::string::npos; }, 60s));
   std::this_thread::sleep_for(300ms);

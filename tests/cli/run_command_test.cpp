@@ -8,8 +8,6 @@
 namespace mssph::test {
 namespace {
 
-const std::string kScene = data_file("tiny_drop.json");
-
 std::size_t steps_of(const nlohmann::json& scene) {
   return static_cast<std::size_t>(std::llround(scene["simulation"]["duration"].get<double>() /
                                                scene["simulation"]["dt"].get<double>()));
@@ -19,18 +17,18 @@ using RunCommand = Cli;
 
 TEST_F(RunCommand, CompletesAndNamesTheLogOnStdout) {
   const std::string out = work("run.h5");
-  const ProcessResult r = mssph({"run", kScene, "--backend", "reference", "--out", out});
+  const ProcessResult r = mssph({"run", kTinyDrop, "--backend", "reference", "--out", out});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << "one summary line:\n" << r.out;
   EXPECT_EQ(r.out.rfind(out + ": ", 0), 0u) << r.out;
   EXPECT_NE(r.err.find("tiny_drop"), std::string::npos) << "start-up line expected without -q:\n" << r.err;
 
-  const nlohmann::json scene = read_json(kScene);
+  const nlohmann::json scene = read_json(kTinyDrop);
   const h5::Handle file = open_read_only(out);
   EXPECT_EQ(h5::read_string_attribute(file.id(), "status"), "completed");
   EXPECT_EQ(h5::read_string_attribute(file.id(), "backend"), "reference");
-  EXPECT_EQ(h5::read_string_attribute(file.id(), "config_path"), kScene);
-  EXPECT_EQ(h5::read_string_attribute(file.id(), "config_file"), read_file(kScene));
+  EXPECT_EQ(h5::read_string_attribute(file.id(), "config_path"), kTinyDrop);
+  EXPECT_EQ(h5::read_string_attribute(file.id(), "config_file"), read_file(kTinyDrop));
   EXPECT_EQ(nlohmann::json::parse(h5::read_string_attribute(file.id(), "config")), scene);
   EXPECT_EQ(read_integer_attribute(file.id(), "seed"), scene["simulation"]["seed"].get<long long>());
   EXPECT_EQ(read_integer_attribute(file.id(), "steps"), static_cast<long long>(steps_of(scene)));
@@ -43,14 +41,14 @@ TEST_F(RunCommand, CompletesAndNamesTheLogOnStdout) {
 }
 
 TEST_F(RunCommand, QuietPrintsOnlyTheSummary) {
-  const ProcessResult r = mssph({"run", kScene, "--out", work("quiet.h5"), "-q"});
+  const ProcessResult r = mssph({"run", kTinyDrop, "--out", work("quiet.h5"), "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "") << "-q leaves stderr to warnings and errors; this scene has none";
   EXPECT_EQ(r.out.rfind(work("quiet.h5") + ": ", 0), 0u) << r.out;
 }
 
 TEST_F(RunCommand, WritesToTheDocumentedDefaultPath) {
-  const ProcessResult r = mssph({"run", kScene, "--backend", "reference", "-q"});
+  const ProcessResult r = mssph({"run", kTinyDrop, "--backend", "reference", "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string expected = "results/runs/tiny_drop_reference.h5";  // `mssph run --help`
   EXPECT_EQ(r.out.rfind(expected + ": ", 0), 0u) << r.out;
@@ -61,15 +59,15 @@ TEST_F(RunCommand, WritesToTheDocumentedDefaultPath) {
 TEST_F(RunCommand, SetOverridesReachTheLoggedConfig) {
   const std::string out = work("overridden.h5");
   // --set before the scene: each --set takes exactly one PATH=VALUE.
-  const ProcessResult r = mssph({"run", "--set", "simulation/duration=0.01", "--set", "/simulation/seed=99", kScene,
+  const ProcessResult r = mssph({"run", "--set", "simulation/duration=0.01", "--set", "/simulation/seed=99", kTinyDrop,
                                  "--out", out, "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  nlohmann::json expected = read_json(kScene);
+  nlohmann::json expected = read_json(kTinyDrop);
   expected["simulation"]["duration"] = 0.01;
   expected["simulation"]["seed"] = 99;
   const h5::Handle file = open_read_only(out);
   EXPECT_EQ(nlohmann::json::parse(h5::read_string_attribute(file.id(), "config")), expected);
-  EXPECT_EQ(h5::read_string_attribute(file.id(), "config_file"), read_file(kScene)) << "the file as written";
+  EXPECT_EQ(h5::read_string_attribute(file.id(), "config_file"), read_file(kTinyDrop)) << "the file as written";
   EXPECT_EQ(read_integer_attribute(file.id(), "seed"), 99);
   EXPECT_EQ(read_integer_attribute(file.id(), "steps"), static_cast<long long>(steps_of(expected)));
   const std::string command_line = h5::read_string_attribute(file.id(), "command_line");
@@ -78,12 +76,12 @@ TEST_F(RunCommand, SetOverridesReachTheLoggedConfig) {
 
 TEST_F(RunCommand, SnapshotsComeWithAValidXdmfSidecar) {
   const std::string out = work("snapshots.h5");
-  const ProcessResult r = mssph({"run", kScene, "--out", out, "--set", "output/snapshot_interval=0.01", "-q"});
+  const ProcessResult r = mssph({"run", kTinyDrop, "--out", out, "--set", "output/snapshot_interval=0.01", "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const ProcessResult check = check_xdmf(out + ".xdmf");
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
   // One snapshot at the start and one per interval: 0, 0.01 and 0.02 s.
-  const nlohmann::json scene = read_json(kScene);
+  const nlohmann::json scene = read_json(kTinyDrop);
   const long long expected =
       1 + std::llround(scene["simulation"]["duration"].get<double>() / 0.01);
   EXPECT_NE(check.out.find("grids " + std::to_string(expected)), std::string::npos) << check.out;
@@ -96,7 +94,7 @@ TEST_F(RunCommand, SnapshotsComeWithAValidXdmfSidecar) {
 // h5py reads it.
 TEST_F(RunCommand, EveryDatasetHasUnitsAndADescription) {
   const std::string out = work("described.h5");
-  ASSERT_EQ(mssph({"run", kScene, "--out", out, "--set", "output/snapshot_interval=0.01", "--phase-timing",
+  ASSERT_EQ(mssph({"run", kTinyDrop, "--out", out, "--set", "output/snapshot_interval=0.01", "--phase-timing",
                    "--checkpoint-interval", "1e-9", "-q"})
                 .exit_code,
             0);
@@ -118,8 +116,8 @@ TEST_F(RunCommand, EveryDatasetHasUnitsAndADescription) {
 TEST_F(RunCommand, PhaseTimesAreLoggedOnlyWithPhaseTiming) {
   const std::string plain = work("plain.h5");
   const std::string timed = work("timed.h5");
-  ASSERT_EQ(mssph({"run", kScene, "--backend", "cpu", "--out", plain, "-q"}).exit_code, 0);
-  ASSERT_EQ(mssph({"run", kScene, "--backend", "cpu", "--out", timed, "-q", "--phase-timing"}).exit_code, 0);
+  ASSERT_EQ(mssph({"run", kTinyDrop, "--backend", "cpu", "--out", plain, "-q"}).exit_code, 0);
+  ASSERT_EQ(mssph({"run", kTinyDrop, "--backend", "cpu", "--out", timed, "-q", "--phase-timing"}).exit_code, 0);
   EXPECT_FALSE(h5py_summary(plain)["objects"].contains("/timing/phases"));
   const nlohmann::json objects = h5py_summary(timed)["objects"];
   ASSERT_TRUE(objects.contains("/timing/phases"));
@@ -127,7 +125,7 @@ TEST_F(RunCommand, PhaseTimesAreLoggedOnlyWithPhaseTiming) {
             (nlohmann::json{"neighbours", "rotations", "densities", "forces", "integration"}));
   const h5::Handle file = open_read_only(timed);
   const std::vector<double> phases = read_doubles(file.id(), "/timing/phases");
-  EXPECT_EQ(phases.size(), 5 * steps_of(read_json(kScene)));
+  EXPECT_EQ(phases.size(), 5 * steps_of(read_json(kTinyDrop)));
   EXPECT_TRUE(std::all_of(phases.begin(), phases.end(), [](double s) { return std::isfinite(s) && s >= 0.0; }));
 }
 

@@ -14,7 +14,6 @@ namespace {
 
 using namespace std::chrono_literals;
 
-const std::string kScene = data_file("tiny_drop.json");
 // Long enough that a run is still going when the test signals it; the scene's
 // output/flush_interval of 0.1 s puts rows on disk many times a second meanwhile.
 const std::vector<std::string> kLongRun{"--set", "simulation/duration=1000"};
@@ -42,7 +41,7 @@ using RunFailure = Cli;
 
 TEST_F(RunFailure, SpeedBeyondMaxSpeedIsABlowUp) {
   const std::string out = work("blow_up.h5");
-  const ProcessResult r = mssph({"run", kScene, "--out", out, "--set", "simulation/max_speed=1e-4", "-q"});
+  const ProcessResult r = mssph({"run", kTinyDrop, "--out", out, "--set", "simulation/max_speed=1e-4", "-q"});
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("blow-up"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(out + ".partial"), std::string::npos) << "the kept log is named:\n" << r.err;
@@ -54,7 +53,7 @@ TEST_F(RunFailure, AnAbsurdTimeStepIsABlowUp) {
   const std::string out = work("absurd_dt.h5");
   // A stiff contact (k = 1e5 m^2/s^2) stepped at over 100 times its acoustic bound
   // 0.25 h / sqrt(k) = 79 us; the start-up warning says so.
-  const ProcessResult r = mssph({"run", kScene, "--out", out, "--set", "materials/contact/pressure_stiffness=1e5",
+  const ProcessResult r = mssph({"run", kTinyDrop, "--out", out, "--set", "materials/contact/pressure_stiffness=1e5",
                                  "--set", "simulation/dt=0.01", "--set", "simulation/duration=1", "--set",
                                  "output/log_interval=0", "-q"});
   EXPECT_EQ(r.exit_code, 3) << r.err;
@@ -65,7 +64,7 @@ TEST_F(RunFailure, AnAbsurdTimeStepIsABlowUp) {
 
 TEST_F(RunFailure, SigtermMarksTheLogInterrupted) {
   const std::string out = work("terminated.h5");
-  const auto run = start(concat({"run", kScene, "--out", out}, kLongRun));
+  const auto run = start(concat({"run", kTinyDrop, "--out", out}, kLongRun));
   // The progress line (after a few seconds) shows the run is well under way.
   ASSERT_TRUE(wait_for([&] { return run->stderr_so_far().find("  step ") != std::string::npos; }, 60s))
       << "no progress line on stderr:\n" << run->stderr_so_far();
@@ -84,7 +83,7 @@ TEST_F(RunFailure, SigtermMarksTheLogInterrupted) {
 
 TEST_F(RunFailure, SigkillLeavesARunningLogWithTheFlushedRows) {
   const std::string out = work("killed.h5");
-  const auto run = start(concat({"run", kScene, "--out", out, "-q"}, kLongRun));
+  const auto run = start(concat({"run", kTinyDrop, "--out", out, "-q"}, kLongRun));
   // Past the first progress report (due after 3 s without -q), so the quiet check below means
   // something, and many flush intervals.
   std::this_thread::sleep_for(4s);
@@ -105,15 +104,15 @@ TEST_F(RunFailure, SigkillLeavesARunningLogWithTheFlushedRows) {
 // with it.
 TEST_F(RunFailure, SigkillAsSoonAsThePartialFileAppearsLeavesNothingAtTheFinalPath) {
   const std::string out = work("killed_at_start.h5");
-  const auto run = start(concat({"run", kScene, "--out", out, "-q"}, kLongRun));
+  const auto run = start(concat({"run", kTinyDrop, "--out", out, "-q"}, kLongRun));
   ASSERT_TRUE(wait_for([&] { return std::filesystem::exists(out + ".partial") || !run->running(); }, 60s));
   run->send(SIGKILL);
   EXPECT_EQ(run->wait().signal, SIGKILL);
   EXPECT_FALSE(std::filesystem::exists(out));
-  const ProcessResult refused = mssph({"run", kScene, "--out", out, "-q"});
+  const ProcessResult refused = mssph({"run", kTinyDrop, "--out", out, "-q"});
   EXPECT_EQ(refused.exit_code, 2) << refused.err;
   EXPECT_NE(refused.err.find("did not finish"), std::string::npos) << refused.err;
-  const ProcessResult again = mssph({"run", kScene, "--out", out, "-q", "--force"});
+  const ProcessResult again = mssph({"run", kTinyDrop, "--out", out, "-q", "--force"});
   EXPECT_EQ(again.exit_code, 0) << again.err;
   EXPECT_EQ(status_of(out), "completed");
   EXPECT_FALSE(std::filesystem::exists(out + ".partial"));

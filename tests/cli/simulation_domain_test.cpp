@@ -10,14 +10,14 @@
 namespace mssph::test {
 namespace {
 
-const std::string kScene = data_file("fluid_fling.json");
+const std::string kFlingScene = data_file("fluid_fling.json");
 
 class SimulationDomain : public Cli, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(SimulationDomain, FluidThrownOutFailsPastTheLostMassFraction) {
   if (!backend_runs_here(GetParam())) GTEST_SKIP() << "no " << GetParam() << " backend on this machine";
   const std::string out = work("fling.h5");
-  const ProcessResult r = mssph({"run", kScene, "--backend", GetParam(), "--threads", "1", "--out", out, "-q"});
+  const ProcessResult r = mssph({"run", kFlingScene, "--backend", GetParam(), "--threads", "1", "--out", out, "-q"});
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("particles of body \"splash\" left the domain"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("blow-up"), std::string::npos) << "a lost particle is not a blow-up:\n" << r.err;
@@ -34,7 +34,7 @@ TEST_P(SimulationDomain, FluidThrownOutFailsPastTheLostMassFraction) {
 TEST_P(SimulationDomain, LostParticlesAreCountedAndReported) {
   if (!backend_runs_here(GetParam())) GTEST_SKIP() << "no " << GetParam() << " backend on this machine";
   const std::string out = work("fling.h5");
-  const ProcessResult r = mssph({"run", kScene, "--backend", GetParam(), "--threads", "1", "--out", out, "-q", "--set",
+  const ProcessResult r = mssph({"run", kFlingScene, "--backend", GetParam(), "--threads", "1", "--out", out, "-q", "--set",
                                  "simulation/max_lost_mass_fraction=1"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("left the domain: splash "), std::string::npos) << r.out;
@@ -56,9 +56,9 @@ INSTANTIATE_TEST_SUITE_P(Backends, SimulationDomain, ::testing::Values("cpu", "r
 using SimulationDomainInput = Cli;
 
 TEST_F(SimulationDomainInput, AnInvertedDomainIsRefusedWithFileAndPath) {
-  const ProcessResult r = mssph({"run", kScene, "--set", R"(simulation/domain={"min":[0,0,0],"max":[1,-1,1]})", "-q"});
+  const ProcessResult r = mssph({"run", kFlingScene, "--set", R"(simulation/domain={"min":[0,0,0],"max":[1,-1,1]})", "-q"});
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find(kScene + ": /simulation/domain/max: expected max > min"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(kFlingScene + ": /simulation/domain/max: expected max > min"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("comes from --set"), std::string::npos) << r.err;
   EXPECT_TRUE(work_entries().empty()) << "nothing is written";
 }

@@ -16,7 +16,7 @@
 namespace mssph::test {
 namespace {
 
-constexpr double kDt = 2.5e-4;     // the scenes' step
+constexpr double kSceneDt = 2.5e-4;     // the scenes' step
 constexpr double kMass = 1.0;      // proxy [kg]
 constexpr double kInertia = 1e-2;  // proxy [kg m^2]
 
@@ -27,7 +27,7 @@ using validation::five_second_script;
 TEST(CouplingPassivity, StableGainsInjectNoEnergyOverAFiveSecondScript) {
   const SpringDamperGains gains{1000.0, 10.0, 10.0, 0.1};  // the defaults
   const HapticsConfig config = five_second_script(gains);
-  EXPECT_THAT(coupling_stability_warnings(config, "proxy", proxy_model(kMass, kInertia), kDt), ::testing::IsEmpty());
+  EXPECT_THAT(coupling_stability_warnings(config, "proxy", proxy_model(kMass, kInertia), kSceneDt), ::testing::IsEmpty());
 
   const validation::PassivityMeasurement m = validation::passivity_over_script(gains);
   ASSERT_EQ(m.ticks, 5001u);
@@ -45,7 +45,7 @@ TEST(CouplingPassivity, GainsBeyondTheBoundAreReportedAndInjectEnergy) {
   const SpringDamperGains gains{5e6, 10.0, 10.0, 0.1};
   const HapticsConfig config = five_second_script(gains);
   const std::vector<std::string> warnings =
-      coupling_stability_warnings(config, "probe", proxy_model(kMass, kInertia), kDt);
+      coupling_stability_warnings(config, "probe", proxy_model(kMass, kInertia), kSceneDt);
   EXPECT_THAT(warnings, ::testing::Contains(::testing::AllOf(::testing::HasSubstr("probe"),
                                                              ::testing::HasSubstr("translational coupling"),
                                                              ::testing::HasSubstr("K h^2 + 2 B h < 4 m"))));
@@ -61,13 +61,13 @@ TEST(CouplingStabilityCheck, NamesEachViolatedBound) {
   HapticsConfig config = five_second_script({1000.0, 10.0, 10.0, 0.1});
   // 1 g and 1e-6 kg m^2: 1000 * 1e-6 + 2 * 10 * 1e-3 = 0.021 >= 4 m = 0.004, and 2.1e-4 >= 4e-6.
   const ProxyModel light = proxy_model(0.001, 1e-6);
-  const std::vector<std::string> warnings = coupling_stability_warnings(config, "needle", light, kDt);
+  const std::vector<std::string> warnings = coupling_stability_warnings(config, "needle", light, kSceneDt);
   EXPECT_THAT(warnings, ::testing::ElementsAre(::testing::HasSubstr("translational coupling"),
                                                ::testing::HasSubstr("rotational coupling")));
   // Device side: a 10 g handle under the same coupling and hand (K 1400 N/m, B 32 N s/m).
   config.device.mass = 0.01;
   config.device.inertia = 1e-6;
-  EXPECT_THAT(coupling_stability_warnings(config, "probe", proxy_model(kMass, kInertia), kDt),
+  EXPECT_THAT(coupling_stability_warnings(config, "probe", proxy_model(kMass, kInertia), kSceneDt),
               ::testing::ElementsAre(::testing::HasSubstr("device handle translational"),
                                      ::testing::HasSubstr("device handle rotational")));
   // dt longer than the haptic period is the proxy's step: 1000 * 0.1^2 = 10 > 4 m.
