@@ -31,8 +31,6 @@ class SweepBadInput : public SweepCli {
   TempDir files_;
 };
 
-const nlohmann::json kDensity = {{"path", "bodies/ball/density"}, {"values", {400, 600}}};
-
 TEST_F(SweepBadInput, UnknownKeyInTheScene) {
   expect_rejected(tiny_sweep({{{"path", "bodies/ball/densty"}, {"values", {400}}}}),
                   {"point 0 (densty=400)", "tiny_drop.json: /bodies/ball/densty: unknown key 'densty'",

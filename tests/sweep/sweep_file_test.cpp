@@ -14,8 +14,6 @@ using sweep::load_sweep_file;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
-const nlohmann::json kDensity = {{"path", "bodies/ball/density"}, {"values", {400, 600}}};
-
 class SweepFileTest : public ::testing::Test {
  protected:
   sweep::SweepFile load(const nlohmann::json& document) {

@@ -17,7 +17,6 @@ using Values = std::vector<std::pair<std::string, nlohmann::json>>;
 
 const nlohmann::json kStiffness = {{"path", "materials/contact/pressure_stiffness"}, {"name", "k"},
                                    {"log", {{"from", 100}, {"to", 10000}, {"count", 3}}}};
-const nlohmann::json kDensity = {{"path", "bodies/ball/density"}, {"values", {400, 600}}};
 
 class SweepPointsTest : public ::testing::Test {
  protected:
