@@ -56,12 +56,8 @@ struct CellRanges {
   MSSPH_HD void for_each_candidate(Vec3 x, std::uint32_t lane, std::uint32_t lanes, Visit&& visit) const {
     int cx, cy, cz;
     shape.cell_of(x, cx, cy, cz);
-    // Unrolled 4 times on the GPU: one lane per particle (1M scenes) then has several candidates'
-    // loads in flight; on an H100 the 1M fluid step went 901 -> 893 us, rigid 702 -> 695
-    // (2 unrolled: 910, 710; results/performance.md).
     const auto visit_range = [&](std::uint32_t first_cell, std::uint32_t end_cell) {
       const std::uint32_t end = cell_start[end_cell];
-      MSSPH_DEVICE_UNROLL(4)
       for (std::uint32_t s = cell_start[first_cell] + lane; s < end; s += lanes) visit(s);
     };
     for (int dz = -1; dz <= 1; ++dz) {

@@ -6,12 +6,3 @@
 #else
 #define MSSPH_HD inline
 #endif
-
-// Unrolls the loop that follows `n` times in device code, so a thread can have the loads of several
-// trips in flight at once; the host compiler decides for itself.
-#define MSSPH_PRAGMA(text) _Pragma(#text)
-#if defined(__CUDA_ARCH__)
-#define MSSPH_DEVICE_UNROLL(n) MSSPH_PRAGMA(unroll n)
-#else
-#define MSSPH_DEVICE_UNROLL(n)
-#endif
