@@ -240,9 +240,11 @@ MSSPH_HD ForceSum force_sum_over(const SortedView& v, const ForceParticle& i, Ca
   return sum;
 }
 
-// Lane `lane` of `lanes`' share of particle i's pressure and viscosity sums, from the grid.
-MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, std::uint32_t lane, std::uint32_t lanes) {
-  return force_sum_over(v, i, [&](auto&& visit) { v.grid.for_each_candidate(i.x, lane, lanes, visit); });
+// Particle i's pressure and viscosity sums in one lane, from the grid: the candidates within h,
+// found first (CellRanges::for_each_candidate_within), which add_force_pair tests again.
+MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i) {
+  return force_sum_over(
+      v, i, [&](auto&& visit) { v.grid.for_each_candidate_within(i.x, v.step.smoothing.h2, v.position, visit); });
 }
 
 // The same share from list `list`, which a rebuild's density pass recorded from it

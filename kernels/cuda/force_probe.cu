@@ -10,7 +10,7 @@ namespace {
 // The same sum as forces_kernel's, one lane per particle, not integrated.
 __global__ void force_probe_kernel(SortedView view, ForceSum* forces) {
   const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
-  if (s < view.step.particle_count) forces[s] = force_sum(view, load_force_particle(view, s), 0, 1);
+  if (s < view.step.particle_count) forces[s] = force_sum(view, load_force_particle(view, s));
 }
 
 }  // namespace

@@ -148,7 +148,7 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
   if (active) {
     i = view.id[s];
     particle = load_force_particle(view, s);
-    sum = kTeam ? force_sum_listed(view, particle, lane, Lanes, lists, list) : force_sum(view, particle, lane, Lanes);
+    sum = kTeam ? force_sum_listed(view, particle, lane, Lanes, lists, list) : force_sum(view, particle);
   }
   sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction),
          team_min<Lanes>(sum.nearest_boundary2)};

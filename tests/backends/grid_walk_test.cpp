@@ -92,5 +92,40 @@ TEST(GridWalk, EveryLaneVisitsItsStridedShareOfEachRange) {
   EXPECT_GT(wrapped_walks, 0u);
 }
 
+// The one-lane walk of the large GPU scenes' force sums (for_each_candidate_within) visits the
+// candidates of for_each_candidate that lie within the radius, in the same order, also where a
+// range holds more than the 32 candidates of one mask.
+TEST(GridWalk, TheWalkWithinARadiusVisitsTheNearCandidatesInTheWalksOrder) {
+  std::mt19937_64 random(20261127);
+  const SortedParticles sorted = clustered_particles(random);
+  const kernels::CellRanges grid = sorted.grid();
+  std::uniform_real_distribution<float> query(-3.0f, 4.0f);
+  std::size_t near_beyond_a_mask = 0, candidates_left_out = 0;
+  for (int q = 0; q < 200; ++q) {
+    SCOPED_TRACE(::testing::Message() << "query " << q);
+    const Vec3 x = q < 100 ? kernels::xyz(sorted.position[q * 7]) : Vec3{query(random), query(random), query(random)};
+    const std::vector<std::vector<std::uint32_t>> ranges = expected_ranges(sorted, x);
+    for (const float radius : {0.3f, 1.0f}) {
+      const float radius2 = radius * radius;
+      std::vector<std::uint32_t> expected;
+      for (const std::vector<std::uint32_t>& range : ranges) {
+        for (std::size_t k = 0; k < range.size(); ++k) {
+          if (kernels::squared_norm(x - kernels::xyz(sorted.position[range[k]])) < radius2) {
+            expected.push_back(range[k]);
+            if (k >= 32) ++near_beyond_a_mask;
+          } else {
+            ++candidates_left_out;
+          }
+        }
+      }
+      std::vector<std::uint32_t> visits;
+      grid.for_each_candidate_within(x, radius2, sorted.position.data(), [&](std::uint32_t t) { visits.push_back(t); });
+      ASSERT_EQ(visits, expected) << "radius " << radius;
+    }
+  }
+  EXPECT_GT(near_beyond_a_mask, 0u);
+  EXPECT_GT(candidates_left_out, 0u);
+}
+
 }  // namespace
 }  // namespace mssph::testing

@@ -86,7 +86,7 @@ TEST(NeighbourLists, SumsOverTheListAreTheGridWalksBits) {
     const kernels::DensitySum listed = kernels::density_sum_over(v, s, kernels::neighbours_of(v, lists.lists, s));
     ASSERT_TRUE(same_bits(walked.delta, listed.delta)) << "particle " << s << ": " << walked.delta << " vs " << listed.delta;
     const kernels::ForceParticle i = kernels::load_force_particle(v, s);
-    const kernels::ForceSum walked_force = kernels::force_sum(v, i, 0, 1);
+    const kernels::ForceSum walked_force = kernels::force_sum(v, i);
     const kernels::ForceSum listed_force = kernels::force_sum_over(v, i, kernels::neighbours_of(v, lists.lists, s));
     ASSERT_TRUE(same_bits(walked_force.pressure, listed_force.pressure)) << "particle " << s;
     ASSERT_TRUE(same_bits(walked_force.viscosity, listed_force.viscosity)) << "particle " << s;
@@ -169,7 +169,8 @@ TEST(TeamNeighbourLists, KeepEveryLanesSumsAndListItsShareWithinTheSkin) {
             ASSERT_EQ(team.entries(list), expected) << "particle " << s << ", lane " << lane;
             for (const std::uint32_t t : expected) in_the_skin += within_support(v, s, t) ? 0 : 1;
           }
-          const kernels::ForceSum walked = kernels::force_sum(v, i, lane, lanes);
+          const kernels::ForceSum walked = kernels::force_sum_over(
+              v, i, [&](auto&& visit) { v.grid.for_each_candidate(i.x, lane, lanes, visit); });
           const kernels::ForceSum from_list = kernels::force_sum_listed(v, i, lane, lanes, team.lists, list);
           ASSERT_TRUE(same_bits(walked.pressure, from_list.pressure)) << "particle " << s << ", lane " << lane;
           ASSERT_TRUE(same_bits(walked.viscosity, from_list.viscosity)) << "particle " << s;

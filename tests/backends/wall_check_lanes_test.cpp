@@ -226,7 +226,7 @@ TEST(WallCheckLanes, AMoveSurelyClearOfTheWallsIsNeverRejected) {
       Vec4 position = kernels::make_vec4(previous + (length / kernels::norm(direction)) * direction, 0.0f);
       Vec4 velocity{0, 0, 0, 0};
       const float move2 = kernels::squared_norm(kernels::xyz(position) - previous);
-      const float nearest2 = kernels::force_sum(v, kernels::load_force_particle(v, s), 0, 1).nearest_boundary2;
+      const float nearest2 = kernels::force_sum(v, kernels::load_force_particle(v, s)).nearest_boundary2;
       const bool clear = kernels::surely_clear_of_walls(nearest2, move2, d_wall);
       const bool is_rejected = kernels::keep_out_of_walls(v, previous, position, velocity);
       ASSERT_FALSE(clear && is_rejected) << "dx " << dx << ", nearest boundary " << std::sqrt(nearest2) / dx
