@@ -44,6 +44,7 @@ struct DeviceArrays {
   Array<std::uint32_t> keys, unordered_id, sorted_id, cell_count, cell_start;
   Array<Vec4> sorted_position, sorted_velocity;
   Array<VolumePressure> volume_pressure;
+  Array<std::uint8_t> near_other_body;  // sorted, from the density pass: may_feel_forces' second argument
   Array<std::uint32_t> block_total;  // the grid kernel's: each block's share of the cell table
   // A team's neighbour lists, one per lane, where each sorted particle stood when they were
   // recorded, and when to record them again (list_skin.hpp). Empty for one lane per particle.
@@ -128,6 +129,7 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   visit("sorted_position", a.sorted_position, Uninitialised{n});
   visit("sorted_velocity", a.sorted_velocity, Uninitialised{n});
   visit("volume_pressure", a.volume_pressure, Filled<VolumePressure>{n, VolumePressure{0, 0}});
+  visit("near_other_body", a.near_other_body, Uninitialised{n});  // the density pass writes every particle's
   visit("block_total", a.block_total, Uninitialised{grid_blocks});
   // Written by the density pass before the force pass reads them, for every particle that receives forces.
   const std::size_t lists = team_list_count(n, team_lanes);

@@ -97,12 +97,12 @@ __global__ void elastic_force_kernel(DeformableView view) {
 // sums over that list. One lane alone records none and walks every step (device_arrays.hpp,
 // team_list_capacity, says why).
 template <unsigned Lanes>
-__global__ void density_kernel(SortedView view, VolumePressure* volume_pressure, NeighbourLists lists,
-                               ListRefreshState* refresh, float record_radius2) {
+__global__ void density_kernel(SortedView view, VolumePressure* volume_pressure, std::uint8_t* near_other_body,
+                               NeighbourLists lists, ListRefreshState* refresh, float record_radius2) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
-  DensitySum sum{0.0f};
+  DensitySum sum{0.0f, 0.0f};
   if (active) {
     if constexpr (Lanes > 1) {
       const std::uint32_t list = blockIdx.x * blockDim.x + threadIdx.x;
@@ -117,7 +117,11 @@ __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure,
     }
   }
   sum.delta = team_sum<Lanes>(sum.delta);
-  if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s).volume_pressure;
+  sum.nearest_other_body2 = team_min<Lanes>(sum.nearest_other_body2);
+  if (active && lane == 0) {
+    volume_pressure[s] = density_from(sum, view, s).volume_pressure;
+    near_other_body[s] = sum.nearest_other_body2 < view.step.smoothing.h2 ? 1 : 0;
+  }
 }
 
 // Blocks of the force kernel that must fit on a multiprocessor at once, which caps its registers
@@ -134,7 +138,7 @@ inline constexpr int kForceBlocksPerMultiprocessor = Lanes == 1 ? 6 : 4;
 
 template <unsigned Lanes>
 __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
-    forces_kernel(SortedView view, CanonicalState state, NeighbourLists lists) {
+    forces_kernel(SortedView view, CanonicalState state, const std::uint8_t* near_other_body, NeighbourLists lists) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
@@ -148,7 +152,9 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
   if (active) {
     i = view.id[s];
     particle = load_force_particle(view, s);
-    sum = kTeam ? force_sum_listed(view, particle, lane, Lanes, lists, list) : force_sum(view, particle);
+    if (may_feel_forces(particle.parameters, near_other_body[s] != 0)) {
+      sum = kTeam ? force_sum_listed(view, particle, lane, Lanes, lists, list) : force_sum(view, particle);
+    }
   }
   sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction),
          team_min<Lanes>(sum.nearest_boundary2)};
@@ -224,9 +230,9 @@ void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team
   const std::size_t n = state.position.size();
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
-    density_kernel<L><<<blocks_for(n * L), kBlock, 0, stream>>>(sorted_view(scene, state), state.volume_pressure.data(),
-                                                                 team_lists(state, L), state.list_refresh.data(),
-                                                                 list_skin(scene.step.smoothing.h).record_radius2);
+    density_kernel<L><<<blocks_for(n * L), kBlock, 0, stream>>>(
+        sorted_view(scene, state), state.volume_pressure.data(), state.near_other_body.data(), team_lists(state, L),
+        state.list_refresh.data(), list_skin(scene.step.smoothing.h).record_radius2);
   });
 }
 
@@ -235,7 +241,7 @@ void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_la
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
     forces_kernel<L><<<blocks_for(n * L), kBlock, 0, stream>>>(sorted_view(scene, state), canonical_state(state),
-                                                                team_lists(state, L));
+                                                                state.near_other_body.data(), team_lists(state, L));
   });
 }
 

@@ -24,8 +24,10 @@ constexpr std::uint32_t kWallBody = 0, kFluidBody = 1, kDeformableBody = 2;
 // cells, so the grid wraps.
 class JitteredLattice {
  public:
-  // Spacing 0.02 m times `compression` (1: none); cells of cell_size_over_h times h.
-  JitteredLattice(std::mt19937_64& random, float compression, float cell_size_over_h = 1.0f) {
+  // Spacing 0.02 m times `compression` (1: none); cells of cell_size_over_h times h; the block
+  // (kDeformableBody) of kind block_kind.
+  JitteredLattice(std::mt19937_64& random, float compression, float cell_size_over_h = 1.0f,
+                  std::uint32_t block_kind = kernels::kDeformable) {
     const float dx = 0.02f * compression;
     std::uniform_real_distribution<float> jitter(-0.1f * dx, 0.1f * dx);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
@@ -50,7 +52,7 @@ class JitteredLattice {
     }
     bodies_ = {{kernels::kBoundary, kernels::kNotRigid, 0, 1000, 100, 0.0f},
                {kernels::kFluid, kernels::kNotRigid, 0, 1000, 100, 1.0f},
-               {kernels::kDeformable, kernels::kNotRigid, 0, 1000, 100, 2.0f}};
+               {block_kind, kernels::kNotRigid, 0, 1000, 100, 2.0f}};
     step_.smoothing = kernels::SmoothingKernels::for_support(2.0 * dx);
     step_.inverse_gradient_consistency = 1.0f;
     step_.particle_count = static_cast<std::uint32_t>(particles.size());
