@@ -95,7 +95,9 @@ __global__ void elastic_force_kernel(DeformableView view) {
 // h + skin in its list (lists: one per thread), for the force pass and the steps until the next
 // rebuild, and asks for the next step to rebuild if the list overflowed; on the other steps it
 // sums over that list. One lane alone records none and walks every step (device_arrays.hpp,
-// team_list_capacity, says why).
+// team_list_capacity, says why). Every particle also stores whether another body lies within h
+// of it (taken by rigid and deformable particles only: DensitySum::nearest_other_body2), which
+// lets the force pass skip the walk of those without one (may_feel_forces).
 template <unsigned Lanes>
 __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure, std::uint8_t* near_other_body,
                                NeighbourLists lists, ListRefreshState* refresh, float record_radius2) {
@@ -145,6 +147,7 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
   ForceSum sum = zero_force_sum();
   // A team's lane visits the list of its last rebuild (density_kernel) instead of walking its share
   // of the 27 cells again; one lane alone (large scenes) has no lists (density_kernel) and walks.
+  // Neither walks for a rigid or deformable particle with no other body within h: its sums are zero.
   constexpr bool kTeam = Lanes > 1;
   const std::uint32_t list = blockIdx.x * blockDim.x + threadIdx.x;
   ForceParticle particle{};
