@@ -102,10 +102,11 @@ MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint3
 MSSPH_HD bool receives_forces(const BodyParameters& body) { return body.kind != kBoundary; }
 
 // Whether a particle's force sums can be anything but zero_force_sum(), given whether its density
-// sum met another body within h (DensitySum::nearest_other_body2 < h^2): a fluid particle's always can; a
-// rigid or deformable particle's take only other bodies' neighbours (add_force_pair), so without
-// one they are zero, and the GPU's force pass skips its walk. Inside a large rigid or deformable
-// block that is nearly every particle.
+// sum met another body within h (DensitySum::nearest_other_body2 < h^2): a fluid particle's always
+// can; a rigid or deformable particle's take only other bodies' neighbours (add_force_pair), so
+// without one they are zero, and the GPU's force pass skips its walk. Inside a large rigid or
+// deformable block that is nearly every particle. (The host's, tried the same way, showed no
+// difference its 2-core machine could resolve: results/performance.md.)
 MSSPH_HD bool may_feel_forces(const BodyParameters& body, bool near_other_body) {
   return receives_forces(body) && (body.kind == kFluid || near_other_body);
 }
