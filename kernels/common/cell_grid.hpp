@@ -39,10 +39,6 @@ struct GridShape {
   }
 };
 
-// The sorted particles of cell k are [cell_start[k], cell_start[k + 1]): cell_start holds, for
-// every key, the first sorted particle whose key is not smaller (a prefix sum of the cell counts),
-// so an empty cell is an empty range and the three cells of a row along x, whose keys are
-// consecutive unless the row wraps, are one range.
 // The index of the lowest set bit of a non-zero word.
 MSSPH_HD std::uint32_t lowest_set_bit(std::uint32_t bits) {
 #if defined(__CUDA_ARCH__)
@@ -52,6 +48,10 @@ MSSPH_HD std::uint32_t lowest_set_bit(std::uint32_t bits) {
 #endif
 }
 
+// The sorted particles of cell k are [cell_start[k], cell_start[k + 1]): cell_start holds, for
+// every key, the first sorted particle whose key is not smaller (a prefix sum of the cell counts),
+// so an empty cell is an empty range and the three cells of a row along x, whose keys are
+// consecutive unless the row wraps, are one range.
 struct CellRanges {
   GridShape shape;
   const std::uint32_t* cell_start;  // cell_count() + 1 entries

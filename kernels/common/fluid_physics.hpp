@@ -10,10 +10,11 @@
 // interface_viscosity), eq. 7 interaction_force.
 //
 // Each quantity is a sum over neighbours, assembled once by density_sum_over() and
-// force_sum_over() from the candidates a source hands them: on a GPU (density_sum, force_sum) lane
-// `lane` of a particle's team visits every lanes-th candidate of the 27 cells, and the lanes'
-// partial sums are added (same pair arithmetic, another summation order); a team's lanes visit
-// the lists a rebuild's density pass recorded instead (density_sum_recording, density_sum_listed,
+// force_sum_over() from the candidates a source hands them: on a GPU lane `lane` of a particle's
+// team visits every lanes-th candidate of the 27 cells (density_sum), and the lanes' partial sums
+// are added (same pair arithmetic, another summation order); one lane alone takes its force sum
+// from the candidates within h, found first (force_sum); a team's lanes visit the lists a
+// rebuild's density pass recorded instead (density_sum_recording, density_sum_listed,
 // force_sum_listed; list_skin.hpp); the host visits the particle's neighbour list. Lists
 // (neighbour_list.hpp) give the same bits as the walks they were recorded from, as long as the
 // particles stay where they were.
@@ -82,7 +83,7 @@ MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candi
       sum.nearest_other_body2 = std::fmin(sum.nearest_other_body2, body_of(v.position[t]) == body_i ? none : r2);
       considered(t, r2);
     });
-  } else {  // the walk of most particles, and the one issue-bound loop, left without the distance
+  } else {  // fluid and boundary particles, whose force pass never skips: no nearest other body
     candidates([&](std::uint32_t t) { considered(t, add_density_pair(sum, v, x_i, t)); });
   }
   return sum;

@@ -72,14 +72,24 @@ void expect_team_walk(const SortedParticles& sorted, Vec3 x, const std::vector<s
   }
 }
 
+// The points the walks start from: 100 particles (every 7th), then 100 random points over the
+// particles' spread and beyond.
+std::vector<Vec3> query_points(const SortedParticles& sorted, std::mt19937_64& random) {
+  std::uniform_real_distribution<float> query(-3.0f, 4.0f);
+  std::vector<Vec3> points;
+  for (int q = 0; q < 100; ++q) points.push_back(kernels::xyz(sorted.position[q * 7]));
+  for (int q = 0; q < 100; ++q) points.push_back(Vec3{query(random), query(random), query(random)});
+  return points;
+}
+
 TEST(GridWalk, EveryLaneVisitsItsStridedShareOfEachRange) {
   std::mt19937_64 random(20261124);
   const SortedParticles sorted = clustered_particles(random);
-  std::uniform_real_distribution<float> query(-3.0f, 4.0f);
+  const std::vector<Vec3> points = query_points(sorted, random);
   std::size_t longest_range = 0, wrapped_walks = 0;
-  for (int q = 0; q < 200; ++q) {
+  for (std::size_t q = 0; q < points.size(); ++q) {
     SCOPED_TRACE(::testing::Message() << "query " << q);
-    const Vec3 x = q < 100 ? kernels::xyz(sorted.position[q * 7]) : Vec3{query(random), query(random), query(random)};
+    const Vec3 x = points[q];
     const std::vector<std::vector<std::uint32_t>> ranges = expected_ranges(sorted, x);
     if (ranges.size() > 9) ++wrapped_walks;
     for (const std::vector<std::uint32_t>& range : ranges) longest_range = std::max(longest_range, range.size());
@@ -99,11 +109,11 @@ TEST(GridWalk, TheWalkWithinARadiusVisitsTheNearCandidatesInTheWalksOrder) {
   std::mt19937_64 random(20261127);
   const SortedParticles sorted = clustered_particles(random);
   const kernels::CellRanges grid = sorted.grid();
-  std::uniform_real_distribution<float> query(-3.0f, 4.0f);
+  const std::vector<Vec3> points = query_points(sorted, random);
   std::size_t near_beyond_a_mask = 0, candidates_left_out = 0;
-  for (int q = 0; q < 200; ++q) {
+  for (std::size_t q = 0; q < points.size(); ++q) {
     SCOPED_TRACE(::testing::Message() << "query " << q);
-    const Vec3 x = q < 100 ? kernels::xyz(sorted.position[q * 7]) : Vec3{query(random), query(random), query(random)};
+    const Vec3 x = points[q];
     const std::vector<std::vector<std::uint32_t>> ranges = expected_ranges(sorted, x);
     for (const float radius : {0.3f, 1.0f}) {
       const float radius2 = radius * radius;
