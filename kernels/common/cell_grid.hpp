@@ -48,6 +48,24 @@ MSSPH_HD std::uint32_t lowest_set_bit(std::uint32_t bits) {
 #endif
 }
 
+// No body: a walk that leaves no cells out (CellRanges).
+inline constexpr std::uint32_t kNoBody = 0xffffffffu;
+// A cell_body entry: the cell's particles belong to more than one body, or to one whose index
+// does not fit 16 bits.
+inline constexpr std::uint16_t kMixedCell = 0xffffu;
+
+// The cell_body entry of a non-empty cell of `count` particles whose bodies are body_of(0), ...,
+// body_of(count - 1).
+template <class BodyOf>
+MSSPH_HD std::uint16_t cell_body_code(std::uint32_t count, BodyOf&& body_of) {
+  const std::uint32_t body = body_of(0u);
+  if (body >= kMixedCell) return kMixedCell;
+  for (std::uint32_t k = 1; k < count; ++k) {
+    if (body_of(k) != body) return kMixedCell;
+  }
+  return static_cast<std::uint16_t>(body);
+}
+
 // The sorted particles of cell k are [cell_start[k], cell_start[k + 1]): cell_start holds, for
 // every key, the first sorted particle whose key is not smaller (a prefix sum of the cell counts),
 // so an empty cell is an empty range and the three cells of a row along x, whose keys are
@@ -55,12 +73,29 @@ MSSPH_HD std::uint32_t lowest_set_bit(std::uint32_t bits) {
 struct CellRanges {
   GridShape shape;
   const std::uint32_t* cell_start;  // cell_count() + 1 entries
+  // For each non-empty cell, the body all its particles belong to, else kMixedCell (empty cells'
+  // entries are stale): lets a walk leave out the rows of cells that hold nothing but one body.
+  // Null where no walk does (scenes without rigid or deformable bodies, the host).
+  const std::uint16_t* cell_body = nullptr;
+
+  // Whether cells first to last (consecutive keys) hold no particle of a body other than `body`;
+  // false where cell_body is null or body is kNoBody.
+  MSSPH_HD bool cells_hold_only(std::uint32_t first, std::uint32_t last, std::uint32_t body) const {
+    if (cell_body == nullptr || body == kNoBody) return false;
+    for (std::uint32_t k = first; k <= last; ++k) {
+      if (cell_start[k] != cell_start[k + 1] && cell_body[k] != body) return false;
+    }
+    return true;
+  }
 
   // Calls visit_range(begin, end) for each contiguous range [begin, end) of sorted particles that
   // the 27 cells around x make: one per row of three cells along x, or one per cell where the row
-  // wraps around the grid's x period.
+  // wraps around the grid's x period. A row (or wrapped cell) that holds nothing but particles of
+  // body `left_out` is not visited: the density walks of rigid and deformable particles leave out
+  // their own body's, whose pairs add nothing to their sums (fluid_physics.hpp, rows_left_out),
+  // and which make up every row inside a large block.
   template <class VisitRange>
-  MSSPH_HD void for_each_range(Vec3 x, VisitRange&& visit_range) const {
+  MSSPH_HD void for_each_range(Vec3 x, VisitRange&& visit_range, std::uint32_t left_out = kNoBody) const {
     int cx, cy, cz;
     shape.cell_of(x, cx, cy, cz);
     for (int dz = -1; dz <= 1; ++dz) {
@@ -68,37 +103,41 @@ struct CellRanges {
         const std::uint32_t first = shape.key(cx - 1, cy + dy, cz + dz);
         const std::uint32_t last = shape.key(cx + 1, cy + dy, cz + dz);
         if (last == first + 2) {
-          visit_range(cell_start[first], cell_start[last + 1]);
+          if (!cells_hold_only(first, last, left_out)) visit_range(cell_start[first], cell_start[last + 1]);
         } else {  // the row wraps: three separate cells
           for (int dx = -1; dx <= 1; ++dx) {
             const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
-            visit_range(cell_start[k], cell_start[k + 1]);
+            if (!cells_hold_only(k, k, left_out)) visit_range(cell_start[k], cell_start[k + 1]);
           }
         }
       }
     }
   }
 
-  // Calls visit(s) for every sorted particle s in the 27 cells around x that falls to `lane` of a
-  // team of `lanes`: lane k takes candidates k, k + lanes, k + 2 lanes, ... of each contiguous
-  // range. One lane alone (the host, large GPU scenes) visits every candidate; a team of lanes
-  // splits the walk evenly, so a small scene keeps several independent loads in flight per
-  // particle instead of one dependent walk of ~200 candidates.
+  // Calls visit(s) for every sorted particle s in the 27 cells around x (but the rows for_each_range
+  // leaves out) that falls to `lane` of a team of `lanes`: lane k takes candidates k, k + lanes,
+  // k + 2 lanes, ... of each contiguous range. One lane alone (the host, large GPU scenes) visits
+  // every candidate; a team of lanes splits the walk evenly, so a small scene keeps several
+  // independent loads in flight per particle instead of one dependent walk of ~200 candidates.
   template <class Visit>
-  MSSPH_HD void for_each_candidate(Vec3 x, std::uint32_t lane, std::uint32_t lanes, Visit&& visit) const {
-    for_each_range(x, [&](std::uint32_t begin, std::uint32_t end) {
-      for (std::uint32_t s = begin + lane; s < end; s += lanes) visit(s);
-    });
+  MSSPH_HD void for_each_candidate(Vec3 x, std::uint32_t lane, std::uint32_t lanes, Visit&& visit,
+                                   std::uint32_t left_out = kNoBody) const {
+    for_each_range(
+        x,
+        [&](std::uint32_t begin, std::uint32_t end) {
+          for (std::uint32_t s = begin + lane; s < end; s += lanes) visit(s);
+        },
+        left_out);
   }
 
   // Calls visit(s) for every sorted particle s in the 27 cells around x that lies closer to x than
-  // sqrt(radius2) (`position`: the sorted positions), in for_each_candidate's order. Each range is
-  // taken 32 candidates at a time: their distances first, into a bit mask of the near ones, then a
-  // visit of each near one. One lane per particle (large GPU scenes) is why: the lanes of a warp find
-  // their ~30 neighbours among ~200 candidates each at other places, so a visit inside the walk
-  // has the whole warp step through the pair arithmetic at nearly every candidate, some lane having
-  // a neighbour there; the mask's visits run only as often as the lane with the most near ones in
-  // the segment. The visits see exactly the candidates a filter on the same r^2 would pass.
+  // sqrt(radius2) (`position`: the sorted positions), in for_each_candidate's order. Each range is taken 32 candidates at a time: their distances
+  // first, into a bit mask of the near ones, then a visit of each near one. One lane per particle
+  // (large GPU scenes) is why: the lanes of a warp find their ~30 neighbours among ~200 candidates
+  // each at other places, so a visit inside the walk has the whole warp step through the pair
+  // arithmetic at nearly every candidate, some lane having a neighbour there; the mask's visits run
+  // only as often as the lane with the most near ones in the segment. The visits see exactly the
+  // candidates a filter on the same r^2 would pass.
   template <class Visit>
   MSSPH_HD void for_each_candidate_within(Vec3 x, float radius2, const Vec4* position, Visit&& visit) const {
     for_each_range(x, [&](std::uint32_t begin, std::uint32_t end) {

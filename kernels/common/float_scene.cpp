@@ -40,12 +40,12 @@ double body_particle_mass(const ParticleSetup& setup, const BodySetup& body) {
   return m;
 }
 
-// The rest bonds, volumes, corrections, Lame parameters and contact layers' own-body number densities
-// of deformable bodies, computed once in
-// double by the model's rest-state builder, so every backend starts from the same rest configuration.
-void add_deformable_bodies(const ParticleSetup& setup, FloatScene& scene) {
+// The own-body number densities at rest of rigid and deformable particles and the rest bonds,
+// volumes, corrections and Lame parameters of deformable bodies, computed once in double by the
+// model's rest-state builder, so every backend starts from the same rest configuration.
+void add_rest_state(const ParticleSetup& setup, FloatScene& scene) {
   bool any = false;
-  for (const BodySetup& b : setup.bodies) any = any || b.kind == BodyKind::deformable;
+  for (const BodySetup& b : setup.bodies) any = any || has_own_rest_number_density(b.kind);
   if (!any) return;
   const DeformableRestState rest = build_deformable_rest_state(setup);
   scene.own_rest_number_density.reserve(setup.size());
@@ -188,7 +188,7 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
     scene.fixed.push_back(setup.fixed[i] ? kFixedRegion : kFree);
   }
   scene.grid = choose_grid_shape(scene.position, setup.smoothing_length);
-  add_deformable_bodies(setup, scene);
+  add_rest_state(setup, scene);
   return scene;
 }
 

@@ -47,40 +47,47 @@ MSSPH_HD float add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, 
   return r2;
 }
 
-// A deformable particle reads the density of its contact layer: its own body's neighbours are not
-// summed live but taken at rest (density_from). model/deformable_rest_state.hpp
-// (reads_contact_layer_density) says why; reference: compute_densities.
-MSSPH_HD bool reads_contact_layer_density(const BodyParameters& body) { return body.kind == kDeformable; }
+// A particle whose density takes its own body's share at rest (own_rest_number_density) and sums
+// only the other bodies' neighbours live: a deformable particle, which reads the density of its
+// contact layer (model/deformable_rest_state.hpp, reads_contact_layer_density, says why), and a
+// rigid particle, whose share at rest is its live share, as its body's particles keep their
+// distances, so its walks need not visit its own body (rows_left_out). The reference sums a rigid
+// body's share live (compute_densities): the agreement tests hold the two against each other.
+MSSPH_HD bool takes_own_body_at_rest(const BodyParameters& body) {
+  return body.kind == kDeformable || body.kind == kRigid;
+}
+
+// The body whose rows of cells a particle's density walk leaves out (CellRanges::for_each_range):
+// a rigid or deformable particle's own, whose pairs add nothing to its sum (taken at rest);
+// kNoBody for the others. Inside a large block every row is its own body's, and its particles
+// walk nothing. On an H100 the 1M rigid block's density pass went from 326 to 160 us, the
+// deformable block's from 245 to 161. The force walk leaves out nothing: inside a body it is
+// skipped whole (may_feel_forces), and near another body leaving rows out made the 1M rigid and
+// deformable force passes about 7 % slower (results/performance.md).
+MSSPH_HD std::uint32_t rows_left_out(const BodyParameters& body, std::uint32_t body_index) {
+  return takes_own_body_at_rest(body) ? body_index : kNoBody;
+}
 
 // Particle s's live density sum over the candidates that candidates(visit) hands to visit;
-// considered(t, r2) is called for every candidate t the sum considers (all but a contact layer's
-// own body), with its squared distance r2; its term is added when r2 < h^2. The walk is written
-// once for a contact layer, once for a rigid particle (which also takes its nearest other body) and
-// once for every other particle, so a particle's case is decided once, not at each of its ~200
-// candidates. Taking the nearest other body in every particle's walk made the 1M fluid block's
-// density pass 28 % slower on an H100 (results/performance.md).
+// considered(t, r2) is called for every candidate t the sum considers (all but the particle's own
+// body where it takes that at rest), with its squared distance r2; its term is added when r2 < h^2.
+// The walk is written once for a particle that takes its own body at rest (which also notes its
+// nearest other body) and once for every other particle, so a particle's case is decided once,
+// not at each of its ~200 candidates. Taking the nearest other body in every particle's walk made
+// the 1M fluid block's density pass 28 % slower on an H100 (results/performance.md).
 template <class Candidates, class Considered>
 MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates,
                                      Considered&& considered) {
   const Vec4 p_i = v.position[s];
   const Vec3 x_i = xyz(p_i);
   const std::uint32_t body_i = body_of(p_i);
-  const BodyParameters& body = v.bodies[body_i];
-  const float none = std::numeric_limits<float>::infinity();
   DensitySum sum{0.0f, 0.0f};
-  if (reads_contact_layer_density(body)) {
-    sum.nearest_other_body2 = none;
+  if (takes_own_body_at_rest(v.bodies[body_i])) {
+    sum.nearest_other_body2 = std::numeric_limits<float>::infinity();
     candidates([&](std::uint32_t t) {
       if (body_of(v.position[t]) == body_i) return;  // its own body: at rest, in density_from
       const float r2 = add_density_pair(sum, v, x_i, t);
       sum.nearest_other_body2 = std::fmin(sum.nearest_other_body2, r2);
-      considered(t, r2);
-    });
-  } else if (body.kind == kRigid) {
-    sum.nearest_other_body2 = none;
-    candidates([&](std::uint32_t t) {
-      const float r2 = add_density_pair(sum, v, x_i, t);
-      sum.nearest_other_body2 = std::fmin(sum.nearest_other_body2, body_of(v.position[t]) == body_i ? none : r2);
       considered(t, r2);
     });
   } else {  // fluid and boundary particles, whose force pass never skips: no nearest other body
@@ -93,10 +100,19 @@ MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candi
   return density_sum_over(v, s, candidates, [](std::uint32_t, float) {});
 }
 
+// Particle s's grid walk as a candidate source: lane `lane` of `lanes`' share of the 27 cells
+// around it, less the rows of its own body where it leaves them out (rows_left_out).
+MSSPH_HD auto grid_share(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes) {
+  const Vec4 p = v.position[s];
+  const std::uint32_t left_out = rows_left_out(v.bodies[body_of(p)], body_of(p));
+  return [&v, x = xyz(p), lane, lanes, left_out](auto&& visit) {
+    v.grid.for_each_candidate(x, lane, lanes, visit, left_out);
+  };
+}
+
 // Lane `lane` of `lanes`' share of particle s's live density sum, from the grid.
 MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes) {
-  const Vec3 x_i = xyz(v.position[s]);
-  return density_sum_over(v, s, [&](auto&& visit) { v.grid.for_each_candidate(x_i, lane, lanes, visit); });
+  return density_sum_over(v, s, grid_share(v, s, lane, lanes));
 }
 
 // Boundary particles receive no force: they skip the force sum.
@@ -115,14 +131,14 @@ MSSPH_HD bool may_feel_forces(const BodyParameters& body, bool near_other_body) 
 // density_sum's share on a step that rebuilt the grid, recording in list `list`
 // (neighbour_list.hpp) every candidate it considers closer than record_radius2: (h + skin)^2
 // (list_skin.hpp). The force pass of this step and the passes of the steps until the next rebuild
-// visit it (force_sum_listed, density_sum_listed): a contact layer's own body is not listed, which
-// its density skips and which adds nothing to its force sum (add_force_pair: no pressure among a
-// deformable body's own particles).
+// visit it (force_sum_listed, density_sum_listed): a rigid or deformable particle's own body is
+// not listed, which its density takes at rest and which adds nothing to its force sum
+// (add_force_pair: no pressure or viscosity within such a body).
 MSSPH_HD DensitySum density_sum_recording(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
                                           const NeighbourLists& lists, std::uint32_t list, float record_radius2) {
   ListRecorder recorder(lists, list);
   const DensitySum sum = density_sum_over(
-      v, s, [&](auto&& visit) { v.grid.for_each_candidate(xyz(v.position[s]), lane, lanes, visit); },
+      v, s, grid_share(v, s, lane, lanes),
       [&](std::uint32_t t, float r2) {
         if (r2 < record_radius2) recorder.record(t);
       });
@@ -139,10 +155,10 @@ MSSPH_HD DensitySum density_sum_listed(const SortedView& v, std::uint32_t s, std
   return density_sum_over(v, s, listed_share(v.grid, xyz(v.position[s]), lane, lanes, lists, list));
 }
 
-// The number density behind particle s's pressure from its live sum: a deformable particle adds its
-// own body's share at rest, every other particle reads its sum as it is.
+// The number density behind particle s's pressure from its live sum: a rigid or deformable
+// particle adds its own body's share at rest, every other particle reads its sum as it is.
 MSSPH_HD float number_density_of(const DensitySum& sum, const SortedView& v, std::uint32_t s) {
-  if (!reads_contact_layer_density(v.bodies[body_of(v.position[s])])) return sum.delta;
+  if (!takes_own_body_at_rest(v.bodies[body_of(v.position[s])])) return sum.delta;
   return sum.delta + v.own_rest_number_density[v.id[s]];
 }
 

@@ -65,8 +65,9 @@ struct SortedView {
   const Vec4* velocity;                  // sorted: xyz [m/s]
   const std::uint32_t* id;               // sorted -> canonical index
   const VolumePressure* volume_pressure;  // sorted, written by the density pass
-  // Canonical: a deformable particle's own-body number density at rest [1/m^3], the frozen part of
-  // its contact layer's density (fluid_physics.hpp, density_from); null without deformable bodies.
+  // Canonical: a rigid or deformable particle's own-body number density at rest [1/m^3], the part
+  // of its density its walks do not sum (fluid_physics.hpp, takes_own_body_at_rest); null without
+  // rigid or deformable bodies.
   const float* own_rest_number_density;
 };
 

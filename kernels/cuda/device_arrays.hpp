@@ -42,6 +42,7 @@ struct DeviceArrays {
   Array<std::uint8_t> fixed;
   // The neighbour grid and the cell-ordered copies.
   Array<std::uint32_t> keys, unordered_id, sorted_id, cell_count, cell_start;
+  Array<std::uint16_t> cell_body;  // CellRanges::cell_body; empty without rigid or deformable bodies
   Array<Vec4> sorted_position, sorted_velocity;
   Array<VolumePressure> volume_pressure;
   Array<std::uint8_t> near_other_body;  // sorted, from the density pass: may_feel_forces' second argument
@@ -51,13 +52,14 @@ struct DeviceArrays {
   Array<std::uint32_t> list_count, list_index;
   Array<Vec4> list_origin;
   Array<ListRefreshState> list_refresh;
+  // Rigid and deformable bodies (empty without them): canonical, n entries.
+  Array<float> own_rest_number_density;
   // Deformable bodies (empty without them).
   Array<Vec4> elastic_force;
   Array<ElasticParameters> elastic_bodies;
   Array<std::uint32_t> deformable_body, bond_count, bond_neighbour;
   Array<Vec4> rest;
   Array<Mat3> correction;
-  Array<float> own_rest_number_density;  // canonical, n entries
   Array<Quat> rotation;
   Array<Mat3> corrected_stress_action, deformation;  // K_i L_i (elastic_physics.hpp), F_i
   // Bodies, the rigid-body chunk reductions and the logged sums' chunks (body_readback.cuh).
@@ -111,7 +113,6 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
     visit("bond_neighbour", a.bond_neighbour, copy_of(scene.bond_neighbour));
     visit("rest", a.rest, copy_of(scene.rest));
     visit("correction", a.correction, copy_of(scene.correction));
-    visit("own_rest_number_density", a.own_rest_number_density, copy_of(scene.own_rest_number_density));
     visit("rotation", a.rotation, Filled<Quat>{deformables, Quat{0, 0, 0, 1}});
     visit("corrected_stress_action", a.corrected_stress_action, Uninitialised{deformables});
     // Identity until the first step: the logged volume ratio of the rest state is 1.
@@ -126,6 +127,11 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   // Zero at the start; the slot kernel takes every count back to zero for the next step.
   visit("cell_count", a.cell_count, Filled<std::uint32_t>{cell_table, 0u});
   visit("cell_start", a.cell_start, Uninitialised{cell_table});
+  // Where particles take their own body at rest, their walks leave out its rows (CellRanges): each
+  // rebuild writes the entries of the non-empty cells, the only ones read.
+  visit("own_rest_number_density", a.own_rest_number_density, copy_of(scene.own_rest_number_density));
+  const bool rows_left_out = !scene.own_rest_number_density.empty();
+  visit("cell_body", a.cell_body, Uninitialised{rows_left_out ? cell_table : 0});
   visit("sorted_position", a.sorted_position, Uninitialised{n});
   visit("sorted_velocity", a.sorted_velocity, Uninitialised{n});
   visit("volume_pressure", a.volume_pressure, Filled<VolumePressure>{n, VolumePressure{0, 0}});

@@ -59,15 +59,16 @@ DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& ch
   return state;
 }
 
+// cell_body and own_rest_number_density are empty, so null, without rigid or deformable bodies.
 SortedView sorted_view(const FloatScene& scene, const DeviceState& state) {
   return SortedView{scene.step,
                     state.bodies.data(),
-                    CellRanges{scene.grid, state.cell_start.data()},
+                    CellRanges{scene.grid, state.cell_start.data(), state.cell_body.data()},
                     state.sorted_position.data(),
                     state.sorted_velocity.data(),
                     state.sorted_id.data(),
                     state.volume_pressure.data(),
-                    state.own_rest_number_density.data()};  // empty, so null, without deformable bodies
+                    state.own_rest_number_density.data()};
 }
 
 NeighbourLists team_lists(DeviceState& state, unsigned team_lanes) {

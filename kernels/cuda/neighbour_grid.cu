@@ -26,6 +26,7 @@ struct GridArrays {
   std::uint32_t* keys;
   std::uint32_t* cell_count;
   std::uint32_t* cell_start;
+  std::uint16_t* cell_body;    // null where no walk leaves rows out (CellRanges)
   std::uint32_t* unordered_id;
   std::uint32_t* block_total;  // one per block of the kernel (scan_cell_counts)
   std::uint32_t* sorted_id;
@@ -101,7 +102,9 @@ __device__ bool lists_expired(const GridArrays& a, const ListSkin& skin, cg::gri
 // 3. each particle takes a slot in its cell's range (atomically, in no fixed order), writes its
 //    index there and gives back its count, so the counts are zero again for the next rebuild;
 // 4. each particle counts the particles of its cell with a smaller index in those slots: its rank
-//    in the canonical order within the cell, so its place in cell order, where it copies itself.
+//    in the canonical order within the cell, so its place in cell order, where it copies itself;
+//    the first of each cell also notes whether all of the cell's particles share its body
+//    (CellRanges::cell_body).
 // With lists (`check`), the kernel first checks them (lists_expired) and, while they hold, ends
 // there: one launch per step. (The check as its own kernel followed by a conditional graph node
 // around the rebuild's five kernels took 6.9 us more per step on an H100; results/performance.md.)
@@ -135,6 +138,9 @@ __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check, 
     const std::uint32_t end = a.cell_start[key + 1];
     std::uint32_t rank = 0;
     for (std::uint32_t slot = first; slot < end; ++slot) rank += a.unordered_id[slot] < i ? 1u : 0u;
+    if (a.cell_body && rank == 0) {
+      a.cell_body[key] = cell_body_code(end - first, [&](std::uint32_t k) { return a.body[a.unordered_id[first + k]]; });
+    }
     const std::uint32_t s = first + rank;
     a.sorted_id[s] = i;
     place_in_cell_order(s, i, a.position, a.velocity, a.body, a.sorted_position, a.sorted_velocity);
@@ -151,6 +157,7 @@ GridArrays grid_arrays(DeviceState& state, const GridShape& grid) {
           state.keys.data(),
           state.cell_count.data(),
           state.cell_start.data(),
+          state.cell_body.data(),
           state.unordered_id.data(),
           state.block_total.data(),
           state.sorted_id.data(),

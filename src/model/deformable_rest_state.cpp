@@ -56,12 +56,14 @@ DeformableRestState build_deformable_rest_state(const ParticleSetup& setup) {
     rest.volume[i] = setup.mass[i] / mass_density;
   }
 
-  // The contact layer's frozen own-body number density, with the density pass's spiky kernel.
+  // The own-body number density at rest, with the density pass's spiky kernel: over the same-body
+  // neighbours in the order of the rest neighbours (for a deformable particle, they are those).
   const SpikyKernel w_density(h);
   for (std::size_t i = 0; i < n; ++i) {
-    if (!reads_contact_layer_density(setup.bodies[setup.body[i]].kind)) continue;
+    if (!has_own_rest_number_density(setup.bodies[setup.body[i]].kind)) continue;
     double delta = w_density(0.0);
-    for (const std::size_t* j = rest.neighbours.begin(i); j != rest.neighbours.end(i); ++j) {
+    for (const std::size_t* j = all.begin(i); j != all.end(i); ++j) {
+      if (*j == i || setup.body[*j] != setup.body[i]) continue;
       delta += w_density((setup.position[*j] - setup.position[i]).norm());
     }
     rest.own_rest_number_density[i] = delta;

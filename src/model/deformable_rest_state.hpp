@@ -41,9 +41,10 @@ struct DeformableRestState {
   // L_i = (sum_j V0_j grad W(X_i - X_j) (x) X_ij)^-1 with kernel-gradient correction, else I.
   std::vector<Eigen::Matrix3d> correction;
   std::vector<LameParameters> lame;  // per particle, the material law of its body (material_law.hpp)
-  // The own body's share of the number density behind a deformable particle's pressure, frozen at
-  // rest: delta0_own,i = W(0) + sum_j W(|X_ij|), j over the rest neighbours, W the spiky smoothing
-  // kernel of the density pass [1/m^3]; 0 for particles of other kinds. See contact_layer below.
+  // The own body's share of the number density behind a particle's pressure, frozen at rest:
+  // delta0_own,i = W(0) + sum_j W(|X_ij|), j != i over the particles of i's body within h at rest,
+  // W the spiky smoothing kernel of the density pass [1/m^3], for the particles that have one
+  // (has_own_rest_number_density), else 0. See reads_contact_layer_density below.
   std::vector<double> own_rest_number_density;
 };
 
@@ -59,6 +60,15 @@ struct DeformableRestState {
 // rigid-fluid coupling for incompressible SPH"). Rigid and boundary bodies need no special case:
 // their own neighbourhoods never change, so their live own-body sum is already their rest share.
 inline bool reads_contact_layer_density(BodyKind kind) { return kind == BodyKind::deformable; }
+
+// Whose own-body number density share at rest the rest state holds: a deformable particle's, the
+// frozen part of its contact layer's density, and a rigid particle's, which equals its live share
+// (see above). The float backends take both from here, so the walks of rigid particles, like those
+// of deformable ones, need not visit their own body (kernels/common/fluid_physics.hpp,
+// takes_own_body_at_rest); the reference sums a rigid body's share live.
+inline bool has_own_rest_number_density(BodyKind kind) {
+  return kind == BodyKind::deformable || kind == BodyKind::rigid;
+}
 
 inline bool is_deformable(const ParticleSetup& setup, std::size_t i) {
   return setup.bodies[setup.body[i]].kind == BodyKind::deformable;

@@ -112,6 +112,7 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   EXPECT_EQ(bytes_of(listed, "cell_start"), (cells + 1) * 4);
   EXPECT_EQ(bytes_of(listed, "elastic_force"), n * 16);
   EXPECT_EQ(bytes_of(listed, "own_rest_number_density"), n * 4);
+  EXPECT_EQ(bytes_of(listed, "cell_body"), (cells + 1) * 2);
   EXPECT_EQ(bytes_of(listed, "rotation"), deformables * sizeof(kernels::Quat));
   EXPECT_EQ(bytes_of(listed, "bond_count"), deformables * 4);
   EXPECT_EQ(bytes_of(listed, "bond_neighbour"), scene.bond_neighbour.size() * 4);
@@ -126,8 +127,10 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
 }
 
 // The count changes exactly by the arrays a scene adds: the same scene without its deformable
-// data loses the deformable arrays' bytes, summed here by hand from their element types.
-TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
+// data loses the deformable arrays' bytes, summed here by hand from their element types; without
+// its own-body densities at rest (a scene of neither rigid nor deformable bodies), it loses those
+// and the cells' bodies (CellRanges::cell_body).
+TEST_F(DeviceArraysTest, DeformableAndRestDensityArraysAddExactlyTheirBytes) {
   FloatScene without = scene;
   without.elastic_bodies.clear();
   without.deformable_body.clear();
@@ -135,12 +138,10 @@ TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
   without.bond_neighbour.clear();
   without.rest.clear();
   without.correction.clear();
-  without.own_rest_number_density.clear();
   const std::size_t n = setup.size();
   const std::size_t d = scene.deformable_body.size();
   const std::size_t deformable_bytes =
       n * sizeof(kernels::Vec4) +                                           // elastic_force
-      n * sizeof(float) +                                                   // own_rest_number_density
       scene.elastic_bodies.size() * sizeof(kernels::ElasticParameters) +    // elastic_bodies
       d * (sizeof(std::uint32_t) + sizeof(kernels::Vec4) + sizeof(kernels::Quat)) + // deformable_body, rest, rotation
       d * 3 * sizeof(kernels::Mat3) +                                       // correction, corrected_stress_action, deformation
@@ -149,6 +150,12 @@ TEST_F(DeviceArraysTest, DeformableArraysAddExactlyTheirBytes) {
   EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kGridBlocks, kTeamLanes).total_bytes -
                 kernels::device_array_sizes(without, chunks, kGridBlocks, kTeamLanes).total_bytes,
             deformable_bytes);
+  FloatScene without_rest_densities = without;
+  without_rest_densities.own_rest_number_density.clear();
+  const std::size_t cell_table = std::size_t{scene.grid.cell_count()} + 1;
+  EXPECT_EQ(kernels::device_array_sizes(without, chunks, kGridBlocks, kTeamLanes).total_bytes -
+                kernels::device_array_sizes(without_rest_densities, chunks, kGridBlocks, kTeamLanes).total_bytes,
+            n * sizeof(float) + cell_table * sizeof(std::uint16_t));
 }
 
 // Only a team keeps neighbour lists: one lane per particle (large scenes) spends no bytes on them,

@@ -1,10 +1,12 @@
 // The grid walk (kernels/common/cell_grid.hpp, CellRanges::for_each_candidate) that every
 // neighbour sum goes through: for a team of any size, its lanes together visit each particle of the
 // 27 cells around a point exactly once, each lane in the strided order that fixes a GPU sum's bits
-// (candidates k, k + lanes, ... of each contiguous range). The expectation is built by brute force
-// over all particles, cell by cell, not through the cell table. The particles are clustered so
-// ranges run from empty to many times a team's width, in a grid small enough to wrap.
+// (candidates k, k + lanes, ... of each contiguous range); a walk that leaves out a body's rows
+// (CellRanges::cell_body) skips exactly the ranges that hold nothing else. The expectation is built
+// by brute force over all particles, cell by cell, not through the cell table. The particles are
+// clustered so ranges run from empty to many times a team's width, in a grid small enough to wrap.
 #include "common/cell_grid.hpp"
+#include "common/particle_views.hpp"
 #include "sorted_particles.hpp"
 
 #include <gtest/gtest.h>
@@ -135,6 +137,77 @@ TEST(GridWalk, TheWalkWithinARadiusVisitsTheNearCandidatesInTheWalksOrder) {
   }
   EXPECT_GT(near_beyond_a_mask, 0u);
   EXPECT_GT(candidates_left_out, 0u);
+}
+
+// A cell's entry names the body its particles share, else marks it mixed; so does a body whose
+// index does not fit the entry's 16 bits, which must not alias another body.
+TEST(CellBody, NamesTheBodyAllOfACellsParticlesShareElseMarksTheCellMixed) {
+  const auto entry = [](const std::vector<std::uint32_t>& bodies) {
+    return kernels::cell_body_code(static_cast<std::uint32_t>(bodies.size()),
+                                   [&](std::uint32_t k) { return bodies[k]; });
+  };
+  EXPECT_EQ(entry({5}), 5u);
+  EXPECT_EQ(entry({7, 7, 7}), 7u);
+  EXPECT_EQ(entry({7, 7, 3}), kernels::kMixedCell);
+  EXPECT_EQ(entry({3, 7, 7}), kernels::kMixedCell);
+  EXPECT_EQ(entry({0xfffeu, 0xfffeu}), 0xfffeu);
+  EXPECT_EQ(entry({0xffffu}), kernels::kMixedCell);
+  EXPECT_EQ(entry({0x10007u, 0x10007u}), kernels::kMixedCell);
+}
+
+// The clustered particles as three bodies: body 1 left of x = 0.5 m, body 2 right of it, every
+// 13th particle body 3; the cells' entries as the GPU's grid writes them, empty cells' set to
+// kMixedCell, as a stale entry may be.
+SortedParticles three_bodies(std::mt19937_64& random) {
+  SortedParticles sorted = clustered_particles(random);
+  for (std::size_t s = 0; s < sorted.position.size(); ++s) {
+    const std::uint32_t body = s % 13 == 0 ? 3u : sorted.position[s].x < 0.5f ? 1u : 2u;
+    sorted.position[s].w = kernels::index_as_float_bits(body);
+  }
+  sorted.note_cell_bodies(kernels::kMixedCell);
+  return sorted;
+}
+
+// A walk that leaves out a body visits, lane by lane, what a full walk would over every range of
+// expected_ranges but those whose particles all belong to that body.
+TEST(GridWalk, LeavesOutTheRowsThatHoldNothingButTheBodyLeftOut) {
+  std::mt19937_64 random(20261128);
+  const SortedParticles sorted = three_bodies(random);
+  const kernels::CellRanges grid = sorted.grid();
+  const std::vector<Vec3> points = query_points(sorted, random);
+  std::size_t rows_left_out = 0, rows_kept = 0;
+  for (std::size_t q = 0; q < points.size(); ++q) {
+    SCOPED_TRACE(::testing::Message() << "query " << q);
+    const Vec3 x = points[q];
+    for (const std::uint32_t left_out : {1u, 2u, 3u, kernels::kNoBody}) {
+      SCOPED_TRACE(::testing::Message() << "body left out " << left_out);
+      std::vector<std::vector<std::uint32_t>> kept;
+      for (const std::vector<std::uint32_t>& range : expected_ranges(sorted, x)) {
+        const bool only_left_out = std::all_of(range.begin(), range.end(), [&](std::uint32_t t) {
+          return kernels::body_of(sorted.position[t]) == left_out;
+        });
+        if (range.empty()) continue;
+        if (only_left_out) {
+          ++rows_left_out;
+        } else {
+          kept.push_back(range);
+          if (left_out != kernels::kNoBody) ++rows_kept;
+        }
+      }
+      for (const std::uint32_t lanes : {1u, 3u, 8u}) {
+        for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+          std::vector<std::uint32_t> visits, expected;
+          grid.for_each_candidate(x, lane, lanes, [&](std::uint32_t t) { visits.push_back(t); }, left_out);
+          for (const std::vector<std::uint32_t>& range : kept) {
+            for (std::size_t k = lane; k < range.size(); k += lanes) expected.push_back(range[k]);
+          }
+          ASSERT_EQ(visits, expected) << "lane " << lane << " of " << lanes;
+        }
+      }
+    }
+  }
+  EXPECT_GT(rows_left_out, 100u);
+  EXPECT_GT(rows_kept, 100u);
 }
 
 }  // namespace

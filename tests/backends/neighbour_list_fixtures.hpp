@@ -8,6 +8,7 @@
 #include "sorted_particles.hpp"
 
 #include <cstdint>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -25,9 +26,9 @@ constexpr std::uint32_t kWallBody = 0, kFluidBody = 1, kDeformableBody = 2;
 class JitteredLattice {
  public:
   // Spacing 0.02 m times `compression` (1: none); cells of cell_size_over_h times h; the block
-  // (kDeformableBody) of kind block_kind.
+  // (kDeformableBody) of kind block_kind; 2^grid_bits cells per axis.
   JitteredLattice(std::mt19937_64& random, float compression, float cell_size_over_h = 1.0f,
-                  std::uint32_t block_kind = kernels::kDeformable) {
+                  std::uint32_t block_kind = kernels::kDeformable, std::uint32_t grid_bits = 2) {
     const float dx = 0.02f * compression;
     std::uniform_real_distribution<float> jitter(-0.1f * dx, 0.1f * dx);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
@@ -45,6 +46,7 @@ class JitteredLattice {
     }
     kernels::GridShape shape;
     shape.inverse_cell_size = 1.0f / (cell_size_over_h * 2.0f * dx);
+    shape.bits_x = shape.bits_y = shape.bits_z = grid_bits;
     sorted_ = sort_into_grid(particles, shape);
     for (std::size_t s = 0; s < particles.size(); ++s) {
       velocity_.push_back(Vec4{unit(random), unit(random), unit(random), 0.0f});
@@ -57,6 +59,10 @@ class JitteredLattice {
     step_.inverse_gradient_consistency = 1.0f;
     step_.particle_count = static_cast<std::uint32_t>(particles.size());
   }
+
+  // Has the walks of the block's particles leave out the rows that hold only the block
+  // (CellRanges::cell_body); empty cells' entries are kMixedCell, as a stale entry may be.
+  void leave_out_own_rows() { sorted_.note_cell_bodies(kernels::kMixedCell); }
 
   // Moves sorted particle s by `by`, keeping the cell order and the grid (as a step that keeps the
   // lists does).
@@ -98,6 +104,10 @@ inline bool own_deformable_body(const kernels::SortedView& v, std::uint32_t s, s
   const std::uint32_t body_s = kernels::body_of(v.position[s]);
   return body_s == kDeformableBody && kernels::body_of(v.position[t]) == body_s;
 }
+
+// Whether two sums have the same bits.
+inline bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+inline bool same_bits(Vec3 a, Vec3 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
 
 inline float compressed_by_up_to_4_percent(std::mt19937_64& random) {
   return std::uniform_real_distribution<float>(0.96f, 1.0f)(random);

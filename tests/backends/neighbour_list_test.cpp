@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <random>
 #include <vector>
 
@@ -48,8 +47,6 @@ std::vector<std::uint32_t> walk_within_support(const kernels::SortedView& v, std
   return out;
 }
 
-bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-bool same_bits(Vec3 a, Vec3 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
 
 TEST(NeighbourLists, HoldExactlyTheParticlesWithinTheSupportInTheWalksOrder) {
   std::mt19937_64 random(20110319);

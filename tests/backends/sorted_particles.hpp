@@ -2,6 +2,7 @@
 // Particles sorted into the kernels' grid as the cpu backend sorts them (a stable counting sort by
 // cell key, cell_start its prefix sum), for tests of the per-particle functions on the host.
 #include "common/cell_grid.hpp"
+#include "common/particle_views.hpp"
 #include "common/vec_math.hpp"
 
 #include <cstdint>
@@ -14,12 +15,28 @@ struct SortedParticles {
   kernels::GridShape shape;
   std::vector<std::uint32_t> cell_start;  // shape.cell_count() + 1 entries
   std::vector<kernels::Vec4> position;    // cell order; xyz [m], w = body index bits
+  std::vector<std::uint16_t> cell_body;   // empty, or CellRanges::cell_body (note_cell_bodies)
 
-  kernels::CellRanges grid() const { return kernels::CellRanges{shape, cell_start.data()}; }
+  kernels::CellRanges grid() const {
+    return kernels::CellRanges{shape, cell_start.data(), cell_body.empty() ? nullptr : cell_body.data()};
+  }
+
+  // Fills cell_body as the GPU's grid does, so that the walks of rigid and deformable particles
+  // leave out their own body's rows; empty cells get `stale`, which no walk may read.
+  void note_cell_bodies(std::uint16_t stale) {
+    cell_body.assign(shape.cell_count(), stale);
+    for (std::uint32_t k = 0; k < shape.cell_count(); ++k) {
+      const std::uint32_t first = cell_start[k];
+      if (cell_start[k + 1] == first) continue;
+      cell_body[k] = kernels::cell_body_code(cell_start[k + 1] - first, [&](std::uint32_t m) {
+        return kernels::index_from_float_bits(position[first + m].w);
+      });
+    }
+  }
 };
 
 inline SortedParticles sort_into_grid(const std::vector<kernels::Vec4>& particles, kernels::GridShape shape) {
-  SortedParticles sorted{shape, std::vector<std::uint32_t>(std::size_t{shape.cell_count()} + 1, 0u), {}};
+  SortedParticles sorted{shape, std::vector<std::uint32_t>(std::size_t{shape.cell_count()} + 1, 0u), {}, {}};
   std::vector<std::uint32_t> key(particles.size());
   for (std::size_t p = 0; p < particles.size(); ++p) key[p] = shape.key_of(kernels::xyz(particles[p]));
   for (const std::uint32_t k : key) ++sorted.cell_start[k + 1];
