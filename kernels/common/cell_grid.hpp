@@ -32,12 +32,6 @@ struct GridShape {
     return (static_cast<std::uint32_t>(cx) & mx) | ((static_cast<std::uint32_t>(cy) & my) << bits_x) |
            ((static_cast<std::uint32_t>(cz) & mz) << (bits_x + bits_y));
   }
-  // The coordinates, each within its axis' period, of the cell of key k.
-  MSSPH_HD void cell_of_key(std::uint32_t k, int& cx, int& cy, int& cz) const {
-    cx = static_cast<int>(k & ((1u << bits_x) - 1u));
-    cy = static_cast<int>((k >> bits_x) & ((1u << bits_y) - 1u));
-    cz = static_cast<int>(k >> (bits_x + bits_y));
-  }
   MSSPH_HD std::uint32_t key_of(Vec3 x) const {
     int cx, cy, cz;
     cell_of(x, cx, cy, cz);
@@ -83,31 +77,6 @@ struct CellRanges {
   // entries are stale): lets a walk leave out the rows of cells that hold nothing but one body.
   // Null where no walk does (scenes without rigid or deformable bodies, the host).
   const std::uint16_t* cell_body = nullptr;
-  // For each cell, whether it is not empty and the 27 cells around it hold nothing but its body
-  // (surrounded): a walk from it that leaves that body out has no row to visit, which it learns
-  // from two entries instead of nine rows' entries. Null with cell_body.
-  const std::uint8_t* cell_surrounded = nullptr;
-
-  // Calls visit_cells(first, last) for each run of consecutive keys first..last that the 27 cells
-  // around cell (cx, cy, cz) make: one per row of three cells along x, or one per cell where the row
-  // wraps around the grid's x period.
-  template <class VisitCells>
-  MSSPH_HD void for_each_row(int cx, int cy, int cz, VisitCells&& visit_cells) const {
-    for (int dz = -1; dz <= 1; ++dz) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        const std::uint32_t first = shape.key(cx - 1, cy + dy, cz + dz);
-        const std::uint32_t last = shape.key(cx + 1, cy + dy, cz + dz);
-        if (last == first + 2) {
-          visit_cells(first, last);
-        } else {  // the row wraps: three separate cells
-          for (int dx = -1; dx <= 1; ++dx) {
-            const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
-            visit_cells(k, k);
-          }
-        }
-      }
-    }
-  }
 
   // Whether cells first to last (consecutive keys) hold no particle of a body other than `body`;
   // false where cell_body is null or body is kNoBody.
@@ -119,37 +88,30 @@ struct CellRanges {
     return true;
   }
 
-  // The cell_surrounded entry of non-empty cell k, from cell_body: whether its particles share a
-  // body and the 27 cells around it hold no particle of another.
-  MSSPH_HD bool surrounded(std::uint32_t k) const {
-    const std::uint32_t body = cell_body[k];
-    if (body == kMixedCell) return false;
-    int cx, cy, cz;
-    shape.cell_of_key(k, cx, cy, cz);
-    bool only = true;
-    for_each_row(cx, cy, cz, [&](std::uint32_t first, std::uint32_t last) {
-      only = only && cells_hold_only(first, last, body);
-    });
-    return only;
-  }
-
   // Calls visit_range(begin, end) for each contiguous range [begin, end) of sorted particles that
-  // the 27 cells around x make, one per run of for_each_row. A row (or wrapped cell) that holds
-  // nothing but particles of body `left_out` is not visited: the density walks of rigid and
-  // deformable particles leave out their own body's, whose pairs add nothing to their sums
-  // (fluid_physics.hpp, rows_left_out), and which make up every row inside a large block: a walk
-  // from a cell surrounded by body `left_out` visits none.
+  // the 27 cells around x make: one per row of three cells along x, or one per cell where the row
+  // wraps around the grid's x period. A row (or wrapped cell) that holds nothing but particles of
+  // body `left_out` is not visited: the density walks of rigid and deformable particles leave out
+  // their own body's, whose pairs add nothing to their sums (fluid_physics.hpp, rows_left_out),
+  // and which make up every row inside a large block.
   template <class VisitRange>
   MSSPH_HD void for_each_range(Vec3 x, VisitRange&& visit_range, std::uint32_t left_out = kNoBody) const {
     int cx, cy, cz;
     shape.cell_of(x, cx, cy, cz);
-    if (left_out != kNoBody && cell_surrounded != nullptr) {
-      const std::uint32_t k = shape.key(cx, cy, cz);
-      if (cell_surrounded[k] != 0 && cell_body[k] == left_out) return;
+    for (int dz = -1; dz <= 1; ++dz) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        const std::uint32_t first = shape.key(cx - 1, cy + dy, cz + dz);
+        const std::uint32_t last = shape.key(cx + 1, cy + dy, cz + dz);
+        if (last == first + 2) {
+          if (!cells_hold_only(first, last, left_out)) visit_range(cell_start[first], cell_start[last + 1]);
+        } else {  // the row wraps: three separate cells
+          for (int dx = -1; dx <= 1; ++dx) {
+            const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
+            if (!cells_hold_only(k, k, left_out)) visit_range(cell_start[k], cell_start[k + 1]);
+          }
+        }
+      }
     }
-    for_each_row(cx, cy, cz, [&](std::uint32_t first, std::uint32_t last) {
-      if (!cells_hold_only(first, last, left_out)) visit_range(cell_start[first], cell_start[last + 1]);
-    });
   }
 
   // Calls visit(s) for every sorted particle s in the 27 cells around x (but the rows for_each_range
@@ -169,13 +131,13 @@ struct CellRanges {
   }
 
   // Calls visit(s) for every sorted particle s in the 27 cells around x that lies closer to x than
-  // sqrt(radius2) (`position`: the sorted positions), in for_each_candidate's order. Each range is
-  // taken 32 candidates at a time: their distances first, into a bit mask of the near ones, then a
-  // visit of each near one. One lane per particle (large GPU scenes) is why: the lanes of a warp find
-  // their ~30 neighbours among ~200 candidates each at other places, so a visit inside the walk
-  // has the whole warp step through the pair arithmetic at nearly every candidate, some lane having
-  // a neighbour there; the mask's visits run only as often as the lane with the most near ones in
-  // the segment. The visits see exactly the candidates a filter on the same r^2 would pass.
+  // sqrt(radius2) (`position`: the sorted positions), in for_each_candidate's order. Each range is taken 32 candidates at a time: their distances
+  // first, into a bit mask of the near ones, then a visit of each near one. One lane per particle
+  // (large GPU scenes) is why: the lanes of a warp find their ~30 neighbours among ~200 candidates
+  // each at other places, so a visit inside the walk has the whole warp step through the pair
+  // arithmetic at nearly every candidate, some lane having a neighbour there; the mask's visits run
+  // only as often as the lane with the most near ones in the segment. The visits see exactly the
+  // candidates a filter on the same r^2 would pass.
   template <class Visit>
   MSSPH_HD void for_each_candidate_within(Vec3 x, float radius2, const Vec4* position, Visit&& visit) const {
     for_each_range(x, [&](std::uint32_t begin, std::uint32_t end) {

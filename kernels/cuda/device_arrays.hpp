@@ -42,9 +42,7 @@ struct DeviceArrays {
   Array<std::uint8_t> fixed;
   // The neighbour grid and the cell-ordered copies.
   Array<std::uint32_t> keys, unordered_id, sorted_id, cell_count, cell_start;
-  // CellRanges::cell_body and cell_surrounded; empty without rigid or deformable bodies.
-  Array<std::uint16_t> cell_body;
-  Array<std::uint8_t> cell_surrounded;
+  Array<std::uint16_t> cell_body;  // CellRanges::cell_body; empty without rigid or deformable bodies
   Array<Vec4> sorted_position, sorted_velocity;
   Array<VolumePressure> volume_pressure;
   Array<std::uint8_t> near_other_body;  // sorted, from the density pass: may_feel_forces' second argument
@@ -130,11 +128,10 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   visit("cell_count", a.cell_count, Filled<std::uint32_t>{cell_table, 0u});
   visit("cell_start", a.cell_start, Uninitialised{cell_table});
   // Where particles take their own body at rest, their walks leave out its rows (CellRanges): each
-  // rebuild writes the cells' entries of the non-empty cells, the only ones read.
+  // rebuild writes the entries of the non-empty cells, the only ones read.
   visit("own_rest_number_density", a.own_rest_number_density, copy_of(scene.own_rest_number_density));
   const bool rows_left_out = !scene.own_rest_number_density.empty();
   visit("cell_body", a.cell_body, Uninitialised{rows_left_out ? cell_table : 0});
-  visit("cell_surrounded", a.cell_surrounded, Uninitialised{rows_left_out ? cell_table : 0});
   visit("sorted_position", a.sorted_position, Uninitialised{n});
   visit("sorted_velocity", a.sorted_velocity, Uninitialised{n});
   visit("volume_pressure", a.volume_pressure, Filled<VolumePressure>{n, VolumePressure{0, 0}});

@@ -59,12 +59,11 @@ DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& ch
   return state;
 }
 
-// cell_body, cell_surrounded and own_rest_number_density are empty, so null, without rigid or
-// deformable bodies.
+// cell_body and own_rest_number_density are empty, so null, without rigid or deformable bodies.
 SortedView sorted_view(const FloatScene& scene, const DeviceState& state) {
   return SortedView{scene.step,
                     state.bodies.data(),
-                    CellRanges{scene.grid, state.cell_start.data(), state.cell_body.data(), state.cell_surrounded.data()},
+                    CellRanges{scene.grid, state.cell_start.data(), state.cell_body.data()},
                     state.sorted_position.data(),
                     state.sorted_velocity.data(),
                     state.sorted_id.data(),

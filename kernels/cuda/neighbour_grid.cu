@@ -26,8 +26,7 @@ struct GridArrays {
   std::uint32_t* keys;
   std::uint32_t* cell_count;
   std::uint32_t* cell_start;
-  std::uint16_t* cell_body;    // null where no walk leaves rows out (CellRanges), and so is:
-  std::uint8_t* cell_surrounded;
+  std::uint16_t* cell_body;    // null where no walk leaves rows out (CellRanges)
   std::uint32_t* unordered_id;
   std::uint32_t* block_total;  // one per block of the kernel (scan_cell_counts)
   std::uint32_t* sorted_id;
@@ -94,15 +93,6 @@ __device__ bool lists_expired(const GridArrays& a, const ListSkin& skin, cg::gri
   return a.refresh->moved_far != 0 || a.refresh->requested != 0;
 }
 
-// Stage 5 below, once every cell's body is noted: cell_surrounded, for every cell.
-__device__ void note_surrounded_cells(const GridArrays& a, cg::grid_group grid) {
-  grid.sync();
-  const CellRanges cells{a.grid, a.cell_start, a.cell_body};
-  for_each_grid_item(a.grid.cell_count(), [&](std::uint32_t k) {
-    a.cell_surrounded[k] = a.cell_start[k] != a.cell_start[k + 1] && cells.surrounded(k) ? 1 : 0;
-  });
-}
-
 // The neighbour grid by a counting sort, stable like a sort of (key, index) pairs (the cpu
 // backend's order), so every run lays the particles out alike. One cooperative kernel whose
 // stages wait for each other at grid-wide barriers:
@@ -114,9 +104,7 @@ __device__ void note_surrounded_cells(const GridArrays& a, cg::grid_group grid) 
 // 4. each particle counts the particles of its cell with a smaller index in those slots: its rank
 //    in the canonical order within the cell, so its place in cell order, where it copies itself;
 //    the first of each cell also notes whether all of the cell's particles share its body
-//    (CellRanges::cell_body);
-// 5. where walks leave rows out, each cell notes whether it is not empty and the 27 cells around
-//    it hold nothing but its body (CellRanges::cell_surrounded).
+//    (CellRanges::cell_body).
 // With lists (`check`), the kernel first checks them (lists_expired) and, while they hold, ends
 // there: one launch per step. (The check as its own kernel followed by a conditional graph node
 // around the rebuild's five kernels took 6.9 us more per step on an H100; results/performance.md.)
@@ -158,7 +146,6 @@ __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check, 
     place_in_cell_order(s, i, a.position, a.velocity, a.body, a.sorted_position, a.sorted_velocity);
     if (a.list_origin) a.list_origin[s] = a.sorted_position[s];
   });
-  if (a.cell_body) note_surrounded_cells(a, grid);
 }
 
 GridArrays grid_arrays(DeviceState& state, const GridShape& grid) {
@@ -171,7 +158,6 @@ GridArrays grid_arrays(DeviceState& state, const GridShape& grid) {
           state.cell_count.data(),
           state.cell_start.data(),
           state.cell_body.data(),
-          state.cell_surrounded.data(),
           state.unordered_id.data(),
           state.block_total.data(),
           state.sorted_id.data(),

@@ -113,7 +113,6 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   EXPECT_EQ(bytes_of(listed, "elastic_force"), n * 16);
   EXPECT_EQ(bytes_of(listed, "own_rest_number_density"), n * 4);
   EXPECT_EQ(bytes_of(listed, "cell_body"), (cells + 1) * 2);
-  EXPECT_EQ(bytes_of(listed, "cell_surrounded"), cells + 1);
   EXPECT_EQ(bytes_of(listed, "rotation"), deformables * sizeof(kernels::Quat));
   EXPECT_EQ(bytes_of(listed, "bond_count"), deformables * 4);
   EXPECT_EQ(bytes_of(listed, "bond_neighbour"), scene.bond_neighbour.size() * 4);
@@ -130,7 +129,7 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
 // The count changes exactly by the arrays a scene adds: the same scene without its deformable
 // data loses the deformable arrays' bytes, summed here by hand from their element types; without
 // its own-body densities at rest (a scene of neither rigid nor deformable bodies), it loses those
-// and the cells' bodies and surrounded entries (CellRanges).
+// and the cells' bodies (CellRanges::cell_body).
 TEST_F(DeviceArraysTest, DeformableAndRestDensityArraysAddExactlyTheirBytes) {
   FloatScene without = scene;
   without.elastic_bodies.clear();
@@ -156,7 +155,7 @@ TEST_F(DeviceArraysTest, DeformableAndRestDensityArraysAddExactlyTheirBytes) {
   const std::size_t cell_table = std::size_t{scene.grid.cell_count()} + 1;
   EXPECT_EQ(kernels::device_array_sizes(without, chunks, kGridBlocks, kTeamLanes).total_bytes -
                 kernels::device_array_sizes(without_rest_densities, chunks, kGridBlocks, kTeamLanes).total_bytes,
-            n * sizeof(float) + cell_table * (sizeof(std::uint16_t) + sizeof(std::uint8_t)));
+            n * sizeof(float) + cell_table * sizeof(std::uint16_t));
 }
 
 // Only a team keeps neighbour lists: one lane per particle (large scenes) spends no bytes on them,

@@ -15,21 +15,16 @@ struct SortedParticles {
   kernels::GridShape shape;
   std::vector<std::uint32_t> cell_start;  // shape.cell_count() + 1 entries
   std::vector<kernels::Vec4> position;    // cell order; xyz [m], w = body index bits
-  // Empty, or CellRanges::cell_body and cell_surrounded (note_cell_bodies).
-  std::vector<std::uint16_t> cell_body;
-  std::vector<std::uint8_t> cell_surrounded;
+  std::vector<std::uint16_t> cell_body;   // empty, or CellRanges::cell_body (note_cell_bodies)
 
   kernels::CellRanges grid() const {
-    return kernels::CellRanges{shape, cell_start.data(), cell_body.empty() ? nullptr : cell_body.data(),
-                               cell_surrounded.empty() ? nullptr : cell_surrounded.data()};
+    return kernels::CellRanges{shape, cell_start.data(), cell_body.empty() ? nullptr : cell_body.data()};
   }
 
-  // Fills cell_body and cell_surrounded as the GPU's grid does, so that the walks of rigid and
-  // deformable particles leave out their own body's rows; empty cells' cell_body entries get
-  // `stale`, which no walk may read.
+  // Fills cell_body as the GPU's grid does, so that the walks of rigid and deformable particles
+  // leave out their own body's rows; empty cells get `stale`, which no walk may read.
   void note_cell_bodies(std::uint16_t stale) {
     cell_body.assign(shape.cell_count(), stale);
-    cell_surrounded.assign(shape.cell_count(), 0);
     for (std::uint32_t k = 0; k < shape.cell_count(); ++k) {
       const std::uint32_t first = cell_start[k];
       if (cell_start[k + 1] == first) continue;
@@ -37,15 +32,11 @@ struct SortedParticles {
         return kernels::index_from_float_bits(position[first + m].w);
       });
     }
-    const kernels::CellRanges bodies_only{shape, cell_start.data(), cell_body.data()};
-    for (std::uint32_t k = 0; k < shape.cell_count(); ++k) {
-      if (cell_start[k + 1] != cell_start[k]) cell_surrounded[k] = bodies_only.surrounded(k) ? 1 : 0;
-    }
   }
 };
 
 inline SortedParticles sort_into_grid(const std::vector<kernels::Vec4>& particles, kernels::GridShape shape) {
-  SortedParticles sorted{shape, std::vector<std::uint32_t>(std::size_t{shape.cell_count()} + 1, 0u), {}, {}, {}};
+  SortedParticles sorted{shape, std::vector<std::uint32_t>(std::size_t{shape.cell_count()} + 1, 0u), {}, {}};
   std::vector<std::uint32_t> key(particles.size());
   for (std::size_t p = 0; p < particles.size(); ++p) key[p] = shape.key_of(kernels::xyz(particles[p]));
   for (const std::uint32_t k : key) ++sorted.cell_start[k + 1];
