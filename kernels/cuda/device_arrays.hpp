@@ -127,9 +127,9 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   // Zero at the start; the slot kernel takes every count back to zero for the next step.
   visit("cell_count", a.cell_count, Filled<std::uint32_t>{cell_table, 0u});
   visit("cell_start", a.cell_start, Uninitialised{cell_table});
+  visit("own_rest_number_density", a.own_rest_number_density, copy_of(scene.own_rest_number_density));
   // Where particles take their own body at rest, their walks leave out its rows (CellRanges): each
   // rebuild writes the entries of the non-empty cells, the only ones read.
-  visit("own_rest_number_density", a.own_rest_number_density, copy_of(scene.own_rest_number_density));
   const bool rows_left_out = !scene.own_rest_number_density.empty();
   visit("cell_body", a.cell_body, Uninitialised{rows_left_out ? cell_table : 0});
   visit("sorted_position", a.sorted_position, Uninitialised{n});
