@@ -131,13 +131,13 @@ struct CellRanges {
   }
 
   // Calls visit(s) for every sorted particle s in the 27 cells around x that lies closer to x than
-  // sqrt(radius2) (`position`: the sorted positions), in for_each_candidate's order. Each range is taken 32 candidates at a time: their distances
-  // first, into a bit mask of the near ones, then a visit of each near one. One lane per particle
-  // (large GPU scenes) is why: the lanes of a warp find their ~30 neighbours among ~200 candidates
-  // each at other places, so a visit inside the walk has the whole warp step through the pair
-  // arithmetic at nearly every candidate, some lane having a neighbour there; the mask's visits run
-  // only as often as the lane with the most near ones in the segment. The visits see exactly the
-  // candidates a filter on the same r^2 would pass.
+  // sqrt(radius2) (`position`: the sorted positions), in for_each_candidate's order. Each range is
+  // taken 32 candidates at a time: their distances first, into a bit mask of the near ones, then a
+  // visit of each near one. One lane per particle (large GPU scenes) is why: the lanes of a warp find
+  // their ~30 neighbours among ~200 candidates each at other places, so a visit inside the walk
+  // has the whole warp step through the pair arithmetic at nearly every candidate, some lane having
+  // a neighbour there; the mask's visits run only as often as the lane with the most near ones in
+  // the segment. The visits see exactly the candidates a filter on the same r^2 would pass.
   template <class Visit>
   MSSPH_HD void for_each_candidate_within(Vec3 x, float radius2, const Vec4* position, Visit&& visit) const {
     for_each_range(x, [&](std::uint32_t begin, std::uint32_t end) {

@@ -47,7 +47,6 @@ std::vector<std::uint32_t> walk_within_support(const kernels::SortedView& v, std
   return out;
 }
 
-
 TEST(NeighbourLists, HoldExactlyTheParticlesWithinTheSupportInTheWalksOrder) {
   std::mt19937_64 random(20110319);
   const JitteredLattice lattice(random, compressed_by_up_to_4_percent(random));
