@@ -9,7 +9,6 @@
 #include "vec_math.hpp"
 
 #include <cstdint>
-#include <limits>
 
 namespace mssph::kernels {
 
@@ -20,28 +19,18 @@ struct GridShape {
   MSSPH_HD std::uint32_t cell_count() const { return 1u << (bits_x + bits_y + bits_z); }
   MSSPH_HD std::uint32_t total_bits() const { return bits_x + bits_y + bits_z; }
 
-  // A coordinate in cells; clamped far beyond any scene so that its cell is always defined (a
-  // runaway particle is caught by the blow-up check, not here).
-  MSSPH_HD float in_cells(float coordinate) const {
-    const float limit = 1.0e9f;
-    return std::fmin(std::fmax(coordinate * inverse_cell_size, -limit), limit);
-  }
-  // Integer cell coordinates of a position.
+  // Integer cell coordinates of a position; clamped far beyond any scene so the conversion is
+  // always defined (a runaway particle is caught by the blow-up check, not here).
   MSSPH_HD void cell_of(Vec3 x, int& cx, int& cy, int& cz) const {
-    cx = static_cast<int>(std::floor(in_cells(x.x)));
-    cy = static_cast<int>(std::floor(in_cells(x.y)));
-    cz = static_cast<int>(std::floor(in_cells(x.z)));
+    const float limit = 1.0e9f;
+    cx = static_cast<int>(std::floor(std::fmin(std::fmax(x.x * inverse_cell_size, -limit), limit)));
+    cy = static_cast<int>(std::floor(std::fmin(std::fmax(x.y * inverse_cell_size, -limit), limit)));
+    cz = static_cast<int>(std::floor(std::fmin(std::fmax(x.z * inverse_cell_size, -limit), limit)));
   }
   MSSPH_HD std::uint32_t key(int cx, int cy, int cz) const {
     const std::uint32_t mx = (1u << bits_x) - 1u, my = (1u << bits_y) - 1u, mz = (1u << bits_z) - 1u;
     return (static_cast<std::uint32_t>(cx) & mx) | ((static_cast<std::uint32_t>(cy) & my) << bits_x) |
            ((static_cast<std::uint32_t>(cz) & mz) << (bits_x + bits_y));
-  }
-  // radius2 [m^2] in cells^2, enlarged by 2^-16 (FaceGaps): a point whose squared gaps add up to
-  // this much lies farther than sqrt(radius2) also in the float distance of a candidate test, whose
-  // r^2 is within a few 2^-24 of exact.
-  MSSPH_HD float reach_in_cells2(float radius2) const {
-    return radius2 * inverse_cell_size * inverse_cell_size * (1.0f + 0x1p-16f);
   }
   MSSPH_HD std::uint32_t key_of(Vec3 x) const {
     int cx, cy, cz;
@@ -61,28 +50,6 @@ MSSPH_HD std::uint32_t lowest_set_bit(std::uint32_t bits) {
 
 // No body: a walk that leaves no cells out (CellRanges).
 inline constexpr std::uint32_t kNoBody = 0xffffffffu;
-// No radius: a walk that visits the whole 27 cells (CellRanges).
-inline constexpr float kWholeCells = std::numeric_limits<float>::infinity();
-
-// How far a point lies from the two faces of its cell along one axis, in cells, squared: lower
-// bounds on how far a candidate of the cell below (or above) can lie along that axis. A float
-// candidate test r^2 < radius^2 must fail for every candidate a walk leaves out on these bounds
-// (CellRanges::for_each_range), so they leave room for rounding: the point's and the candidate's
-// coordinates in cells are each within |u| 2^-24 of exact, the fraction and 1 - it within 2^-24;
-// the slack is four times that.
-struct FaceGaps {
-  float below2, above2;
-
-  // Toward the neighbouring cell at offset d (-1, 0 or 1): none within the point's own cell.
-  MSSPH_HD float toward(int d) const { return d < 0 ? below2 : d > 0 ? above2 : 0.0f; }
-};
-
-MSSPH_HD FaceGaps face_gaps(float u) {
-  const float fraction = u - std::floor(u);
-  const float slack = (std::fabs(u) + 2.0f) * 0x1p-21f;
-  const float below = std::fmax(fraction - slack, 0.0f), above = std::fmax(1.0f - fraction - slack, 0.0f);
-  return {below * below, above * above};
-}
 // A cell_body entry: the cell's particles belong to more than one body, or to one whose index
 // does not fit 16 bits.
 inline constexpr std::uint16_t kMixedCell = 0xffffu;
@@ -122,34 +89,23 @@ struct CellRanges {
   }
 
   // Calls visit_range(begin, end) for each contiguous range [begin, end) of sorted particles that
-  // the 27 cells around x make: one per row of cells along x, or one per cell where the row wraps
-  // around the grid's x period. A row (or wrapped cell) that holds nothing but particles of body
-  // `left_out` is not visited: the density walks of rigid and deformable particles leave out their
-  // own body's, whose pairs add nothing to their sums (fluid_physics.hpp, rows_left_out), and which
-  // make up every row inside a large block. A walk whose visitor takes only candidates closer to x
-  // than sqrt(radius2) leaves out what cannot hold one (FaceGaps): the rows of four corners whose
-  // nearest points lie beyond, and a row's first or last cell likewise; at radius h that is a
-  // quarter of the 27 cells' candidates. The ranges visited keep the whole walk's order.
+  // the 27 cells around x make: one per row of three cells along x, or one per cell where the row
+  // wraps around the grid's x period. A row (or wrapped cell) that holds nothing but particles of
+  // body `left_out` is not visited: the density walks of rigid and deformable particles leave out
+  // their own body's, whose pairs add nothing to their sums (fluid_physics.hpp, rows_left_out),
+  // and which make up every row inside a large block.
   template <class VisitRange>
-  MSSPH_HD void for_each_range(Vec3 x, VisitRange&& visit_range, std::uint32_t left_out = kNoBody,
-                               float radius2 = kWholeCells) const {
-    const float ux = shape.in_cells(x.x), uy = shape.in_cells(x.y), uz = shape.in_cells(x.z);
-    const int cx = static_cast<int>(std::floor(ux)), cy = static_cast<int>(std::floor(uy)),
-              cz = static_cast<int>(std::floor(uz));
-    const FaceGaps gx = face_gaps(ux), gy = face_gaps(uy), gz = face_gaps(uz);
-    const float reach2 = shape.reach_in_cells2(radius2);
+  MSSPH_HD void for_each_range(Vec3 x, VisitRange&& visit_range, std::uint32_t left_out = kNoBody) const {
+    int cx, cy, cz;
+    shape.cell_of(x, cx, cy, cz);
     for (int dz = -1; dz <= 1; ++dz) {
       for (int dy = -1; dy <= 1; ++dy) {
-        const float across2 = gy.toward(dy) + gz.toward(dz);
-        if (across2 >= reach2) continue;
-        const int lo = gx.toward(-1) < reach2 - across2 ? -1 : 0;
-        const int hi = gx.toward(1) < reach2 - across2 ? 1 : 0;
-        const std::uint32_t first = shape.key(cx + lo, cy + dy, cz + dz);
-        const std::uint32_t last = shape.key(cx + hi, cy + dy, cz + dz);
-        if (last - first == static_cast<std::uint32_t>(hi - lo)) {
+        const std::uint32_t first = shape.key(cx - 1, cy + dy, cz + dz);
+        const std::uint32_t last = shape.key(cx + 1, cy + dy, cz + dz);
+        if (last == first + 2) {
           if (!cells_hold_only(first, last, left_out)) visit_range(cell_start[first], cell_start[last + 1]);
-        } else {  // the row wraps: separate cells
-          for (int dx = lo; dx <= hi; ++dx) {
+        } else {  // the row wraps: three separate cells
+          for (int dx = -1; dx <= 1; ++dx) {
             const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
             if (!cells_hold_only(k, k, left_out)) visit_range(cell_start[k], cell_start[k + 1]);
           }
@@ -163,17 +119,15 @@ struct CellRanges {
   // k + 2 lanes, ... of each contiguous range. One lane alone (the host, large GPU scenes) visits
   // every candidate; a team of lanes splits the walk evenly, so a small scene keeps several
   // independent loads in flight per particle instead of one dependent walk of ~200 candidates.
-  // A team's walk is whole (radius2 left at kWholeCells): its lanes split each range by position,
-  // so a range cut shorter would move candidates between lanes.
   template <class Visit>
   MSSPH_HD void for_each_candidate(Vec3 x, std::uint32_t lane, std::uint32_t lanes, Visit&& visit,
-                                   std::uint32_t left_out = kNoBody, float radius2 = kWholeCells) const {
+                                   std::uint32_t left_out = kNoBody) const {
     for_each_range(
         x,
         [&](std::uint32_t begin, std::uint32_t end) {
           for (std::uint32_t s = begin + lane; s < end; s += lanes) visit(s);
         },
-        left_out, radius2);
+        left_out);
   }
 
   // Calls visit(s) for every sorted particle s in the 27 cells around x that lies closer to x than
@@ -186,19 +140,16 @@ struct CellRanges {
   // the segment. The visits see exactly the candidates a filter on the same r^2 would pass.
   template <class Visit>
   MSSPH_HD void for_each_candidate_within(Vec3 x, float radius2, const Vec4* position, Visit&& visit) const {
-    for_each_range(
-        x,
-        [&](std::uint32_t begin, std::uint32_t end) {
-          for (std::uint32_t segment = begin; segment < end; segment += 32) {
-            const std::uint32_t size = end - segment < 32 ? end - segment : 32;
-            std::uint32_t near = 0;
-            for (std::uint32_t k = 0; k < size; ++k) {
-              if (squared_norm(x - xyz(position[segment + k])) < radius2) near |= 1u << k;
-            }
-            for (; near != 0; near &= near - 1) visit(segment + lowest_set_bit(near));
-          }
-        },
-        kNoBody, radius2);
+    for_each_range(x, [&](std::uint32_t begin, std::uint32_t end) {
+      for (std::uint32_t segment = begin; segment < end; segment += 32) {
+        const std::uint32_t size = end - segment < 32 ? end - segment : 32;
+        std::uint32_t near = 0;
+        for (std::uint32_t k = 0; k < size; ++k) {
+          if (squared_norm(x - xyz(position[segment + k])) < radius2) near |= 1u << k;
+        }
+        for (; near != 0; near &= near - 1) visit(segment + lowest_set_bit(near));
+      }
+    });
   }
 
   // Calls visit(s) for every sorted particle s in the 27 cells around x.

@@ -34,8 +34,7 @@ struct DensitySum {
   float delta;  // number density sum_j W_spiky(|x_i - x_j|) [1/m^3]
   // A rigid or deformable particle's squared distance to the nearest candidate of another body
   // [m^2], +infinity without one: whether one lies within h decides whether its force sums can be
-  // anything but zero (may_feel_forces), and only that is read (a walk that leaves out the cells
-  // beyond h may miss a nearer candidate beyond h). A fluid or boundary particle's walk does not look, as
+  // anything but zero (may_feel_forces). A fluid or boundary particle's walk does not look, as
   // its force pass never skips: 0.
   float nearest_other_body2;
 };
@@ -102,23 +101,18 @@ MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candi
 }
 
 // Particle s's grid walk as a candidate source: lane `lane` of `lanes`' share of the 27 cells
-// around it, less the rows of its own body where it leaves them out (rows_left_out), and less the
-// cells that cannot hold a candidate within sqrt(radius2) of it (CellRanges::for_each_range).
-MSSPH_HD auto grid_share(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
-                         float radius2 = kWholeCells) {
+// around it, less the rows of its own body where it leaves them out (rows_left_out).
+MSSPH_HD auto grid_share(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes) {
   const Vec4 p = v.position[s];
   const std::uint32_t left_out = rows_left_out(v.bodies[body_of(p)], body_of(p));
-  return [&v, x = xyz(p), lane, lanes, left_out, radius2](auto&& visit) {
-    v.grid.for_each_candidate(x, lane, lanes, visit, left_out, radius2);
+  return [&v, x = xyz(p), lane, lanes, left_out](auto&& visit) {
+    v.grid.for_each_candidate(x, lane, lanes, visit, left_out);
   };
 }
 
-// Lane `lane` of `lanes`' share of particle s's live density sum, from the grid. One lane alone
-// (large GPU scenes) leaves out the cells beyond h, whose candidates add nothing (add_density_pair;
-// a rigid or deformable particle's nearest other body is only ever compared with h); a team walks
-// whole rows, which its lanes split (for_each_candidate), as its lists were recorded.
+// Lane `lane` of `lanes`' share of particle s's live density sum, from the grid.
 MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes) {
-  return density_sum_over(v, s, grid_share(v, s, lane, lanes, lanes == 1 ? v.step.smoothing.h2 : kWholeCells));
+  return density_sum_over(v, s, grid_share(v, s, lane, lanes));
 }
 
 // Boundary particles receive no force: they skip the force sum.
