@@ -48,6 +48,43 @@ MSSPH_HD std::uint32_t lowest_set_bit(std::uint32_t bits) {
 #endif
 }
 
+// Where a one-lane walk keeps the segments of candidates it found near
+// (CellRanges::for_each_candidate_within): segment k's first sorted particle and the bit mask of
+// its near candidates (bit b: particle first + b), for k below `capacity`. The GPU's force kernel
+// keeps them in shared memory, a column per thread; elsewhere this array does.
+template <std::uint32_t Capacity>
+struct HeldSegments {
+  static constexpr std::uint32_t capacity = Capacity;
+  std::uint32_t first_[Capacity];
+  std::uint32_t near_[Capacity];
+
+  MSSPH_HD void put(std::uint32_t k, std::uint32_t first, std::uint32_t near) {
+    first_[k] = first;
+    near_[k] = near;
+  }
+  MSSPH_HD std::uint32_t first(std::uint32_t k) const { return first_[k]; }
+  MSSPH_HD std::uint32_t near(std::uint32_t k) const { return near_[k]; }
+};
+
+// Calls visit(first + b) for each set bit b of each of the first `count` held segments, in order:
+// one loop whose every turn visits one candidate, taking the next segment first when the last is
+// done (no segment is held empty), so a warp's lanes turn it together as often as the lane with
+// the most candidates needs.
+template <class Held, class Visit>
+MSSPH_HD void visit_held(const Held& held, std::uint32_t count, Visit&& visit) {
+  std::uint32_t next = 0, first = 0, near = 0;
+  for (;;) {
+    if (near == 0) {
+      if (next == count) return;
+      first = held.first(next);
+      near = held.near(next);
+      ++next;
+    }
+    visit(first + lowest_set_bit(near));
+    near &= near - 1;
+  }
+}
+
 // No body: a walk that leaves no cells out (CellRanges).
 inline constexpr std::uint32_t kNoBody = 0xffffffffu;
 // A cell_body entry: the cell's particles belong to more than one body, or to one whose index
@@ -131,15 +168,21 @@ struct CellRanges {
   }
 
   // Calls visit(s) for every sorted particle s in the 27 cells around x that lies closer to x than
-  // sqrt(radius2) (`position`: the sorted positions), in for_each_candidate's order. Each range is
-  // taken 32 candidates at a time: their distances first, into a bit mask of the near ones, then a
-  // visit of each near one. One lane per particle (large GPU scenes) is why: the lanes of a warp find
-  // their ~30 neighbours among ~200 candidates each at other places, so a visit inside the walk
-  // has the whole warp step through the pair arithmetic at nearly every candidate, some lane having
-  // a neighbour there; the mask's visits run only as often as the lane with the most near ones in
-  // the segment. The visits see exactly the candidates a filter on the same r^2 would pass.
-  template <class Visit>
-  MSSPH_HD void for_each_candidate_within(Vec3 x, float radius2, const Vec4* position, Visit&& visit) const {
+  // sqrt(radius2) (`position`: the sorted positions), in for_each_candidate's order, after the
+  // walk rather than inside it. The walk takes each range 32 candidates at a time, their distances
+  // into a bit mask of the near ones, and keeps each segment that has one in `held` (HeldSegments);
+  // then one loop visits the held segments' near candidates in order. One lane per particle (large
+  // GPU scenes) is why: the lanes of a warp find their ~30 neighbours among ~200 candidates each at
+  // other places, so visits inside the walk ran once per segment as often as the lane with the most
+  // near ones in it needed, and on an H100 the 1M fluid block's force pass executed its pair
+  // arithmetic with 16 of 32 lanes on average; one loop after the walk runs as often as the lane
+  // with the most neighbours in all needs. A walk that finds more segments than `held` holds visits
+  // those it holds and starts again. The visits see exactly the candidates a filter on the same r^2
+  // would pass.
+  template <class Held, class Visit>
+  MSSPH_HD void for_each_candidate_within(Vec3 x, float radius2, const Vec4* position, Held& held,
+                                          Visit&& visit) const {
+    std::uint32_t count = 0;
     for_each_range(x, [&](std::uint32_t begin, std::uint32_t end) {
       for (std::uint32_t segment = begin; segment < end; segment += 32) {
         const std::uint32_t size = end - segment < 32 ? end - segment : 32;
@@ -147,9 +190,15 @@ struct CellRanges {
         for (std::uint32_t k = 0; k < size; ++k) {
           if (squared_norm(x - xyz(position[segment + k])) < radius2) near |= 1u << k;
         }
-        for (; near != 0; near &= near - 1) visit(segment + lowest_set_bit(near));
+        if (near == 0) continue;
+        if (count == Held::capacity) {
+          visit_held(held, count, visit);
+          count = 0;
+        }
+        held.put(count++, segment, near);
       }
     });
+    visit_held(held, count, visit);
   }
 
   // Calls visit(s) for every sorted particle s in the 27 cells around x.

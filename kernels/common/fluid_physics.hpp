@@ -287,10 +287,24 @@ MSSPH_HD ForceSum force_sum_over(const SortedView& v, const ForceParticle& i, Ca
 }
 
 // Particle i's pressure and viscosity sums in one lane, from the grid: the candidates within h,
-// found first (CellRanges::for_each_candidate_within), which add_force_pair tests again.
+// found first and their segments kept in `held` (CellRanges::for_each_candidate_within), which
+// add_force_pair tests again.
+template <class Held>
+MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, Held& held) {
+  return force_sum_over(v, i, [&](auto&& visit) {
+    v.grid.for_each_candidate_within(i.x, v.step.smoothing.h2, v.position, held, visit);
+  });
+}
+
+// Segments a one-lane force walk holds before it visits them: its 9 rows give at most 9 with a
+// near candidate, unless a row holds more than 32 candidates or wraps around the grid; a walk that
+// finds more visits them in two goes, which costs its warp a second loop.
+inline constexpr std::uint32_t kHeldSegments = 12;
+
+// The same with the segments in the thread's own array (the host; the GPU's force probe).
 MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i) {
-  return force_sum_over(
-      v, i, [&](auto&& visit) { v.grid.for_each_candidate_within(i.x, v.step.smoothing.h2, v.position, visit); });
+  HeldSegments<kHeldSegments> held;
+  return force_sum(v, i, held);
 }
 
 // The same share from list `list`, which a rebuild's density pass recorded from it

@@ -138,6 +138,21 @@ __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure,
 template <unsigned Lanes>
 inline constexpr int kForceBlocksPerMultiprocessor = Lanes == 1 ? 6 : 4;
 
+// The segments a one-lane force walk holds (HeldSegments) in the block's shared memory, a column
+// per thread: a warp's lanes write and read 32 consecutive words, whatever segment each is at.
+struct SharedHeldSegments {
+  static constexpr std::uint32_t capacity = kHeldSegments;
+  std::uint32_t (*first_)[kBlock];
+  std::uint32_t (*near_)[kBlock];
+
+  __device__ void put(std::uint32_t k, std::uint32_t first, std::uint32_t near) {
+    first_[k][threadIdx.x] = first;
+    near_[k][threadIdx.x] = near;
+  }
+  __device__ std::uint32_t first(std::uint32_t k) const { return first_[k][threadIdx.x]; }
+  __device__ std::uint32_t near(std::uint32_t k) const { return near_[k][threadIdx.x]; }
+};
+
 template <unsigned Lanes>
 __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
     forces_kernel(SortedView view, CanonicalState state, const std::uint8_t* near_other_body, NeighbourLists lists) {
@@ -156,7 +171,13 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
     i = view.id[s];
     particle = load_force_particle(view, s);
     if (may_feel_forces(particle.parameters, near_other_body[s] != 0)) {
-      sum = kTeam ? force_sum_listed(view, particle, lane, Lanes, lists, list) : force_sum(view, particle);
+      if constexpr (kTeam) {
+        sum = force_sum_listed(view, particle, lane, Lanes, lists, list);
+      } else {
+        __shared__ std::uint32_t held_first[kHeldSegments][kBlock], held_near[kHeldSegments][kBlock];
+        SharedHeldSegments held{held_first, held_near};
+        sum = force_sum(view, particle, held);
+      }
     }
   }
   sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction),

@@ -6,6 +6,7 @@
 // by brute force over all particles, cell by cell, not through the cell table. The particles are
 // clustered so ranges run from empty to many times a team's width, in a grid small enough to wrap.
 #include "common/cell_grid.hpp"
+#include "common/fluid_physics.hpp"
 #include "common/particle_views.hpp"
 #include "sorted_particles.hpp"
 
@@ -106,7 +107,8 @@ TEST(GridWalk, EveryLaneVisitsItsStridedShareOfEachRange) {
 
 // The one-lane walk of the large GPU scenes' force sums (for_each_candidate_within) visits the
 // candidates of for_each_candidate that lie within the radius, in the same order, also where a
-// range holds more than the 32 candidates of one mask.
+// range holds more than the 32 candidates of one mask, and where the walk finds more segments
+// with a near candidate than it can hold (capacities of 1 and 3), so it visits them in several goes.
 TEST(GridWalk, TheWalkWithinARadiusVisitsTheNearCandidatesInTheWalksOrder) {
   std::mt19937_64 random(20261127);
   const SortedParticles sorted = clustered_particles(random);
@@ -130,9 +132,16 @@ TEST(GridWalk, TheWalkWithinARadiusVisitsTheNearCandidatesInTheWalksOrder) {
           }
         }
       }
-      std::vector<std::uint32_t> visits;
-      grid.for_each_candidate_within(x, radius2, sorted.position.data(), [&](std::uint32_t t) { visits.push_back(t); });
-      ASSERT_EQ(visits, expected) << "radius " << radius;
+      const auto expect_visits = [&](auto held) {
+        std::vector<std::uint32_t> visits;
+        grid.for_each_candidate_within(x, radius2, sorted.position.data(), held,
+                                       [&](std::uint32_t t) { visits.push_back(t); });
+        ASSERT_EQ(visits, expected) << "radius " << radius << ", " << held.capacity << " segments held";
+      };
+      expect_visits(kernels::HeldSegments<1>{});
+      expect_visits(kernels::HeldSegments<3>{});
+      expect_visits(kernels::HeldSegments<kernels::kHeldSegments>{});
+      if (HasFatalFailure()) return;
     }
   }
   EXPECT_GT(near_beyond_a_mask, 0u);
