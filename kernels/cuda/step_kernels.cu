@@ -128,15 +128,14 @@ __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure,
 
 // Blocks of the force kernel that must fit on a multiprocessor at once, which caps its registers
 // at 65536 / (kBlock * blocks), rounded down to a multiple of 8. One lane per particle (large
-// scenes) compiles to 60 registers without a bound; more resident warps hide its stalls. On an
-// H100, the 1M fluid force pass took 781 us at 5 blocks (48 registers) against 853 unbound and 798
-// at 6 (40 registers), while every particle near a wall walked the 27 cells again for the wall
-// check; since most skip that walk (surely_clear_of_walls), 6 pays: the 1M fluid step 934 -> 901
-// us, rigid 736 -> 703, deformable 1188 -> 1156 (against 5; 4 blocks: 928, 761, 1213). Teams of
-// lanes (small scenes) are held to 4 blocks, 64 registers, which is what they compile to anyway
-// (62); at 5, the 30k and 100k blocks were no faster (results/performance.md).
-template <unsigned Lanes>
-inline constexpr int kForceBlocksPerMultiprocessor = Lanes == 1 ? 6 : 4;
+// scenes) holds its walk's segments in shared memory (SharedHeldSegments, 24 KB a block), which
+// the multiprocessor takes from its L1: at 6 blocks (40 registers, spilling) the 1M fluid block's
+// L1 hit rate fell from 85 % to 61 % and its force pass took 540 us against 519 before the
+// segments were held; at 5 blocks (48 registers) 489 us, at 4 (64, no spills) 428 us, the 1M fluid
+// step 850 -> 760 us on an H100 (rigid 412 -> 419, deformable 888 -> 896, mixed 876 -> 858;
+// results/performance.md). Teams of lanes (small scenes) are held to 4 blocks, 64 registers, which
+// is what they compile to anyway (62); at 5, the 30k and 100k blocks were no faster.
+inline constexpr int kForceBlocksPerMultiprocessor = 4;
 
 // The segments a one-lane force walk holds (HeldSegments) in the block's shared memory, a column
 // per thread: a warp's lanes write and read 32 consecutive words, whatever segment each is at.
@@ -154,7 +153,7 @@ struct SharedHeldSegments {
 };
 
 template <unsigned Lanes>
-__global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor<Lanes>)
+__global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor)
     forces_kernel(SortedView view, CanonicalState state, const std::uint8_t* near_other_body, NeighbourLists lists) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
