@@ -103,7 +103,8 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   visit("position", a.position, copy_of(scene.position));
   visit("velocity", a.velocity, copy_of(scene.velocity));
   visit("interaction_force", a.interaction_force, Filled<Vec4>{n, zero});
-  visit("rest_offset", a.rest_offset, copy_of(scene.rest_offset));
+  // Read only to place movable rigid bodies' particles (rigid_bodies.cu).
+  visit("rest_offset", a.rest_offset, CopyOf<Vec4>{&scene.rest_offset, scene.rigid_bodies.empty() ? 0 : n});
   const std::size_t deformables = scene.deformable_body.size();
   if (deformables > 0) {
     visit("elastic_force", a.elastic_force, Filled<Vec4>{n, zero});

@@ -107,6 +107,8 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   ASSERT_EQ(deformables, deformable_particles);
   const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kGridBlocks, kTeamLanes);
   EXPECT_EQ(bytes_of(listed, "position"), n * 16);
+  ASSERT_GT(rigid_bodies, 0u);
+  EXPECT_EQ(bytes_of(listed, "rest_offset"), n * 16);
   EXPECT_EQ(bytes_of(listed, "sorted_id"), n * 4);
   EXPECT_EQ(bytes_of(listed, "near_other_body"), n);
   EXPECT_EQ(bytes_of(listed, "cell_start"), (cells + 1) * 4);
@@ -156,6 +158,19 @@ TEST_F(DeviceArraysTest, DeformableAndRestDensityArraysAddExactlyTheirBytes) {
   EXPECT_EQ(kernels::device_array_sizes(without, chunks, kGridBlocks, kTeamLanes).total_bytes -
                 kernels::device_array_sizes(without_rest_densities, chunks, kGridBlocks, kTeamLanes).total_bytes,
             n * sizeof(float) + cell_table * sizeof(std::uint16_t));
+}
+
+// Rest offsets place the particles of movable rigid bodies: a scene without one (here the same
+// scene with its rigid sphere taken out of the rigid-body list) holds none: 16 bytes per particle
+// less, and the body's record and ticket.
+TEST_F(DeviceArraysTest, OnlyScenesWithRigidBodiesHoldRestOffsets) {
+  FloatScene without = scene;
+  without.rigid_bodies.clear();
+  EXPECT_EQ(bytes_of(listed_arrays(without, chunks, kGridBlocks, kTeamLanes), "rest_offset"), 0u);
+  EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kGridBlocks, kTeamLanes).total_bytes -
+                kernels::device_array_sizes(without, chunks, kGridBlocks, kTeamLanes).total_bytes,
+            setup.size() * sizeof(kernels::Vec4) +
+                scene.rigid_bodies.size() * (sizeof(kernels::RigidBody) + sizeof(std::uint32_t)));
 }
 
 // Only a team keeps neighbour lists: one lane per particle (large scenes) spends no bytes on them,
