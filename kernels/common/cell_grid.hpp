@@ -143,18 +143,18 @@ struct CellRanges {
   MSSPH_HD void for_each_range(Vec3 x, VisitRange&& visit_range, std::uint32_t left_out = kNoBody) const {
     int cx, cy, cz;
     shape.cell_of(x, cx, cy, cz);
-    const int row_first = cx - static_cast<int>(shape.reach_x);  // a row's cells along x: row_first + 0 ... span
-    const std::uint32_t span = 2u * shape.reach_x;
+    const int reach = static_cast<int>(shape.reach_x);
     for (int dz = -1; dz <= 1; ++dz) {
       for (int dy = -1; dy <= 1; ++dy) {
-        const std::uint32_t first = shape.key(row_first, cy + dy, cz + dz);
-        const std::uint32_t last = shape.key(row_first + static_cast<int>(span), cy + dy, cz + dz);
-        if (last == first + span) {
+        const std::uint32_t first = shape.key(cx - reach, cy + dy, cz + dz);
+        const std::uint32_t last = shape.key(cx + reach, cy + dy, cz + dz);
+        if (last == first + 2u * shape.reach_x) {
           if (!cells_hold_only(first, last, left_out)) visit_range(cell_start[first], cell_start[last + 1]);
-        } else {  // the row wraps around the period: its keys up to the period's end, then from its start
-          const std::uint32_t period_last = first | ((1u << shape.bits_x) - 1u), period_first = last & ~((1u << shape.bits_x) - 1u);
-          if (!cells_hold_only(first, period_last, left_out)) visit_range(cell_start[first], cell_start[period_last + 1]);
-          if (!cells_hold_only(period_first, last, left_out)) visit_range(cell_start[period_first], cell_start[last + 1]);
+        } else {  // the row wraps: separate cells
+          for (int dx = -reach; dx <= reach; ++dx) {
+            const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
+            if (!cells_hold_only(k, k, left_out)) visit_range(cell_start[k], cell_start[k + 1]);
+          }
         }
       }
     }

@@ -25,8 +25,7 @@ namespace {
 using kernels::Vec3;
 
 // The contiguous ranges of the walk around x, each as the sorted indices it holds: a row of
-// 2 reach_x + 1 cells along x when their keys are consecutive, else (the row wraps around the grid's
-// x period) its cells up to the period's end, then its cells from the period's start; every cell's
+// 2 reach_x + 1 cells along x when their keys are consecutive, else each cell alone; every cell's
 // particles found by testing every particle's key.
 std::vector<std::vector<std::uint32_t>> expected_ranges(const SortedParticles& sorted, Vec3 x) {
   const kernels::GridShape& shape = sorted.shape;
@@ -43,10 +42,10 @@ std::vector<std::vector<std::uint32_t>> expected_ranges(const SortedParticles& s
   std::vector<std::vector<std::uint32_t>> ranges;
   for (int dz = -1; dz <= 1; ++dz) {
     for (int dy = -1; dy <= 1; ++dy) {
-      ranges.emplace_back();
+      const bool one_row = shape.key(cx + reach, cy + dy, cz + dz) == shape.key(cx - reach, cy + dy, cz + dz) + 2 * reach;
+      if (one_row) ranges.emplace_back();
       for (int dx = -reach; dx <= reach; ++dx) {
-        const bool period_starts = dx > -reach && shape.key(cx + dx, cy + dy, cz + dz) < shape.key(cx + dx - 1, cy + dy, cz + dz);
-        if (period_starts) ranges.emplace_back();
+        if (!one_row) ranges.emplace_back();
         const std::vector<std::uint32_t> in_cell = cell_particles(shape.key(cx + dx, cy + dy, cz + dz));
         ranges.back().insert(ranges.back().end(), in_cell.begin(), in_cell.end());
       }
