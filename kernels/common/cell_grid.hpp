@@ -1,13 +1,11 @@
 #pragma once
-// The neighbour grid of the kernels: cells of side h (the support radius) along y and z, of h or
-// h / 2 along x (reach_x), wrapped periodically onto 2^bx x 2^by x 2^bz cells, so cell
-// (cx, cy, cz) has the key
+// The neighbour grid of the kernels: cells of side h (the support radius), wrapped periodically
+// onto 2^bx x 2^by x 2^bz cells, so cell (cx, cy, cz) has the key
 //   (cx mod 2^bx) + 2^bx ((cy mod 2^by) + 2^by (cz mod 2^bz)).
-// The cells around a cell that a walk takes (CellRanges) have distinct keys: every axis has at
-// least 4 cells, x at least 8 where cells are h / 2 along it; so no particle is visited twice.
-// Particles of a distant periodic image share a key but fail the distance test. The grid needs no
-// bounding box, never grows, and a particle flung far away costs nothing. Particles are sorted by
-// key each step.
+// Every axis has at least 4 cells, so the 27 cells around a cell have 27 distinct keys and no
+// particle is visited twice; particles of a distant periodic image share a key but fail the
+// distance test. The grid needs no bounding box, never grows, and a particle flung far away
+// costs nothing. Particles are sorted by key each step.
 #include "vec_math.hpp"
 
 #include <cstdint>
@@ -16,10 +14,6 @@ namespace mssph::kernels {
 
 struct GridShape {
   float inverse_cell_size = 0.0f;  // 1 / h
-  // Cells per h along x, 1 or 2, and so the cells each side along x that the 27 cells' volume spans:
-  // a row along x of 2 reach_x + 1 cells, 3 h or 2.5 h long. Cells of h / 2 along x (large GPU
-  // scenes) leave a sixth of the candidates out of every walk at twice the cell table.
-  std::uint32_t reach_x = 1;
   std::uint32_t bits_x = 2, bits_y = 2, bits_z = 2;
 
   MSSPH_HD std::uint32_t cell_count() const { return 1u << (bits_x + bits_y + bits_z); }
@@ -29,8 +23,7 @@ struct GridShape {
   // always defined (a runaway particle is caught by the blow-up check, not here).
   MSSPH_HD void cell_of(Vec3 x, int& cx, int& cy, int& cz) const {
     const float limit = 1.0e9f;
-    const float inverse_x = inverse_cell_size * static_cast<float>(reach_x);  // exact: reach_x is 1 or 2
-    cx = static_cast<int>(std::floor(std::fmin(std::fmax(x.x * inverse_x, -limit), limit)));
+    cx = static_cast<int>(std::floor(std::fmin(std::fmax(x.x * inverse_cell_size, -limit), limit)));
     cy = static_cast<int>(std::floor(std::fmin(std::fmax(x.y * inverse_cell_size, -limit), limit)));
     cz = static_cast<int>(std::floor(std::fmin(std::fmax(x.z * inverse_cell_size, -limit), limit)));
   }
@@ -112,7 +105,7 @@ MSSPH_HD std::uint16_t cell_body_code(std::uint32_t count, BodyOf&& body_of) {
 
 // The sorted particles of cell k are [cell_start[k], cell_start[k + 1]): cell_start holds, for
 // every key, the first sorted particle whose key is not smaller (a prefix sum of the cell counts),
-// so an empty cell is an empty range and the cells of a row along x, whose keys are
+// so an empty cell is an empty range and the three cells of a row along x, whose keys are
 // consecutive unless the row wraps, are one range.
 struct CellRanges {
   GridShape shape;
@@ -133,25 +126,23 @@ struct CellRanges {
   }
 
   // Calls visit_range(begin, end) for each contiguous range [begin, end) of sorted particles that
-  // the cells around x within reach make (3 x 3 rows along x of 2 reach_x + 1 cells: the 27 cells'
-  // volume, or 2.5 h along x): one per row, or one per cell where the row wraps around the grid's x
-  // period. A row (or wrapped cell) that holds nothing but particles of body `left_out` is not
-  // visited: the density walks of rigid and deformable particles leave out their own body's, whose
-  // pairs add nothing to their sums (fluid_physics.hpp, rows_left_out), and which make up every row
-  // inside a large block.
+  // the 27 cells around x make: one per row of three cells along x, or one per cell where the row
+  // wraps around the grid's x period. A row (or wrapped cell) that holds nothing but particles of
+  // body `left_out` is not visited: the density walks of rigid and deformable particles leave out
+  // their own body's, whose pairs add nothing to their sums (fluid_physics.hpp, rows_left_out),
+  // and which make up every row inside a large block.
   template <class VisitRange>
   MSSPH_HD void for_each_range(Vec3 x, VisitRange&& visit_range, std::uint32_t left_out = kNoBody) const {
     int cx, cy, cz;
     shape.cell_of(x, cx, cy, cz);
-    const int reach = static_cast<int>(shape.reach_x);
     for (int dz = -1; dz <= 1; ++dz) {
       for (int dy = -1; dy <= 1; ++dy) {
-        const std::uint32_t first = shape.key(cx - reach, cy + dy, cz + dz);
-        const std::uint32_t last = shape.key(cx + reach, cy + dy, cz + dz);
-        if (last == first + 2u * shape.reach_x) {
+        const std::uint32_t first = shape.key(cx - 1, cy + dy, cz + dz);
+        const std::uint32_t last = shape.key(cx + 1, cy + dy, cz + dz);
+        if (last == first + 2) {
           if (!cells_hold_only(first, last, left_out)) visit_range(cell_start[first], cell_start[last + 1]);
-        } else {  // the row wraps: separate cells
-          for (int dx = -reach; dx <= reach; ++dx) {
+        } else {  // the row wraps: three separate cells
+          for (int dx = -1; dx <= 1; ++dx) {
             const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
             if (!cells_hold_only(k, k, left_out)) visit_range(cell_start[k], cell_start[k + 1]);
           }

@@ -100,10 +100,9 @@ void add_rest_state(const ParticleSetup& setup, FloatScene& scene) {
 
 }  // namespace
 
-GridShape choose_grid_shape(const std::vector<Vec4>& positions, double h, std::uint32_t reach_x) {
+GridShape choose_grid_shape(const std::vector<Vec4>& positions, double h) {
   GridShape shape;
   shape.inverse_cell_size = static_cast<float>(1.0 / h);
-  shape.reach_x = reach_x;
   float lo[3] = {std::numeric_limits<float>::max(), std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
   float hi[3] = {std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest()};
   for (const Vec4& p : positions) {
@@ -113,24 +112,17 @@ GridShape choose_grid_shape(const std::vector<Vec4>& positions, double h, std::u
       hi[a] = std::max(hi[a], c[a]);
     }
   }
-  // Per axis: the cell side, and the fewest bits that keep a walk's cells distinct (4, or 8 cells
-  // along x where a row spans 5).
-  const double side[3] = {h / reach_x, h, h};
-  const std::uint32_t fewest[3] = {reach_x > 1 ? 3u : 2u, 2u, 2u};
   std::uint32_t bits[3];
   for (int a = 0; a < 3; ++a) {
-    const double cells = positions.empty() ? 0.0 : std::ceil((hi[a] - lo[a]) / side[a]) + 3.0;
-    bits[a] = std::max(fewest[a], static_cast<std::uint32_t>(std::bit_width(static_cast<std::uint64_t>(std::max(1.0, cells)) - 1)));
+    const double cells = positions.empty() ? 4.0 : std::ceil((hi[a] - lo[a]) / h) + 3.0;
+    bits[a] = static_cast<std::uint32_t>(std::bit_width(static_cast<std::uint64_t>(std::max(4.0, cells)) - 1));
   }
-  // Cap the table near two cells of side h per particle: beyond that the extra cells are empty anyway.
-  const auto budget = static_cast<std::uint32_t>(std::bit_width(std::max<std::size_t>(2 * reach_x * positions.size(), 64) - 1));
+  // Cap the table near two cells per particle: beyond that the extra cells are empty anyway.
+  const auto budget = static_cast<std::uint32_t>(std::bit_width(std::max<std::size_t>(2 * positions.size(), 64) - 1));
   while (bits[0] + bits[1] + bits[2] > std::max<std::uint32_t>(budget, 6)) {
-    int axis = -1;  // the first of the largest that can lose a bit
-    for (int a = 0; a < 3; ++a) {
-      if (bits[a] > fewest[a] && (axis < 0 || bits[a] > bits[axis])) axis = a;
-    }
-    if (axis < 0) break;
-    --bits[axis];
+    std::uint32_t* largest = std::max_element(bits, bits + 3);
+    if (*largest <= 2) break;
+    --*largest;
   }
   shape.bits_x = bits[0];
   shape.bits_y = bits[1];

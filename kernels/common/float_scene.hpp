@@ -59,10 +59,10 @@ struct FloatScene {
 // fixed region holds (it needs the body's rigid motion every step; the reference has it).
 FloatScene make_float_scene(const ParticleSetup& setup);
 
-// Grid bits per axis: enough cells of side h (h / reach_x along x) to cover the starting bounding
-// box (at least 4 per axis, 8 along x for cells of h / 2), with at most about 2 cells per particle
-// in all (4 for cells of h / 2) so the cell table stays small. Positions in the kernels' frame.
-GridShape choose_grid_shape(const std::vector<Vec4>& positions, double h, std::uint32_t reach_x = 1);
+// Grid bits per axis: enough cells of side h to cover the starting bounding box (at least 4 per
+// axis), with at most about 2 cells per particle in all so the cell table stays small. Positions
+// in the kernels' frame.
+GridShape choose_grid_shape(const std::vector<Vec4>& positions, double h);
 
 // A body's logged state, in world coordinates, from its particle sums, or from its rigid-body
 // state when it moves as one.

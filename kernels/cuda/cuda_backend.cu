@@ -27,12 +27,10 @@ namespace mssph::kernels {
 namespace {
 
 // The scene in the kernels' form. With teams of lanes (choose_team_lanes), whose lists have a
-// skin, the grid's cells are h + skin wide (list_skin.hpp); one lane per particle (large scenes)
-// walks cells of h / 2 along x (GridShape::reach_x).
+// skin, the grid's cells are h + skin wide (list_skin.hpp).
 FloatScene cuda_scene(const ParticleSetup& setup, unsigned team_lanes) {
   FloatScene scene = make_float_scene(setup);
-  scene.grid = team_lanes > 1 ? choose_grid_shape(scene.position, list_cell_size(setup.smoothing_length))
-                              : choose_grid_shape(scene.position, setup.smoothing_length, 2);
+  if (team_lanes > 1) scene.grid = choose_grid_shape(scene.position, list_cell_size(setup.smoothing_length));
   return scene;
 }
 

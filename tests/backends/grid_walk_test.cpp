@@ -6,7 +6,6 @@
 // by brute force over all particles, cell by cell, not through the cell table. The particles are
 // clustered so ranges run from empty to many times a team's width, in a grid small enough to wrap.
 #include "common/cell_grid.hpp"
-#include "common/float_scene.hpp"
 #include "common/fluid_physics.hpp"
 #include "common/particle_views.hpp"
 #include "sorted_particles.hpp"
@@ -16,7 +15,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <random>
-#include <string>
 #include <vector>
 
 namespace mssph::testing {
@@ -24,9 +22,9 @@ namespace {
 
 using kernels::Vec3;
 
-// The contiguous ranges of the walk around x, each as the sorted indices it holds: a row of
-// 2 reach_x + 1 cells along x when their keys are consecutive, else each cell alone; every cell's
-// particles found by testing every particle's key.
+// The contiguous ranges of the walk around x, each as the sorted indices it holds: a row of three
+// cells along x when their keys are consecutive, else each cell alone; every cell's particles found
+// by testing every particle's key.
 std::vector<std::vector<std::uint32_t>> expected_ranges(const SortedParticles& sorted, Vec3 x) {
   const kernels::GridShape& shape = sorted.shape;
   int cx, cy, cz;
@@ -38,13 +36,12 @@ std::vector<std::vector<std::uint32_t>> expected_ranges(const SortedParticles& s
     }
     return in_cell;
   };
-  const int reach = static_cast<int>(shape.reach_x);
   std::vector<std::vector<std::uint32_t>> ranges;
   for (int dz = -1; dz <= 1; ++dz) {
     for (int dy = -1; dy <= 1; ++dy) {
-      const bool one_row = shape.key(cx + reach, cy + dy, cz + dz) == shape.key(cx - reach, cy + dy, cz + dz) + 2 * reach;
+      const bool one_row = shape.key(cx + 1, cy + dy, cz + dz) == shape.key(cx - 1, cy + dy, cz + dz) + 2;
       if (one_row) ranges.emplace_back();
-      for (int dx = -reach; dx <= reach; ++dx) {
+      for (int dx = -1; dx <= 1; ++dx) {
         if (!one_row) ranges.emplace_back();
         const std::vector<std::uint32_t> in_cell = cell_particles(shape.key(cx + dx, cy + dy, cz + dz));
         ranges.back().insert(ranges.back().end(), in_cell.begin(), in_cell.end());
@@ -88,12 +85,9 @@ std::vector<Vec3> query_points(const SortedParticles& sorted, std::mt19937_64& r
   return points;
 }
 
-// Cells of h along x, and of h / 2 (GridShape::reach_x), whose rows span 5 cells.
-class GridWalk : public ::testing::TestWithParam<std::uint32_t> {};
-
-TEST_P(GridWalk, EveryLaneVisitsItsStridedShareOfEachRange) {
+TEST(GridWalk, EveryLaneVisitsItsStridedShareOfEachRange) {
   std::mt19937_64 random(20261124);
-  const SortedParticles sorted = clustered_particles(random, GetParam());
+  const SortedParticles sorted = clustered_particles(random);
   const std::vector<Vec3> points = query_points(sorted, random);
   std::size_t longest_range = 0, wrapped_walks = 0;
   for (std::size_t q = 0; q < points.size(); ++q) {
@@ -115,9 +109,9 @@ TEST_P(GridWalk, EveryLaneVisitsItsStridedShareOfEachRange) {
 // candidates of for_each_candidate that lie within the radius, in the same order, also where a
 // range holds more than the 32 candidates of one mask, and where the walk finds more segments
 // with a near candidate than it can hold (capacities of 1 and 3), so it visits them in several goes.
-TEST_P(GridWalk, TheWalkWithinARadiusVisitsTheNearCandidatesInTheWalksOrder) {
+TEST(GridWalk, TheWalkWithinARadiusVisitsTheNearCandidatesInTheWalksOrder) {
   std::mt19937_64 random(20261127);
-  const SortedParticles sorted = clustered_particles(random, GetParam());
+  const SortedParticles sorted = clustered_particles(random);
   const kernels::CellRanges grid = sorted.grid();
   const std::vector<Vec3> points = query_points(sorted, random);
   std::size_t near_beyond_a_mask = 0, candidates_left_out = 0;
@@ -136,12 +130,6 @@ TEST_P(GridWalk, TheWalkWithinARadiusVisitsTheNearCandidatesInTheWalksOrder) {
           } else {
             ++candidates_left_out;
           }
-        }
-      }
-      // The walk's cells hold every particle within the radius (at most h, the cells' reach).
-      for (std::uint32_t t = 0; t < sorted.position.size(); ++t) {
-        if (kernels::squared_norm(x - kernels::xyz(sorted.position[t])) < radius2) {
-          ASSERT_NE(std::find(expected.begin(), expected.end(), t), expected.end()) << "particle " << t;
         }
       }
       const auto expect_visits = [&](auto held) {
@@ -179,8 +167,8 @@ TEST(CellBody, NamesTheBodyAllOfACellsParticlesShareElseMarksTheCellMixed) {
 // The clustered particles as three bodies: body 1 left of x = 0.5 m, body 2 right of it, every
 // 13th particle body 3; the cells' entries as the GPU's grid writes them, empty cells' set to
 // kMixedCell, as a stale entry may be.
-SortedParticles three_bodies(std::mt19937_64& random, std::uint32_t reach_x) {
-  SortedParticles sorted = clustered_particles(random, reach_x);
+SortedParticles three_bodies(std::mt19937_64& random) {
+  SortedParticles sorted = clustered_particles(random);
   for (std::size_t s = 0; s < sorted.position.size(); ++s) {
     const std::uint32_t body = s % 13 == 0 ? 3u : sorted.position[s].x < 0.5f ? 1u : 2u;
     sorted.position[s].w = kernels::index_as_float_bits(body);
@@ -191,9 +179,9 @@ SortedParticles three_bodies(std::mt19937_64& random, std::uint32_t reach_x) {
 
 // A walk that leaves out a body visits, lane by lane, what a full walk would over every range of
 // expected_ranges but those whose particles all belong to that body.
-TEST_P(GridWalk, LeavesOutTheRowsThatHoldNothingButTheBodyLeftOut) {
+TEST(GridWalk, LeavesOutTheRowsThatHoldNothingButTheBodyLeftOut) {
   std::mt19937_64 random(20261128);
-  const SortedParticles sorted = three_bodies(random, GetParam());
+  const SortedParticles sorted = three_bodies(random);
   const kernels::CellRanges grid = sorted.grid();
   const std::vector<Vec3> points = query_points(sorted, random);
   std::size_t rows_left_out = 0, rows_kept = 0;
@@ -230,40 +218,6 @@ TEST_P(GridWalk, LeavesOutTheRowsThatHoldNothingButTheBodyLeftOut) {
   EXPECT_GT(rows_left_out, 100u);
   EXPECT_GT(rows_kept, 100u);
 }
-
-// Cells of h / 2 along x: one more bit along x, the same along y and z, each particle's cell along
-// x one of the two halves of its cell of h; a scene of a few particles still gets 8 cells along x,
-// so a row of 5 never meets itself.
-TEST(GridShape, CellsOfHalfHAlongXSplitTheCellsOfHInTwo) {
-  std::mt19937_64 random(20261130);
-  std::uniform_real_distribution<float> coordinate(-0.5f, 0.7f);
-  std::vector<kernels::Vec4> positions;
-  for (int p = 0; p < 20000; ++p) positions.push_back(kernels::Vec4{coordinate(random), coordinate(random), coordinate(random), 0.0f});
-  const double h = 0.05;
-  const kernels::GridShape whole = kernels::choose_grid_shape(positions, h);
-  const kernels::GridShape halves = kernels::choose_grid_shape(positions, h, 2);
-  EXPECT_EQ(whole.reach_x, 1u);
-  EXPECT_EQ(halves.reach_x, 2u);
-  EXPECT_EQ(halves.bits_x, whole.bits_x + 1);
-  EXPECT_EQ(halves.bits_y, whole.bits_y);
-  EXPECT_EQ(halves.bits_z, whole.bits_z);
-  for (const kernels::Vec4& p : positions) {
-    int wx, wy, wz, hx, hy, hz;
-    whole.cell_of(kernels::xyz(p), wx, wy, wz);
-    halves.cell_of(kernels::xyz(p), hx, hy, hz);
-    ASSERT_EQ(hx / 2 - (hx < 0 && hx % 2 != 0 ? 1 : 0), wx) << p.x;  // floor(hx / 2)
-    ASSERT_EQ(hy, wy);
-    ASSERT_EQ(hz, wz);
-  }
-  const std::vector<kernels::Vec4> few(positions.begin(), positions.begin() + 4);
-  EXPECT_GE(kernels::choose_grid_shape(few, h, 2).bits_x, 3u);
-  EXPECT_GE(kernels::choose_grid_shape(few, h).bits_x, 2u);
-}
-
-INSTANTIATE_TEST_SUITE_P(Cells, GridWalk, ::testing::Values(1u, 2u),
-                         [](const ::testing::TestParamInfo<std::uint32_t>& reach) {
-                           return reach.param == 1 ? std::string("OfHAlongX") : std::string("OfHalfHAlongX");
-                         });
 
 }  // namespace
 }  // namespace mssph::testing

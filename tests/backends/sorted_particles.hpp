@@ -47,18 +47,17 @@ inline SortedParticles sort_into_grid(const std::vector<kernels::Vec4>& particle
   return sorted;
 }
 
-// Grid-walk test particles: 2^3 x 2^2 x 2^2 cells of side 1 m (along x 0.5 m where reach_x is 2),
-// 300 particles spread over a 6 m cube (cells -3 to 3 on each axis: more than the grid's 4 along y
-// and z, so distant particles share keys; across the period of 8 along x, so rows split there) and
-// 400 packed into one cell of side 1 m, whose rows then hold many times 8 candidates.
-inline SortedParticles clustered_particles(std::mt19937_64& random, std::uint32_t reach_x = 1) {
+// Grid-walk test particles: 2^3 x 2^2 x 2^2 cells of side 1 m, 300 particles spread over a 6 m cube (cells -3 to 3 on each
+// axis: more than the grid's 4 along y and z, so distant particles share keys; across the period of
+// 8 along x, so rows split there) and 400 packed into one cell, whose rows then hold many times 8
+// candidates.
+inline SortedParticles clustered_particles(std::mt19937_64& random) {
   std::uniform_real_distribution<float> spread(-2.5f, 3.5f), packed(0.05f, 0.95f);
   std::vector<kernels::Vec4> particles;
   for (int p = 0; p < 300; ++p) particles.push_back(kernels::Vec4{spread(random), spread(random), spread(random), 0.0f});
   for (int p = 0; p < 400; ++p) particles.push_back(kernels::Vec4{packed(random), packed(random), packed(random), 0.0f});
   kernels::GridShape shape;
   shape.inverse_cell_size = 1.0f;
-  shape.reach_x = reach_x;
   shape.bits_x = 3;
   return sort_into_grid(particles, shape);
 }
