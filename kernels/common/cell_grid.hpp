@@ -54,6 +54,7 @@ MSSPH_HD std::uint32_t lowest_set_bit(std::uint32_t bits) {
 // keeps them in shared memory, a column per thread; elsewhere this array does.
 template <std::uint32_t Capacity>
 struct HeldSegments {
+  static_assert(Capacity > 0, "a walk holds at least one segment");
   static constexpr std::uint32_t capacity = Capacity;
   std::uint32_t first_[Capacity];
   std::uint32_t near_[Capacity];

@@ -37,7 +37,8 @@ struct Uninitialised {
 template <template <class> class Array>
 struct DeviceArrays {
   // Canonical state.
-  Array<Vec4> position, velocity, interaction_force, rest_offset;
+  Array<Vec4> position, velocity, interaction_force;
+  Array<Vec4> rest_offset;  // empty without movable rigid bodies, whose particles alone read it
   Array<std::uint32_t> body;
   Array<std::uint8_t> fixed;
   // The neighbour grid and the cell-ordered copies.

@@ -138,7 +138,8 @@ __global__ void density_kernel(SortedView view, VolumePressure* volume_pressure,
 inline constexpr int kForceBlocksPerMultiprocessor = 4;
 
 // The segments a one-lane force walk holds (HeldSegments) in the block's shared memory, a column
-// per thread: a warp's lanes write and read 32 consecutive words, whatever segment each is at.
+// per thread: a thread's column lies in bank threadIdx.x mod 32, so a warp's lanes never share a
+// bank, whatever segment each is at.
 struct SharedHeldSegments {
   static constexpr std::uint32_t capacity = kHeldSegments;
   std::uint32_t (*first_)[kBlock];
