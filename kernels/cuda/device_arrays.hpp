@@ -83,9 +83,9 @@ struct DeviceArrays {
 // lists plus one (13, 20, 28 entries), some list of the 30k-particle fluid block overflowed at
 // nearly every rebuild on an H100, so the grid was rebuilt at 100 % of the steps; at twice them, at
 // 7 % (results/performance.md). One lane per particle (large scenes) keeps no lists: at 1M
-// particles their 4-byte entries would more than double the fluid's 113 bytes per particle, and its warps
-// load each candidate once for all 32 lanes, neighbouring particles walking the same cells, where
-// lists would scatter those loads.
+// particles their 4-byte entries would more than double the fluid's 113 bytes per particle, and
+// its warps load each candidate once for all 32 lanes, neighbouring particles walking the same
+// cells, where lists would scatter those loads.
 constexpr std::uint32_t team_list_capacity(unsigned lanes) {
   return lanes >= 8 ? 26 : lanes == 4 ? 40 : lanes == 2 ? 56 : 0;
 }
