@@ -117,9 +117,10 @@ struct CellRanges {
   const std::uint16_t* cell_body = nullptr;
 
   // Whether cells first to last (consecutive keys) hold no particle of a body other than `body`;
-  // false where cell_body is null or body is kNoBody.
+  // false where cell_body is null, or body is kNoBody or any index an entry cannot name (it would
+  // read kMixedCell as its own).
   MSSPH_HD bool cells_hold_only(std::uint32_t first, std::uint32_t last, std::uint32_t body) const {
-    if (cell_body == nullptr || body == kNoBody) return false;
+    if (cell_body == nullptr || body >= kMixedCell) return false;
     for (std::uint32_t k = first; k <= last; ++k) {
       if (cell_start[k] != cell_start[k + 1] && cell_body[k] != body) return false;
     }
