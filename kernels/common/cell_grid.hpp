@@ -5,7 +5,8 @@
 // Every axis has at least 4 cells, so the 27 cells around a cell have 27 distinct keys and no
 // particle is visited twice; particles of a distant periodic image share a key but fail the
 // distance test. The grid needs no bounding box, never grows, and a particle flung far away
-// costs nothing. Particles are sorted by key each step.
+// costs nothing. Particles are sorted by key at each rebuild (on the GPU, each cell's lower half
+// along x first: CellRanges::cell_middle).
 #include "vec_math.hpp"
 
 #include <cstdint>
@@ -19,14 +20,26 @@ struct GridShape {
   MSSPH_HD std::uint32_t cell_count() const { return 1u << (bits_x + bits_y + bits_z); }
   MSSPH_HD std::uint32_t total_bits() const { return bits_x + bits_y + bits_z; }
 
-  // Integer cell coordinates of a position; clamped far beyond any scene so the conversion is
-  // always defined (a runaway particle is caught by the blow-up check, not here).
-  MSSPH_HD void cell_of(Vec3 x, int& cx, int& cy, int& cz) const {
+  // A coordinate in cells; clamped far beyond any scene so the conversion to int is always defined
+  // (a runaway particle is caught by the blow-up check, not here).
+  MSSPH_HD float in_cells(float coordinate) const {
     const float limit = 1.0e9f;
-    cx = static_cast<int>(std::floor(std::fmin(std::fmax(x.x * inverse_cell_size, -limit), limit)));
-    cy = static_cast<int>(std::floor(std::fmin(std::fmax(x.y * inverse_cell_size, -limit), limit)));
-    cz = static_cast<int>(std::floor(std::fmin(std::fmax(x.z * inverse_cell_size, -limit), limit)));
+    return std::fmin(std::fmax(coordinate * inverse_cell_size, -limit), limit);
   }
+  // Integer cell coordinates of a position.
+  MSSPH_HD void cell_of(Vec3 x, int& cx, int& cy, int& cz) const {
+    cx = static_cast<int>(std::floor(in_cells(x.x)));
+    cy = static_cast<int>(std::floor(in_cells(x.y)));
+    cz = static_cast<int>(std::floor(in_cells(x.z)));
+  }
+  // Where x lies within its cell along x, as a fraction of the cell in [0, 1).
+  MSSPH_HD float x_fraction(Vec3 x) const {
+    const float c = in_cells(x.x);
+    return c - std::floor(c);
+  }
+  // Whether x lies in the upper half of its cell along x: the GPU's grid sorts each cell's particles
+  // of the lower half first (CellRanges::cell_middle).
+  MSSPH_HD bool in_upper_half(Vec3 x) const { return x_fraction(x) >= 0.5f; }
   MSSPH_HD std::uint32_t key(int cx, int cy, int cz) const {
     const std::uint32_t mx = (1u << bits_x) - 1u, my = (1u << bits_y) - 1u, mz = (1u << bits_z) - 1u;
     return (static_cast<std::uint32_t>(cx) & mx) | ((static_cast<std::uint32_t>(cy) & my) << bits_x) |
@@ -104,6 +117,14 @@ MSSPH_HD std::uint16_t cell_body_code(std::uint32_t count, BodyOf&& body_of) {
   return static_cast<std::uint16_t>(body);
 }
 
+// A walk from a point that lies above the middle of its cell along x by more than this fraction
+// of a cell trims the lower half of the cell below along x (CellRanges::cell_middle), and the
+// other way round. The margin covers the float rounding of the two fractions, the point's and a
+// trimmed particle's (each within ~6e-8 of its coordinate in cells), so every trimmed particle lies
+// farther than one cell from the point: for coordinates within 1e5 cells of the origin, beyond
+// which float positions resolve no better than a hundredth of a cell anyway.
+inline constexpr float kHalfTrimMargin = 1.0f / 64.0f;
+
 // The sorted particles of cell k are [cell_start[k], cell_start[k + 1]): cell_start holds, for
 // every key, the first sorted particle whose key is not smaller (a prefix sum of the cell counts),
 // so an empty cell is an empty range and the three cells of a row along x, whose keys are
@@ -115,6 +136,25 @@ struct CellRanges {
   // entries are stale): lets a walk leave out the rows of cells that hold nothing but one body.
   // Null where no walk does (scenes without rigid or deformable bodies, the host).
   const std::uint16_t* cell_body = nullptr;
+  // Where the GPU's grid splits each cell along x (GridShape::in_upper_half): cell k's particles of
+  // the lower half are [cell_start[k], cell_middle[k]), of the upper half [cell_middle[k],
+  // cell_start[k + 1]). A one-lane walk from the upper half of a cell (trimmed_side) skips the
+  // lower half of the cell below it along x, whose particles all lie farther than a cell away, and
+  // the other way round: it walks 2.5 cells of each row instead of 3. Null where cells are not
+  // split (the host).
+  const std::uint32_t* cell_middle = nullptr;
+
+  // +1 where x lies above the middle of its cell along x by kHalfTrimMargin, -1 below it by as
+  // much, else 0 (also where cells are not split): which side a walk from x trims.
+  MSSPH_HD int trimmed_side(Vec3 x) const {
+    if (cell_middle == nullptr) return 0;
+    const float fraction = shape.x_fraction(x);
+    return fraction >= 0.5f + kHalfTrimMargin ? 1 : fraction < 0.5f - kHalfTrimMargin ? -1 : 0;
+  }
+  // Where a walk from side `side` begins cell k, the cell below it along x; where it ends cell k,
+  // the cell above.
+  MSSPH_HD std::uint32_t begin_below(std::uint32_t k, int side) const { return side > 0 ? cell_middle[k] : cell_start[k]; }
+  MSSPH_HD std::uint32_t end_above(std::uint32_t k, int side) const { return side < 0 ? cell_middle[k] : cell_start[k + 1]; }
 
   // Whether cells first to last (consecutive keys) hold no particle of a body other than `body`;
   // false where cell_body is null, or body is kNoBody or any index an entry cannot name (it would
@@ -128,25 +168,30 @@ struct CellRanges {
   }
 
   // Calls visit_range(begin, end) for each contiguous range [begin, end) of sorted particles that
-  // the 27 cells around x make: one per row of three cells along x, or one per cell where the row
-  // wraps around the grid's x period. A row (or wrapped cell) that holds nothing but particles of
+  // the 27 cells around x make, less the halves the walk trims if `trim_halves` (cell_middle): one
+  // per row of three cells along x, or one per cell where the row wraps around the grid's x
+  // period. A row (or wrapped cell), judged by its whole cells, that holds nothing but particles of
   // body `left_out` is not visited: the density walks of rigid and deformable particles leave out
   // their own body's, whose pairs add nothing to their sums (fluid_physics.hpp, rows_left_out),
   // and which make up every row inside a large block.
   template <class VisitRange>
-  MSSPH_HD void for_each_range(Vec3 x, VisitRange&& visit_range, std::uint32_t left_out = kNoBody) const {
+  MSSPH_HD void for_each_range(Vec3 x, VisitRange&& visit_range, std::uint32_t left_out = kNoBody,
+                               bool trim_halves = true) const {
     int cx, cy, cz;
     shape.cell_of(x, cx, cy, cz);
+    const int side = trim_halves ? trimmed_side(x) : 0;
     for (int dz = -1; dz <= 1; ++dz) {
       for (int dy = -1; dy <= 1; ++dy) {
         const std::uint32_t first = shape.key(cx - 1, cy + dy, cz + dz);
         const std::uint32_t last = shape.key(cx + 1, cy + dy, cz + dz);
         if (last == first + 2) {
-          if (!cells_hold_only(first, last, left_out)) visit_range(cell_start[first], cell_start[last + 1]);
+          if (!cells_hold_only(first, last, left_out)) visit_range(begin_below(first, side), end_above(last, side));
         } else {  // the row wraps: three separate cells
           for (int dx = -1; dx <= 1; ++dx) {
             const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
-            if (!cells_hold_only(k, k, left_out)) visit_range(cell_start[k], cell_start[k + 1]);
+            if (!cells_hold_only(k, k, left_out)) {
+              visit_range(dx < 0 ? begin_below(k, side) : cell_start[k], dx > 0 ? end_above(k, side) : cell_start[k + 1]);
+            }
           }
         }
       }
@@ -158,6 +203,9 @@ struct CellRanges {
   // k + 2 lanes, ... of each contiguous range. One lane alone (the host, large GPU scenes) visits
   // every candidate; a team of lanes splits the walk evenly, so a small scene keeps several
   // independent loads in flight per particle instead of one dependent walk of ~200 candidates.
+  // One lane trims split cells' halves; a team walks whole cells: its walks run only on the steps
+  // that rebuild the grid (list_skin.hpp), and the trim's registers would cost its density kernel
+  // blocks on every step (step_kernels.cu).
   template <class Visit>
   MSSPH_HD void for_each_candidate(Vec3 x, std::uint32_t lane, std::uint32_t lanes, Visit&& visit,
                                    std::uint32_t left_out = kNoBody) const {
@@ -166,7 +214,7 @@ struct CellRanges {
         [&](std::uint32_t begin, std::uint32_t end) {
           for (std::uint32_t s = begin + lane; s < end; s += lanes) visit(s);
         },
-        left_out);
+        left_out, /*trim_halves=*/lanes == 1);
   }
 
   // Calls visit(s) for every sorted particle s in the 27 cells around x that lies closer to x than

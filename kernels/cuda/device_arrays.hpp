@@ -42,7 +42,7 @@ struct DeviceArrays {
   Array<std::uint32_t> body;
   Array<std::uint8_t> fixed;
   // The neighbour grid and the cell-ordered copies.
-  Array<std::uint32_t> keys, unordered_id, sorted_id, cell_count, cell_start;
+  Array<std::uint32_t> keys, unordered_id, sorted_id, cell_count, cell_start, cell_middle;
   Array<std::uint16_t> cell_body;  // CellRanges::cell_body; empty without rigid or deformable bodies
   Array<Vec4> sorted_position, sorted_velocity;
   Array<VolumePressure> volume_pressure;
@@ -129,6 +129,7 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   // Zero at the start; the slot kernel takes every count back to zero for the next step.
   visit("cell_count", a.cell_count, Filled<std::uint32_t>{cell_table, 0u});
   visit("cell_start", a.cell_start, Uninitialised{cell_table});
+  visit("cell_middle", a.cell_middle, Uninitialised{cell_table});  // CellRanges::cell_middle
   visit("own_rest_number_density", a.own_rest_number_density, copy_of(scene.own_rest_number_density));
   // Where particles take their own body at rest, their walks leave out its rows (CellRanges): each
   // rebuild writes the entries of the non-empty cells, the only ones read.

@@ -63,7 +63,7 @@ DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& ch
 SortedView sorted_view(const FloatScene& scene, const DeviceState& state) {
   return SortedView{scene.step,
                     state.bodies.data(),
-                    CellRanges{scene.grid, state.cell_start.data(), state.cell_body.data()},
+                    CellRanges{scene.grid, state.cell_start.data(), state.cell_body.data(), state.cell_middle.data()},
                     state.sorted_position.data(),
                     state.sorted_velocity.data(),
                     state.sorted_id.data(),

@@ -23,11 +23,12 @@ struct GridArrays {
   const Vec4* position;
   const Vec4* velocity;
   const std::uint32_t* body;
-  std::uint32_t* keys;
+  std::uint32_t* keys;         // half keys (half_key)
   std::uint32_t* cell_count;
   std::uint32_t* cell_start;
+  std::uint32_t* cell_middle;
   std::uint16_t* cell_body;    // null where no walk leaves rows out (CellRanges)
-  std::uint32_t* unordered_id;
+  std::uint32_t* unordered_id;  // half ids (half_id)
   std::uint32_t* block_total;  // one per block of the kernel (scan_cell_counts)
   std::uint32_t* sorted_id;
   Vec4* sorted_position;
@@ -35,6 +36,19 @@ struct GridArrays {
   Vec4* list_origin;           // where each sorted particle stood at the last rebuild
   ListRefreshState* refresh;   // whether to rebuild, and whether this step did
 };
+
+// A particle's half key: its cell key times two, plus one in the cell's upper half along x
+// (GridShape::in_upper_half). Cell keys take at most 31 bits below 2^30 particles
+// (choose_grid_shape: about two cells per particle), whose arrays alone would take 120 GB.
+__device__ std::uint32_t half_key(const GridShape& grid, Vec3 x) {
+  return grid.key_of(x) << 1 | (grid.in_upper_half(x) ? 1u : 0u);
+}
+
+// A particle's half id: its index, plus 2^31 in its cell's upper half, so that half ids order a
+// cell's particles as the grid sorts them, its lower half first. Indices take at most 31 bits
+// (half_key says why).
+constexpr std::uint32_t kUpperHalfBit = 1u << 31;
+__device__ std::uint32_t half_id(std::uint32_t i, std::uint32_t half_key) { return half_key & 1u ? i | kUpperHalfBit : i; }
 
 // Visits items first, first + stride, ... below count: every thread of the kernel's grid, which
 // is no larger than the blocks that fit on the device at once (a cooperative launch).
@@ -44,9 +58,10 @@ __device__ void for_each_grid_item(std::uint32_t count, Visit&& visit) {
   for (std::uint32_t k = blockIdx.x * blockDim.x + threadIdx.x; k < count; k += stride) visit(k);
 }
 
-// Stage 2 below: cell_start, the exclusive scan of the cell counts. Each block owns a share of the
-// table (block_share): it adds up its share's counts, then, once every block has, the totals of
-// the blocks before it, and scans its share from there a tile at a time (cub::BlockScan).
+// Stage 2 below: cell_start, the exclusive scan of the cells' counts, and cell_middle, where each
+// cell's upper half begins. Each block owns a share of the table (block_share): it adds up its
+// share's counts, then, once every block has, the totals of the blocks before it, and scans its
+// share from there a tile at a time (cub::BlockScan).
 __device__ void scan_cell_counts(const GridArrays& a, cg::grid_group grid) {
   using Reduce = cub::BlockReduce<std::uint32_t, kBlock>;
   using Scan = cub::BlockScan<std::uint32_t, kBlock>;
@@ -72,7 +87,10 @@ __device__ void scan_cell_counts(const GridArrays& a, cg::grid_group grid) {
     std::uint32_t below = 0;
     std::uint32_t tile_total = 0;
     Scan(storage.scan).ExclusiveSum(k < end ? a.cell_count[k] : 0u, below, tile_total);
-    if (k < end) a.cell_start[k] = running + below;
+    if (k < end) {
+      a.cell_start[k] = running + below;
+      a.cell_middle[k] = running + below;  // an empty cell's; stage 4 writes the others'
+    }
     running += tile_total;
     __syncthreads();  // the next tile reuses the scan's storage
   }
@@ -93,18 +111,24 @@ __device__ bool lists_expired(const GridArrays& a, const ListSkin& skin, cg::gri
   return a.refresh->moved_far != 0 || a.refresh->requested != 0;
 }
 
-// The neighbour grid by a counting sort, stable like a sort of (key, index) pairs (the cpu
-// backend's order), so every run lays the particles out alike. One cooperative kernel whose
-// stages wait for each other at grid-wide barriers:
-// 1. each particle's cell key, and a count per cell (integer atomics: the counts, not their
+// The neighbour grid by a counting sort, stable like a sort of (half key, index) pairs, so every
+// run lays the particles out alike: by cell as on the host, and within a cell its lower half along
+// x first (CellRanges::cell_middle). One cooperative kernel whose stages wait for each other at
+// grid-wide barriers:
+// 1. each particle's half key, and a count per cell (integer atomics: the counts, not their
 //    order, are kept);
 // 2. the cell table, cell_start[k] = particles in cells below k (scan_cell_counts);
 // 3. each particle takes a slot in its cell's range (atomically, in no fixed order), writes its
-//    index there and gives back its count, so the counts are zero again for the next rebuild;
-// 4. each particle counts the particles of its cell with a smaller index in those slots: its rank
-//    in the canonical order within the cell, so its place in cell order, where it copies itself;
-//    the first of each cell also notes whether all of the cell's particles share its body
-//    (CellRanges::cell_body).
+//    half id there and gives back its count, so the counts are zero again for the next rebuild;
+// 4. each particle counts the half ids of its cell smaller than its own in those slots: its rank
+//    in the cell's sorted order, so its place in cell order (sorted_id); the first of each cell
+//    also notes where its upper half begins (CellRanges::cell_middle) and whether all of the
+//    cell's particles share its body (CellRanges::cell_body);
+// 5. each place in cell order copies its particle there: the writes in order, the reads gathered.
+//    (Copied by each particle to its place instead, the writes scatter, and a lattice's particle
+//    and its next along x, whose 16-byte entries shared a 32-byte sector when adjacent, land in the
+//    two halves of their cell: on an H100 that took the 1M blocks' grid 30-42 us longer than
+//    whole cells did; results/performance.md.)
 // With lists (`check`), the kernel first checks them (lists_expired) and, while they hold, ends
 // there: one launch per step. (The check as its own kernel followed by a conditional graph node
 // around the rebuild's five kernels took 6.9 us more per step on an H100; results/performance.md.)
@@ -117,16 +141,17 @@ __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check, 
     return;
   }
   for_each_grid_item(a.n, [&](std::uint32_t i) {
-    const std::uint32_t key = a.grid.key_of(xyz(a.position[i]));
+    const std::uint32_t key = half_key(a.grid, xyz(a.position[i]));
     a.keys[i] = key;
-    atomicAdd(&a.cell_count[key], 1u);
+    atomicAdd(&a.cell_count[key >> 1], 1u);
   });
   grid.sync();
   scan_cell_counts(a, grid);
   grid.sync();
   for_each_grid_item(a.n, [&](std::uint32_t i) {
     const std::uint32_t key = a.keys[i];
-    a.unordered_id[a.cell_start[key] + atomicSub(&a.cell_count[key], 1u) - 1u] = i;
+    const std::uint32_t cell = key >> 1;
+    a.unordered_id[a.cell_start[cell] + atomicSub(&a.cell_count[cell], 1u) - 1u] = half_id(i, key);
   });
   grid.sync();
   if (a.refresh && grid.thread_rank() == 0) {
@@ -134,16 +159,28 @@ __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check, 
   }
   for_each_grid_item(a.n, [&](std::uint32_t i) {
     const std::uint32_t key = a.keys[i];
-    const std::uint32_t first = a.cell_start[key];
-    const std::uint32_t end = a.cell_start[key + 1];
-    std::uint32_t rank = 0;
-    for (std::uint32_t slot = first; slot < end; ++slot) rank += a.unordered_id[slot] < i ? 1u : 0u;
-    if (a.cell_body && rank == 0) {
-      a.cell_body[key] = cell_body_code(end - first, [&](std::uint32_t k) { return a.body[a.unordered_id[first + k]]; });
+    const std::uint32_t cell = key >> 1;
+    const std::uint32_t own = half_id(i, key);
+    const std::uint32_t first = a.cell_start[cell];
+    const std::uint32_t end = a.cell_start[cell + 1];
+    std::uint32_t rank = 0, lower_half = 0;
+    for (std::uint32_t slot = first; slot < end; ++slot) {
+      const std::uint32_t other = a.unordered_id[slot];
+      rank += other < own ? 1u : 0u;
+      lower_half += other < kUpperHalfBit ? 1u : 0u;
     }
-    const std::uint32_t s = first + rank;
-    a.sorted_id[s] = i;
-    place_in_cell_order(s, i, a.position, a.velocity, a.body, a.sorted_position, a.sorted_velocity);
+    if (rank == 0) {
+      a.cell_middle[cell] = first + lower_half;
+      if (a.cell_body) {
+        a.cell_body[cell] = cell_body_code(
+            end - first, [&](std::uint32_t k) { return a.body[a.unordered_id[first + k] & ~kUpperHalfBit]; });
+      }
+    }
+    a.sorted_id[first + rank] = i;
+  });
+  grid.sync();
+  for_each_grid_item(a.n, [&](std::uint32_t s) {
+    place_in_cell_order(s, a.sorted_id[s], a.position, a.velocity, a.body, a.sorted_position, a.sorted_velocity);
     if (a.list_origin) a.list_origin[s] = a.sorted_position[s];
   });
 }
@@ -157,6 +194,7 @@ GridArrays grid_arrays(DeviceState& state, const GridShape& grid) {
           state.keys.data(),
           state.cell_count.data(),
           state.cell_start.data(),
+          state.cell_middle.data(),
           state.cell_body.data(),
           state.unordered_id.data(),
           state.block_total.data(),

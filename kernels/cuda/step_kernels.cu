@@ -98,9 +98,18 @@ __global__ void elastic_force_kernel(DeformableView view) {
 // team_list_capacity, says why). Every particle also stores whether another body lies within h
 // of it (taken by rigid and deformable particles only: DensitySum::nearest_other_body2), which
 // lets the force pass skip the walk of those without one (may_feel_forces).
+// Blocks of the density kernel that must fit on a multiprocessor at once, which caps its registers
+// as for the force kernel (kForceBlocksPerMultiprocessor). One lane's walk over split cells
+// (CellRanges::cell_middle) compiles to 41 registers, so 5 blocks; held to 6 (40 registers, a few
+// bytes spilled), because on an H100 the 1M rigid and deformable blocks' density passes, most of
+// whose particles only check their rows, took 23 us longer at 5 (results/performance.md). Teams
+// (8 blocks, 32 registers) compile to that anyway; under 6 they took 36.
+constexpr int density_blocks_per_multiprocessor(unsigned lanes) { return lanes == 1 ? 6 : 8; }
+
 template <unsigned Lanes>
-__global__ void density_kernel(SortedView view, VolumePressure* volume_pressure, std::uint8_t* near_other_body,
-                               NeighbourLists lists, ListRefreshState* refresh, float record_radius2) {
+__global__ void __launch_bounds__(kBlock, density_blocks_per_multiprocessor(Lanes))
+    density_kernel(SortedView view, VolumePressure* volume_pressure, std::uint8_t* near_other_body,
+                   NeighbourLists lists, ListRefreshState* refresh, float record_radius2) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;

@@ -112,6 +112,7 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   EXPECT_EQ(bytes_of(listed, "sorted_id"), n * 4);
   EXPECT_EQ(bytes_of(listed, "near_other_body"), n);
   EXPECT_EQ(bytes_of(listed, "cell_start"), (cells + 1) * 4);
+  EXPECT_EQ(bytes_of(listed, "cell_middle"), (cells + 1) * 4);
   EXPECT_EQ(bytes_of(listed, "elastic_force"), n * 16);
   EXPECT_EQ(bytes_of(listed, "own_rest_number_density"), n * 4);
   EXPECT_EQ(bytes_of(listed, "cell_body"), (cells + 1) * 2);

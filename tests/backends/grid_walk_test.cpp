@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -22,19 +23,36 @@ namespace {
 
 using kernels::Vec3;
 
+// Which half a walk from x trims where cells are split (CellRanges::trimmed_side), from x's place in
+// its cell in double precision: +1 above the middle by kHalfTrimMargin, -1 below it by as much.
+int side_trimmed_from(const SortedParticles& sorted, Vec3 x) {
+  if (sorted.cell_middle.empty()) return 0;
+  const double in_cells = static_cast<double>(x.x) * static_cast<double>(sorted.shape.inverse_cell_size);
+  const double fraction = in_cells - std::floor(in_cells);
+  const double margin = kernels::kHalfTrimMargin;
+  return fraction >= 0.5 + margin ? 1 : fraction < 0.5 - margin ? -1 : 0;
+}
+
 // The contiguous ranges of the walk around x, each as the sorted indices it holds: a row of three
 // cells along x when their keys are consecutive, else each cell alone; every cell's particles found
-// by testing every particle's key.
-std::vector<std::vector<std::uint32_t>> expected_ranges(const SortedParticles& sorted, Vec3 x) {
+// by testing every particle's key. Where cells are split, the cell below x along x holds only its
+// upper half's particles when x lies above its own cell's middle, the cell above only its lower
+// half's when x lies below it (side_trimmed_from), unless `trim` is false.
+std::vector<std::vector<std::uint32_t>> expected_ranges(const SortedParticles& sorted, Vec3 x, bool trim = true) {
   const kernels::GridShape& shape = sorted.shape;
   int cx, cy, cz;
   shape.cell_of(x, cx, cy, cz);
+  const int side = trim ? side_trimmed_from(sorted, x) : 0;
+  const auto trimmed = [&](int dx, std::uint32_t s) {
+    const bool upper = shape.in_upper_half(kernels::xyz(sorted.position[s]));
+    return (dx < 0 && side > 0 && !upper) || (dx > 0 && side < 0 && upper);
+  };
   std::vector<std::uint32_t> key_of_particle(sorted.position.size());
   for (std::uint32_t s = 0; s < sorted.position.size(); ++s) key_of_particle[s] = shape.key_of(kernels::xyz(sorted.position[s]));
-  const auto cell_particles = [&](std::uint32_t key) {
+  const auto cell_particles = [&](std::uint32_t key, int dx) {
     std::vector<std::uint32_t> in_cell;
     for (std::uint32_t s = 0; s < sorted.position.size(); ++s) {
-      if (key_of_particle[s] == key) in_cell.push_back(s);
+      if (key_of_particle[s] == key && !trimmed(dx, s)) in_cell.push_back(s);
     }
     return in_cell;
   };
@@ -45,7 +63,7 @@ std::vector<std::vector<std::uint32_t>> expected_ranges(const SortedParticles& s
       if (one_row) ranges.emplace_back();
       for (int dx = -1; dx <= 1; ++dx) {
         if (!one_row) ranges.emplace_back();
-        const std::vector<std::uint32_t> in_cell = cell_particles(shape.key(cx + dx, cy + dy, cz + dz));
+        const std::vector<std::uint32_t> in_cell = cell_particles(shape.key(cx + dx, cy + dy, cz + dz), dx);
         ranges.back().insert(ranges.back().end(), in_cell.begin(), in_cell.end());
       }
     }
@@ -87,33 +105,109 @@ std::vector<Vec3> query_points(const SortedParticles& sorted, std::mt19937_64& r
   return points;
 }
 
+// Over whole cells (the host's sort) and over split ones (the GPU's: CellRanges::cell_middle).
 TEST(GridWalk, EveryLaneVisitsItsStridedShareOfEachRange) {
-  std::mt19937_64 random(20261124);
-  const SortedParticles sorted = clustered_particles(random);
-  const std::vector<Vec3> points = query_points(sorted, random);
-  std::size_t longest_range = 0, wrapped_walks = 0;
+  for (const bool half_cells : {false, true}) {
+    SCOPED_TRACE(::testing::Message() << (half_cells ? "half cells" : "whole cells"));
+    std::mt19937_64 random(20261124);
+    const SortedParticles sorted = clustered_particles(random, half_cells);
+    const std::vector<Vec3> points = query_points(sorted, random);
+    std::size_t longest_range = 0, wrapped_walks = 0, trimmed_walks = 0;
+    for (std::size_t q = 0; q < points.size(); ++q) {
+      SCOPED_TRACE(::testing::Message() << "query " << q);
+      const Vec3 x = points[q];
+      // One lane trims halves; a team's lanes walk whole cells.
+      const std::vector<std::vector<std::uint32_t>> ranges = expected_ranges(sorted, x);
+      const std::vector<std::vector<std::uint32_t>> whole = expected_ranges(sorted, x, /*trim=*/false);
+      if (ranges.size() > 9) ++wrapped_walks;
+      if (side_trimmed_from(sorted, x) != 0) ++trimmed_walks;
+      for (const std::vector<std::uint32_t>& range : whole) longest_range = std::max(longest_range, range.size());
+      for (const std::uint32_t lanes : {1u, 2u, 3u, 4u, 8u}) expect_team_walk(sorted, x, lanes == 1 ? ranges : whole, lanes);
+      if (HasFatalFailure()) return;
+    }
+    // The walk's corner cases were met: a row of many turns of 8 lanes, rows split where the grid
+    // wraps, and (half cells) trimmed walks.
+    EXPECT_GT(longest_range, 8u * 4u);
+    EXPECT_GT(wrapped_walks, 0u);
+    if (half_cells) {
+      EXPECT_GT(trimmed_walks, 100u);
+    }
+  }
+}
+
+// Particles and points at the halves' boundaries along x, in every cell from -3 to 3 m: fractions
+// of a cell 0, 0.5 and 0.5 +- kHalfTrimMargin, each also a float step either side, and just below
+// 1; y and z at random in the same cells.
+std::vector<Vec3> on_half_boundaries(std::mt19937_64& random) {
+  std::uniform_real_distribution<float> across(-3.0f, 4.0f);
+  const float margin = kernels::kHalfTrimMargin;
+  std::vector<float> fractions;
+  for (const float f : {0.0f, 0.5f, 0.5f - margin, 0.5f + margin}) {
+    fractions.push_back(f);
+    fractions.push_back(std::nextafter(f, -1.0f));
+    fractions.push_back(std::nextafter(f, 2.0f));
+  }
+  fractions.push_back(std::nextafter(1.0f, 0.0f));
+  std::vector<Vec3> points;
+  for (int cell = -3; cell <= 3; ++cell) {
+    for (const float f : fractions) {
+      for (int k = 0; k < 4; ++k) points.push_back(Vec3{static_cast<float>(cell) + f, across(random), across(random)});
+    }
+  }
+  return points;
+}
+
+// Where cells are split, a walk trims only particles farther than a cell from its point: every
+// particle closer than one cell (r^2 < 1 m^2 in float, as the sums test it) is visited, and once,
+// also for particles and points on the halves' boundaries; and the trimming happened (walks that
+// visited fewer candidates than the same walk over whole rows).
+TEST(GridWalk, AWalkOverSplitCellsVisitsEveryParticleWithinACell) {
+  std::mt19937_64 random(20261128);
+  std::uniform_real_distribution<float> spread(-2.5f, 3.5f);
+  std::vector<kernels::Vec4> particles;
+  for (const Vec3 x : on_half_boundaries(random)) particles.push_back(kernels::Vec4{x.x, x.y, x.z, 0.0f});
+  for (int p = 0; p < 600; ++p) particles.push_back(kernels::Vec4{spread(random), spread(random), spread(random), 0.0f});
+  kernels::GridShape shape;
+  shape.inverse_cell_size = 1.0f;
+  shape.bits_x = 3;
+  const SortedParticles sorted = sort_into_half_cells(particles, shape);
+  const kernels::CellRanges grid = sorted.grid();
+  kernels::CellRanges whole_rows = grid;
+  whole_rows.cell_middle = nullptr;
+  std::vector<Vec3> points = on_half_boundaries(random);
+  for (int q = 0; q < 200; ++q) points.push_back(Vec3{spread(random), spread(random), spread(random)});
+  std::size_t trimmed_walks = 0, near_pairs = 0;
   for (std::size_t q = 0; q < points.size(); ++q) {
     SCOPED_TRACE(::testing::Message() << "query " << q);
     const Vec3 x = points[q];
-    const std::vector<std::vector<std::uint32_t>> ranges = expected_ranges(sorted, x);
-    if (ranges.size() > 9) ++wrapped_walks;
-    for (const std::vector<std::uint32_t>& range : ranges) longest_range = std::max(longest_range, range.size());
-    for (const std::uint32_t lanes : {1u, 2u, 3u, 4u, 8u}) expect_team_walk(sorted, x, ranges, lanes);
-    if (HasFatalFailure()) return;
+    std::vector<int> times_visited(sorted.position.size(), 0);
+    std::size_t visits = 0, whole_visits = 0;
+    grid.for_each_candidate(x, [&](std::uint32_t t) {
+      ++times_visited[t];
+      ++visits;
+    });
+    whole_rows.for_each_candidate(x, [&](std::uint32_t) { ++whole_visits; });
+    for (std::uint32_t t = 0; t < sorted.position.size(); ++t) {
+      ASSERT_LE(times_visited[t], 1) << "particle " << t;
+      if (kernels::squared_norm(x - kernels::xyz(sorted.position[t])) < 1.0f) {
+        ++near_pairs;
+        ASSERT_EQ(times_visited[t], 1) << "particle " << t << " within a cell was not visited";
+      }
+    }
+    if (visits < whole_visits) ++trimmed_walks;
   }
-  // The walk's corner cases were met: a row of many turns of 8 lanes, and rows split where the grid
-  // wraps.
-  EXPECT_GT(longest_range, 8u * 4u);
-  EXPECT_GT(wrapped_walks, 0u);
+  EXPECT_GT(trimmed_walks, 100u);
+  EXPECT_GT(near_pairs, 1000u);
 }
 
 // The one-lane walk of the large GPU scenes' force sums (for_each_candidate_within) visits the
 // candidates of for_each_candidate that lie within the radius, in the same order, also where a
 // range holds more than the 32 candidates of one mask, and where the walk finds more segments
-// with a near candidate than it can hold (capacities of 1 and 3), so it visits them in several goes.
+// with a near candidate than it can hold (capacities of 1 and 3), so it visits them in several goes;
+// over split cells, as the GPU's one-lane walks go.
 TEST(GridWalk, TheWalkWithinARadiusVisitsTheNearCandidatesInTheWalksOrder) {
   std::mt19937_64 random(20261127);
-  const SortedParticles sorted = clustered_particles(random);
+  const SortedParticles sorted = clustered_particles(random, /*half_cells=*/true);
   const kernels::CellRanges grid = sorted.grid();
   const std::vector<Vec3> points = query_points(sorted, random);
   std::size_t near_beyond_a_mask = 0, candidates_left_out = 0;
@@ -170,7 +264,7 @@ TEST(CellBody, NamesTheBodyAllOfACellsParticlesShareElseMarksTheCellMixed) {
 // 13th particle body 3; the cells' entries as the GPU's grid writes them, empty cells' set to
 // kMixedCell, as a stale entry may be.
 SortedParticles three_bodies(std::mt19937_64& random) {
-  SortedParticles sorted = clustered_particles(random);
+  SortedParticles sorted = clustered_particles(random, /*half_cells=*/true);
   for (std::size_t s = 0; s < sorted.position.size(); ++s) {
     const std::uint32_t body = s % 13 == 0 ? 3u : sorted.position[s].x < 0.5f ? 1u : 2u;
     sorted.position[s].w = kernels::index_as_float_bits(body);
@@ -199,17 +293,22 @@ LeftOutWalks expect_walks_leave_out_rows(const SortedParticles& sorted, const st
     left_outs.push_back(kernels::kNoBody);
     for (const std::uint32_t left_out : left_outs) {
       SCOPED_TRACE(::testing::Message() << "body left out " << left_out);
-      std::vector<std::vector<std::uint32_t>> kept;
-      for (const std::vector<std::uint32_t>& range : expected_ranges(sorted, x)) {
-        if (range.empty()) continue;
+      // A range is left out by what its whole cells hold, trimmed halves included; one lane walks
+      // the rest trimmed, a team's lanes whole.
+      std::vector<std::vector<std::uint32_t>> kept, kept_whole;
+      const std::vector<std::vector<std::uint32_t>> ranges = expected_ranges(sorted, x);
+      const std::vector<std::vector<std::uint32_t>> whole = expected_ranges(sorted, x, /*trim=*/false);
+      for (std::size_t r = 0; r < ranges.size(); ++r) {
+        if (whole[r].empty()) continue;
         const bool only_left_out = left_out < kernels::kMixedCell &&
-                                   std::all_of(range.begin(), range.end(), [&](std::uint32_t t) {
+                                   std::all_of(whole[r].begin(), whole[r].end(), [&](std::uint32_t t) {
                                      return kernels::body_of(sorted.position[t]) == left_out;
                                    });
         if (only_left_out) {
           ++met.rows_left_out;
         } else {
-          kept.push_back(range);
+          kept.push_back(ranges[r]);
+          kept_whole.push_back(whole[r]);
           if (left_out != kernels::kNoBody) ++met.rows_kept;
         }
       }
@@ -217,7 +316,7 @@ LeftOutWalks expect_walks_leave_out_rows(const SortedParticles& sorted, const st
         for (std::uint32_t lane = 0; lane < lanes; ++lane) {
           std::vector<std::uint32_t> visits, expected;
           grid.for_each_candidate(x, lane, lanes, [&](std::uint32_t t) { visits.push_back(t); }, left_out);
-          for (const std::vector<std::uint32_t>& range : kept) {
+          for (const std::vector<std::uint32_t>& range : lanes == 1 ? kept : kept_whole) {
             for (std::size_t k = lane; k < range.size(); k += lanes) expected.push_back(range[k]);
           }
           EXPECT_EQ(visits, expected) << "lane " << lane << " of " << lanes;
@@ -278,7 +377,7 @@ TEST(GridWalk, LeavesOutNoRowForABodyNoCellEntryCanName) {
   const SortedParticles sorted = block_with_intruders();
   std::mt19937_64 random(20261128);
   std::vector<Vec3> points;
-  for (std::size_t s = 0; s < sorted.position.size(); s += 9) points.push_back(kernels::xyz(sorted.position[s]));
+  for (std::size_t s = 0; s < sorted.position.size(); s += 15) points.push_back(kernels::xyz(sorted.position[s]));
   std::uniform_real_distribution<float> anywhere(-1.0f, 17.0f);
   for (int q = 0; q < 200; ++q) points.push_back(Vec3{anywhere(random), anywhere(random), anywhere(random)});
   const LeftOutWalks met = expect_walks_leave_out_rows(sorted, points, {1u, 2u, 0xffffu});

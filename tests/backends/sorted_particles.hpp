@@ -16,9 +16,11 @@ struct SortedParticles {
   std::vector<std::uint32_t> cell_start;  // shape.cell_count() + 1 entries
   std::vector<kernels::Vec4> position;    // cell order; xyz [m], w = body index bits
   std::vector<std::uint16_t> cell_body;   // empty, or CellRanges::cell_body (note_cell_bodies)
+  std::vector<std::uint32_t> cell_middle;  // empty, or CellRanges::cell_middle (sort_into_half_cells)
 
   kernels::CellRanges grid() const {
-    return kernels::CellRanges{shape, cell_start.data(), cell_body.empty() ? nullptr : cell_body.data()};
+    return kernels::CellRanges{shape, cell_start.data(), cell_body.empty() ? nullptr : cell_body.data(),
+                               cell_middle.empty() ? nullptr : cell_middle.data()};
   }
 
   // Fills cell_body as the GPU's grid does, so that the walks of rigid and deformable particles
@@ -35,23 +37,46 @@ struct SortedParticles {
   }
 };
 
+// A stable counting sort of the particles by sort_key(x) < key_count; returns where each key's
+// particles begin (key_count + 1 entries) and fills `sorted` with the particles in that order.
+template <class SortKey>
+std::vector<std::uint32_t> counting_sort(const std::vector<kernels::Vec4>& particles, std::uint32_t key_count,
+                                         SortKey&& sort_key, std::vector<kernels::Vec4>& sorted) {
+  std::vector<std::uint32_t> start(std::size_t{key_count} + 1, 0u), key(particles.size());
+  for (std::size_t p = 0; p < particles.size(); ++p) key[p] = sort_key(kernels::xyz(particles[p]));
+  for (const std::uint32_t k : key) ++start[k + 1];
+  for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+  sorted.resize(particles.size());
+  for (std::size_t p = 0; p < particles.size(); ++p) sorted[next[key[p]]++] = particles[p];
+  return start;
+}
+
 inline SortedParticles sort_into_grid(const std::vector<kernels::Vec4>& particles, kernels::GridShape shape) {
-  SortedParticles sorted{shape, std::vector<std::uint32_t>(std::size_t{shape.cell_count()} + 1, 0u), {}, {}};
-  std::vector<std::uint32_t> key(particles.size());
-  for (std::size_t p = 0; p < particles.size(); ++p) key[p] = shape.key_of(kernels::xyz(particles[p]));
-  for (const std::uint32_t k : key) ++sorted.cell_start[k + 1];
-  for (std::size_t k = 1; k < sorted.cell_start.size(); ++k) sorted.cell_start[k] += sorted.cell_start[k - 1];
-  std::vector<std::uint32_t> next(sorted.cell_start.begin(), sorted.cell_start.end() - 1);
-  sorted.position.resize(particles.size());
-  for (std::size_t p = 0; p < particles.size(); ++p) sorted.position[next[key[p]]++] = particles[p];
+  SortedParticles sorted{shape, {}, {}, {}, {}};
+  sorted.cell_start = counting_sort(particles, shape.cell_count(),
+                                    [&](kernels::Vec3 x) { return shape.key_of(x); }, sorted.position);
   return sorted;
 }
 
-// Grid-walk test particles: 2^3 x 2^2 x 2^2 cells of side 1 m, 300 particles spread over a 6 m cube (cells -3 to 3 on each
+// Sorted as the GPU's grid sorts them: by cell, each cell's lower half along x first
+// (GridShape::in_upper_half), with cell_middle where each cell's upper half begins.
+inline SortedParticles sort_into_half_cells(const std::vector<kernels::Vec4>& particles, kernels::GridShape shape) {
+  SortedParticles sorted{shape, {}, {}, {}, {}};
+  const std::vector<std::uint32_t> half_start = counting_sort(
+      particles, 2 * shape.cell_count(),
+      [&](kernels::Vec3 x) { return 2 * shape.key_of(x) + (shape.in_upper_half(x) ? 1u : 0u); }, sorted.position);
+  for (std::uint32_t k = 0; k <= shape.cell_count(); ++k) sorted.cell_start.push_back(half_start[2 * k]);
+  for (std::uint32_t k = 0; k < shape.cell_count(); ++k) sorted.cell_middle.push_back(half_start[2 * k + 1]);
+  return sorted;
+}
+
+// Grid-walk test particles, sorted as the host sorts them or, with half_cells, as the GPU does:
+// 2^3 x 2^2 x 2^2 cells of side 1 m, 300 particles spread over a 6 m cube (cells -3 to 3 on each
 // axis: more than the grid's 4 along y and z, so distant particles share keys; across the period of
 // 8 along x, so rows split there) and 400 packed into one cell, whose rows then hold many times 8
 // candidates.
-inline SortedParticles clustered_particles(std::mt19937_64& random) {
+inline SortedParticles clustered_particles(std::mt19937_64& random, bool half_cells = false) {
   std::uniform_real_distribution<float> spread(-2.5f, 3.5f), packed(0.05f, 0.95f);
   std::vector<kernels::Vec4> particles;
   for (int p = 0; p < 300; ++p) particles.push_back(kernels::Vec4{spread(random), spread(random), spread(random), 0.0f});
@@ -59,7 +84,7 @@ inline SortedParticles clustered_particles(std::mt19937_64& random) {
   kernels::GridShape shape;
   shape.inverse_cell_size = 1.0f;
   shape.bits_x = 3;
-  return sort_into_grid(particles, shape);
+  return half_cells ? sort_into_half_cells(particles, shape) : sort_into_grid(particles, shape);
 }
 
 }  // namespace mssph::testing
