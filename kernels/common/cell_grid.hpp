@@ -153,8 +153,12 @@ struct CellRanges {
   }
   // Where a walk from side `side` begins cell k, the cell below it along x; where it ends cell k,
   // the cell above.
-  MSSPH_HD std::uint32_t begin_below(std::uint32_t k, int side) const { return side > 0 ? cell_middle[k] : cell_start[k]; }
-  MSSPH_HD std::uint32_t end_above(std::uint32_t k, int side) const { return side < 0 ? cell_middle[k] : cell_start[k + 1]; }
+  MSSPH_HD std::uint32_t begin_below(std::uint32_t k, int side) const {
+    return side > 0 ? cell_middle[k] : cell_start[k];
+  }
+  MSSPH_HD std::uint32_t end_above(std::uint32_t k, int side) const {
+    return side < 0 ? cell_middle[k] : cell_start[k + 1];
+  }
 
   // Whether cells first to last (consecutive keys) hold no particle of a body other than `body`;
   // false where cell_body is null, or body is kNoBody or any index an entry cannot name (it would
@@ -190,7 +194,8 @@ struct CellRanges {
           for (int dx = -1; dx <= 1; ++dx) {
             const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
             if (!cells_hold_only(k, k, left_out)) {
-              visit_range(dx < 0 ? begin_below(k, side) : cell_start[k], dx > 0 ? end_above(k, side) : cell_start[k + 1]);
+              visit_range(dx < 0 ? begin_below(k, side) : cell_start[k],
+                          dx > 0 ? end_above(k, side) : cell_start[k + 1]);
             }
           }
         }

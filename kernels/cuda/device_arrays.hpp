@@ -129,7 +129,8 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   // Zero at the start; the slot kernel takes every count back to zero for the next step.
   visit("cell_count", a.cell_count, Filled<std::uint32_t>{cell_table, 0u});
   visit("cell_start", a.cell_start, Uninitialised{cell_table});
-  visit("cell_middle", a.cell_middle, Uninitialised{cell_table});  // CellRanges::cell_middle
+  // CellRanges::cell_middle: every rebuild writes every entry (the scan, then each non-empty cell's).
+  visit("cell_middle", a.cell_middle, Uninitialised{cell_table});
   visit("own_rest_number_density", a.own_rest_number_density, copy_of(scene.own_rest_number_density));
   // Where particles take their own body at rest, their walks leave out its rows (CellRanges): each
   // rebuild writes the entries of the non-empty cells, the only ones read.

@@ -48,7 +48,9 @@ __device__ std::uint32_t half_key(const GridShape& grid, Vec3 x) {
 // cell's particles as the grid sorts them, its lower half first. Indices take at most 31 bits
 // (half_key says why).
 constexpr std::uint32_t kUpperHalfBit = 1u << 31;
-__device__ std::uint32_t half_id(std::uint32_t i, std::uint32_t half_key) { return half_key & 1u ? i | kUpperHalfBit : i; }
+__device__ std::uint32_t half_id(std::uint32_t i, std::uint32_t half_key) {
+  return half_key & 1u ? i | kUpperHalfBit : i;
+}
 
 // Visits items first, first + stride, ... below count: every thread of the kernel's grid, which
 // is no larger than the blocks that fit on the device at once (a cooperative launch).

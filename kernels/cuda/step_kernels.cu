@@ -91,13 +91,6 @@ __global__ void elastic_force_kernel(DeformableView view) {
   if (active && lane == 0) store_elastic_force(view, d, force);
 }
 
-// A team's lane, on a step that rebuilt the grid, records the candidates of its share within
-// h + skin in its list (lists: one per thread), for the force pass and the steps until the next
-// rebuild, and asks for the next step to rebuild if the list overflowed; on the other steps it
-// sums over that list. One lane alone records none and walks every step (device_arrays.hpp,
-// team_list_capacity, says why). Every particle also stores whether another body lies within h
-// of it (taken by rigid and deformable particles only: DensitySum::nearest_other_body2), which
-// lets the force pass skip the walk of those without one (may_feel_forces).
 // Blocks of the density kernel that must fit on a multiprocessor at once, which caps its registers
 // as for the force kernel (kForceBlocksPerMultiprocessor). One lane's walk over split cells
 // (CellRanges::cell_middle) compiles to 41 registers, so 5 blocks; held to 6 (40 registers, a few
@@ -106,6 +99,13 @@ __global__ void elastic_force_kernel(DeformableView view) {
 // (8 blocks, 32 registers) compile to that anyway; under 6 they took 36.
 constexpr int density_blocks_per_multiprocessor(unsigned lanes) { return lanes == 1 ? 6 : 8; }
 
+// A team's lane, on a step that rebuilt the grid, records the candidates of its share within
+// h + skin in its list (lists: one per thread), for the force pass and the steps until the next
+// rebuild, and asks for the next step to rebuild if the list overflowed; on the other steps it
+// sums over that list. One lane alone records none and walks every step (device_arrays.hpp,
+// team_list_capacity, says why). Every particle also stores whether another body lies within h
+// of it (taken by rigid and deformable particles only: DensitySum::nearest_other_body2), which
+// lets the force pass skip the walk of those without one (may_feel_forces).
 template <unsigned Lanes>
 __global__ void __launch_bounds__(kBlock, density_blocks_per_multiprocessor(Lanes))
     density_kernel(SortedView view, VolumePressure* volume_pressure, std::uint8_t* near_other_body,
