@@ -143,7 +143,8 @@ __global__ void __launch_bounds__(kBlock, density_blocks_per_multiprocessor(Lane
 // segments were held; at 5 blocks (48 registers) 489 us, at 4 (64, no spills) 428 us, the 1M fluid
 // step 850 -> 760 us on an H100 (rigid 412 -> 419, deformable 888 -> 896, mixed 876 -> 858;
 // results/performance.md). Teams of lanes (small scenes) are held to 4 blocks, 64 registers, which
-// is what they compile to anyway (63); at 5, the 30k and 100k blocks were no faster.
+// is what they compile to anyway (62 since 0784025, 63 before); at 5, the 30k and 100k blocks
+// were no faster.
 inline constexpr int kForceBlocksPerMultiprocessor = 4;
 
 // The segments a one-lane force walk holds (HeldSegments) in the block's shared memory, a column
