@@ -160,26 +160,44 @@ struct CellRanges {
     return side < 0 ? cell_middle[k] : cell_start[k + 1];
   }
 
-  // Whether cells first to last (consecutive keys) hold no particle of a body other than `body`;
-  // false where cell_body is null, or body is kNoBody or any index an entry cannot name (it would
-  // read kMixedCell as its own).
-  MSSPH_HD bool cells_hold_only(std::uint32_t first, std::uint32_t last, std::uint32_t body) const {
-    if (cell_body == nullptr || body >= kMixedCell) return false;
-    for (std::uint32_t k = first; k <= last; ++k) {
-      if (cell_start[k] != cell_start[k + 1] && cell_body[k] != body) return false;
+  // Whether a walk can leave out cells that hold nothing but body `body`: not where cell_body is
+  // null, nor for kNoBody or any index an entry cannot name (it would read kMixedCell as its own).
+  MSSPH_HD bool may_leave_out(std::uint32_t body) const { return cell_body != nullptr && body < kMixedCell; }
+
+  // The cells of the 27 around x that hold no particle of a body other than `body` (empty ones
+  // included), as a mask: bit cell_bit(dx, dy, dz) for the cell at offset (dx, dy, dz) from x's.
+  // Only cells cell_bit = share, share + shares, ... are checked, the others' bits are clear:
+  // lanes that share a cell and a body split the 27 checks and join their masks (step_kernels.cu).
+  // 0 where no cell can be left out (may_leave_out).
+  MSSPH_HD std::uint32_t cells_holding_only(Vec3 x, std::uint32_t body, std::uint32_t share = 0,
+                                            std::uint32_t shares = 1) const {
+    if (!may_leave_out(body)) return 0;
+    int cx, cy, cz;
+    shape.cell_of(x, cx, cy, cz);
+    std::uint32_t cells = 0;
+    for (std::uint32_t bit = share; bit < 27; bit += shares) {
+      const int dx = static_cast<int>(bit % 3) - 1;  // bit = cell_bit(dx, dy, dz)
+      const int dy = static_cast<int>(bit / 3 % 3) - 1;
+      const int dz = static_cast<int>(bit / 9) - 1;
+      const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
+      if (cell_start[k] == cell_start[k + 1] || cell_body[k] == body) cells |= 1u << bit;
     }
-    return true;
+    return cells;
+  }
+  // The bit of the cell at offset (dx, dy, dz) in a mask of the 27 cells around a point.
+  MSSPH_HD static std::uint32_t cell_bit(int dx, int dy, int dz) {
+    return static_cast<std::uint32_t>(9 * (dz + 1) + 3 * (dy + 1) + dx + 1);
   }
 
   // Calls visit_range(begin, end) for each contiguous range [begin, end) of sorted particles that
   // the 27 cells around x make, less the halves the walk trims if `trim_halves` (cell_middle): one
   // per row of three cells along x, or one per cell where the row wraps around the grid's x
-  // period. A row (or wrapped cell), judged by its whole cells, that holds nothing but particles of
-  // body `left_out` is not visited: the density walks of rigid and deformable particles leave out
-  // their own body's, whose pairs add nothing to their sums (fluid_physics.hpp, rows_left_out),
-  // and which make up every row inside a large block.
+  // period. A row whose three cells (or a wrapped cell) are all in the mask `cells_left_out`
+  // (cells_holding_only) is not visited: the density walks of rigid and deformable particles leave
+  // out those that hold nothing but their own body, whose pairs add nothing to their sums
+  // (fluid_physics.hpp, body_left_out), and which make up every row inside a large block.
   template <class VisitRange>
-  MSSPH_HD void for_each_range(Vec3 x, VisitRange&& visit_range, std::uint32_t left_out = kNoBody,
+  MSSPH_HD void for_each_range(Vec3 x, VisitRange&& visit_range, std::uint32_t cells_left_out = 0,
                                bool trim_halves = true) const {
     int cx, cy, cz;
     shape.cell_of(x, cx, cy, cz);
@@ -188,12 +206,13 @@ struct CellRanges {
       for (int dy = -1; dy <= 1; ++dy) {
         const std::uint32_t first = shape.key(cx - 1, cy + dy, cz + dz);
         const std::uint32_t last = shape.key(cx + 1, cy + dy, cz + dz);
+        const std::uint32_t row_left_out = cells_left_out >> cell_bit(-1, dy, dz) & 7u;
         if (last == first + 2) {
-          if (!cells_hold_only(first, last, left_out)) visit_range(begin_below(first, side), end_above(last, side));
+          if (row_left_out != 7u) visit_range(begin_below(first, side), end_above(last, side));
         } else {  // the row wraps: three separate cells
           for (int dx = -1; dx <= 1; ++dx) {
             const std::uint32_t k = shape.key(cx + dx, cy + dy, cz + dz);
-            if (!cells_hold_only(k, k, left_out)) {
+            if ((row_left_out >> (dx + 1) & 1u) == 0) {
               visit_range(dx < 0 ? begin_below(k, side) : cell_start[k],
                           dx > 0 ? end_above(k, side) : cell_start[k + 1]);
             }
@@ -213,13 +232,13 @@ struct CellRanges {
   // blocks on every step (step_kernels.cu).
   template <class Visit>
   MSSPH_HD void for_each_candidate(Vec3 x, std::uint32_t lane, std::uint32_t lanes, Visit&& visit,
-                                   std::uint32_t left_out = kNoBody) const {
+                                   std::uint32_t cells_left_out = 0) const {
     for_each_range(
         x,
         [&](std::uint32_t begin, std::uint32_t end) {
           for (std::uint32_t s = begin + lane; s < end; s += lanes) visit(s);
         },
-        left_out, /*trim_halves=*/lanes == 1);
+        cells_left_out, /*trim_halves=*/lanes == 1);
   }
 
   // Calls visit(s) for every sorted particle s in the 27 cells around x that lies closer to x than

@@ -51,7 +51,7 @@ MSSPH_HD float add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, 
 // only the other bodies' neighbours live: a deformable particle, which reads the density of its
 // contact layer (model/deformable_rest_state.hpp, reads_contact_layer_density, says why), and a
 // rigid particle, whose share at rest is its live share, as its body's particles keep their
-// distances, so its walks need not visit its own body (rows_left_out). The reference sums a rigid
+// distances, so its walks need not visit its own body (body_left_out). The reference sums a rigid
 // body's share live (compute_densities): the agreement tests hold the two against each other.
 MSSPH_HD bool takes_own_body_at_rest(const BodyParameters& body) {
   return body.kind == kDeformable || body.kind == kRigid;
@@ -64,8 +64,16 @@ MSSPH_HD bool takes_own_body_at_rest(const BodyParameters& body) {
 // deformable block's from 245 to 161. The force walk leaves out nothing: inside a body it is
 // skipped whole (may_feel_forces), and near another body leaving rows out made the 1M rigid and
 // deformable force passes about 7 % slower (results/performance.md).
-MSSPH_HD std::uint32_t rows_left_out(const BodyParameters& body, std::uint32_t body_index) {
+MSSPH_HD std::uint32_t body_left_out(const BodyParameters& body, std::uint32_t body_index) {
   return takes_own_body_at_rest(body) ? body_index : kNoBody;
+}
+
+// The cells around sorted particle s that its density walk leaves out: those holding nothing but
+// its body_left_out (CellRanges::cells_holding_only), all 27 checked here; the GPU's lanes split
+// the checks (kernels/cuda/warp_cell_checks.cuh).
+MSSPH_HD std::uint32_t cells_left_out(const SortedView& v, std::uint32_t s) {
+  const Vec4 p = v.position[s];
+  return v.grid.cells_holding_only(xyz(p), body_left_out(v.bodies[body_of(p)], body_of(p)));
 }
 
 // Particle s's live density sum over the candidates that candidates(visit) hands to visit;
@@ -101,18 +109,22 @@ MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candi
 }
 
 // Particle s's grid walk as a candidate source: lane `lane` of `lanes`' share of the 27 cells
-// around it, less the rows of its own body where it leaves them out (rows_left_out).
-MSSPH_HD auto grid_share(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes) {
-  const Vec4 p = v.position[s];
-  const std::uint32_t left_out = rows_left_out(v.bodies[body_of(p)], body_of(p));
-  return [&v, x = xyz(p), lane, lanes, left_out](auto&& visit) {
+// around it, less the rows that `left_out` (its cells_left_out) covers.
+MSSPH_HD auto grid_share(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
+                         std::uint32_t left_out) {
+  return [&v, x = xyz(v.position[s]), lane, lanes, left_out](auto&& visit) {
     v.grid.for_each_candidate(x, lane, lanes, visit, left_out);
   };
 }
 
-// Lane `lane` of `lanes`' share of particle s's live density sum, from the grid.
+// Lane `lane` of `lanes`' share of particle s's live density sum, from the grid, given its
+// cells_left_out.
+MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
+                                std::uint32_t left_out) {
+  return density_sum_over(v, s, grid_share(v, s, lane, lanes, left_out));
+}
 MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes) {
-  return density_sum_over(v, s, grid_share(v, s, lane, lanes));
+  return density_sum(v, s, lane, lanes, cells_left_out(v, s));
 }
 
 // Boundary particles receive no force: they skip the force sum.
@@ -135,10 +147,11 @@ MSSPH_HD bool may_feel_forces(const BodyParameters& body, bool near_other_body) 
 // not listed, which its density takes at rest and which adds nothing to its force sum
 // (add_force_pair: no pressure or viscosity within such a body).
 MSSPH_HD DensitySum density_sum_recording(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
-                                          const NeighbourLists& lists, std::uint32_t list, float record_radius2) {
+                                          std::uint32_t left_out, const NeighbourLists& lists, std::uint32_t list,
+                                          float record_radius2) {
   ListRecorder recorder(lists, list);
   const DensitySum sum = density_sum_over(
-      v, s, grid_share(v, s, lane, lanes),
+      v, s, grid_share(v, s, lane, lanes, left_out),
       [&](std::uint32_t t, float r2) {
         if (r2 < record_radius2) recorder.record(t);
       });

@@ -35,6 +35,13 @@ struct GridArrays {
   Vec4* sorted_velocity;
   Vec4* list_origin;           // where each sorted particle stood at the last rebuild
   ListRefreshState* refresh;   // whether to rebuild, and whether this step did
+
+  // Copies the particle of place s in cell order (sorted_id) there; returns its canonical index.
+  __device__ std::uint32_t copy_into_cell_order(std::uint32_t s) const {
+    const std::uint32_t i = sorted_id[s];
+    place_in_cell_order(s, i, position, velocity, body, sorted_position, sorted_velocity);
+    return i;
+  }
 };
 
 // A particle's half key: its cell key times two, plus one in the cell's upper half along x
@@ -104,8 +111,7 @@ __device__ void scan_cell_counts(const GridArrays& a, cg::grid_group grid) {
 __device__ bool lists_expired(const GridArrays& a, const ListSkin& skin, cg::grid_group grid) {
   bool moved_far = false;
   for_each_grid_item(a.n, [&](std::uint32_t s) {
-    const std::uint32_t i = a.sorted_id[s];
-    place_in_cell_order(s, i, a.position, a.velocity, a.body, a.sorted_position, a.sorted_velocity);
+    const std::uint32_t i = a.copy_into_cell_order(s);
     moved_far = moved_far || moved_past_trigger(xyz(a.position[i]), xyz(a.list_origin[s]), skin);
   });
   if (__syncthreads_or(moved_far) && threadIdx.x == 0) atomicOr(&a.refresh->moved_far, 1u);
@@ -182,7 +188,7 @@ __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check, 
   });
   grid.sync();
   for_each_grid_item(a.n, [&](std::uint32_t s) {
-    place_in_cell_order(s, a.sorted_id[s], a.position, a.velocity, a.body, a.sorted_position, a.sorted_velocity);
+    a.copy_into_cell_order(s);
     if (a.list_origin) a.list_origin[s] = a.sorted_position[s];
   });
 }

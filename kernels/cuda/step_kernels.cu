@@ -3,6 +3,7 @@
 #include "../common/fluid_physics.hpp"
 #include "../common/list_skin.hpp"
 #include "thread_blocks.cuh"
+#include "warp_cell_checks.cuh"
 
 #include <type_traits>
 
@@ -93,10 +94,11 @@ __global__ void elastic_force_kernel(DeformableView view) {
 
 // Blocks of the density kernel that must fit on a multiprocessor at once, which caps its registers
 // as for the force kernel (kForceBlocksPerMultiprocessor). One lane's walk over split cells
-// (CellRanges::cell_middle) compiles to 41 registers, so 5 blocks; held to 6 (40 registers, a few
+// (CellRanges::cell_middle) compiled to 41 registers, so 5 blocks; held to 6 (40 registers, a few
 // bytes spilled), because on an H100 the 1M rigid and deformable blocks' density passes, most of
-// whose particles only check their rows, took 23 us longer at 5 (results/performance.md). Teams
-// (8 blocks, 32 registers) compile to that anyway; under 6 they took 36.
+// whose particles only check their rows, took 23 us longer at 5 (results/performance.md). With the
+// warp's shared cell checks (cells_left_out_by_warp) it compiles to 48 unbound, 40 and 12 bytes
+// spilled at 6. Teams (8 blocks, 32 registers) compile to that anyway; under 6 they took 36.
 constexpr int density_blocks_per_multiprocessor(unsigned lanes) { return lanes == 1 ? 6 : 8; }
 
 // A team's lane, on a step that rebuilt the grid, records the candidates of its share within
@@ -118,13 +120,14 @@ __global__ void __launch_bounds__(kBlock, density_blocks_per_multiprocessor(Lane
     if constexpr (Lanes > 1) {
       const std::uint32_t list = blockIdx.x * blockDim.x + threadIdx.x;
       if (refresh->recorded) {
-        sum = density_sum_recording(view, s, lane, Lanes, lists, list, record_radius2);
+        sum = density_sum_recording(view, s, lane, Lanes, cells_left_out_by_warp(view, s), lists, list,
+                                    record_radius2);
         if (lists.count[list] >= lists.capacity) refresh->requested = 1;
       } else {
         sum = density_sum_listed(view, s, lane, Lanes, lists, list);
       }
     } else {
-      sum = density_sum(view, s, lane, Lanes);
+      sum = density_sum(view, s, lane, Lanes, cells_left_out_by_warp(view, s));
     }
   }
   sum.delta = team_sum<Lanes>(sum.delta);

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -315,7 +316,8 @@ LeftOutWalks expect_walks_leave_out_rows(const SortedParticles& sorted, const st
       for (const std::uint32_t lanes : {1u, 3u, 8u}) {
         for (std::uint32_t lane = 0; lane < lanes; ++lane) {
           std::vector<std::uint32_t> visits, expected;
-          grid.for_each_candidate(x, lane, lanes, [&](std::uint32_t t) { visits.push_back(t); }, left_out);
+          grid.for_each_candidate(x, lane, lanes, [&](std::uint32_t t) { visits.push_back(t); },
+                                  grid.cells_holding_only(x, left_out));
           for (const std::vector<std::uint32_t>& range : lanes == 1 ? kept : kept_whole) {
             for (std::size_t k = lane; k < range.size(); k += lanes) expected.push_back(range[k]);
           }
@@ -334,6 +336,61 @@ TEST(GridWalk, LeavesOutTheRowsThatHoldNothingButTheBodyLeftOut) {
   const LeftOutWalks met = expect_walks_leave_out_rows(sorted, query_points(sorted, random), {1u, 2u, 3u});
   EXPECT_GT(met.rows_left_out, 100u);
   EXPECT_GT(met.rows_kept, 100u);
+}
+
+// CellRanges::cells_holding_only around each point, for each of `bodies` and kNoBody: bit
+// 9 (dz + 1) + 3 (dy + 1) + dx + 1 is set exactly where the cell at (dx, dy, dz) from the point's
+// holds no particle of another body (found by every particle's key, not through the cell table),
+// and never for a body no entry can name; the masks of `shares` lanes, each checking every
+// shares-th cell from its own, hold only their own cells' bits and join into the whole mask.
+// Returns how many bits were set.
+std::size_t expect_cell_masks(const SortedParticles& sorted, const std::vector<Vec3>& points,
+                              const std::vector<std::uint32_t>& bodies) {
+  const kernels::CellRanges grid = sorted.grid();
+  const kernels::GridShape& shape = sorted.shape;
+  std::size_t bits_set = 0;
+  for (std::size_t q = 0; q < points.size(); ++q) {
+    SCOPED_TRACE(::testing::Message() << "query " << q);
+    const Vec3 x = points[q];
+    int cx, cy, cz;
+    shape.cell_of(x, cx, cy, cz);
+    std::vector<std::uint32_t> left_outs = bodies;
+    left_outs.push_back(kernels::kNoBody);
+    for (const std::uint32_t body : left_outs) {
+      SCOPED_TRACE(::testing::Message() << "body " << body);
+      std::uint32_t expected = 0;
+      for (std::uint32_t bit = 0; bit < 27; ++bit) {
+        const std::uint32_t key = shape.key(cx + static_cast<int>(bit % 3) - 1, cy + static_cast<int>(bit / 3 % 3) - 1,
+                                            cz + static_cast<int>(bit / 9) - 1);
+        const bool only_body = std::all_of(sorted.position.begin(), sorted.position.end(), [&](const kernels::Vec4& p) {
+          return shape.key_of(kernels::xyz(p)) != key || kernels::body_of(p) == body;
+        });
+        if (only_body && body < kernels::kMixedCell) expected |= 1u << bit;
+      }
+      const std::uint32_t whole = grid.cells_holding_only(x, body);
+      EXPECT_EQ(whole, expected);
+      bits_set += static_cast<std::size_t>(std::bitset<32>(whole).count());
+      for (const std::uint32_t shares : {2u, 3u, 5u, 8u, 27u, 32u}) {
+        std::uint32_t joined = 0;
+        for (std::uint32_t share = 0; share < shares; ++share) {
+          const std::uint32_t part = grid.cells_holding_only(x, body, share, shares);
+          std::uint32_t own_bits = 0;
+          for (std::uint32_t bit = share; bit < 32; bit += shares) own_bits |= 1u << bit;
+          EXPECT_EQ(part & ~own_bits, 0u) << "share " << share << " of " << shares;
+          joined |= part;
+        }
+        EXPECT_EQ(joined, whole) << shares << " shares";
+      }
+      if (::testing::Test::HasFailure()) return bits_set;
+    }
+  }
+  return bits_set;
+}
+
+TEST(GridWalk, MarksTheCellsThatHoldNothingButABody) {
+  std::mt19937_64 random(20261128);
+  const SortedParticles sorted = three_bodies(random);
+  EXPECT_GT(expect_cell_masks(sorted, query_points(sorted, random), {1u, 2u, 3u}), 1000u);
 }
 
 // A block of body 1 filling cells 0 to 7 on every axis of a 16^3 grid of 1 m cells (8 particles a
@@ -387,6 +444,14 @@ TEST(GridWalk, LeavesOutNoRowForABodyNoCellEntryCanName) {
   const LeftOutWalks met = expect_walks_leave_out_rows(sorted, points, {1u, 2u, 0xffffu});
   EXPECT_GT(met.rows_left_out, 100u);
   EXPECT_GT(met.rows_kept, 100u);
+}
+
+// The same marks in and around the block with intruders, where whole rows hold one body.
+TEST(GridWalk, MarksTheCellsOfOneBodyAroundABlockWithIntruders) {
+  const SortedParticles sorted = block_with_intruders();
+  std::vector<Vec3> points;
+  for (std::size_t s = 0; s < sorted.position.size(); s += 37) points.push_back(kernels::xyz(sorted.position[s]));
+  EXPECT_GT(expect_cell_masks(sorted, points, {1u, 2u, 0xffffu}), 1000u);
 }
 
 }  // namespace

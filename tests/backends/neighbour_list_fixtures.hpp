@@ -133,7 +133,9 @@ struct TeamLists {
     for (std::uint32_t s = 0; s < v.step.particle_count; ++s) {
       for (std::uint32_t lane = 0; lane < lanes; ++lane) {
         density[list_of(s, lane)] =
-            kernels::density_sum_recording(v, s, lane, lanes, lists, list_of(s, lane), record_radius2).delta;
+            kernels::density_sum_recording(v, s, lane, lanes, kernels::cells_left_out(v, s), lists, list_of(s, lane),
+                                           record_radius2)
+                .delta;
       }
     }
   }

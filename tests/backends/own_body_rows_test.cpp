@@ -1,5 +1,5 @@
 // The density walks of rigid and deformable particles leave out the rows of cells that hold
-// nothing but their own body (kernels/common/fluid_physics.hpp, rows_left_out;
+// nothing but their own body (kernels/common/fluid_physics.hpp, body_left_out;
 // CellRanges::cell_body), whose pairs add nothing to their sums. Checked on the neighbour-list
 // tests' lattice, in a grid large enough for rows inside the block, with the block deformable and
 // rigid: every particle's density sum (every team size's shares) and a team's lists, recorded by
@@ -20,7 +20,7 @@ namespace {
 
 std::size_t walk_length(const kernels::SortedView& v, std::uint32_t s) {
   std::size_t visits = 0;
-  kernels::grid_share(v, s, 0, 1)([&](std::uint32_t) { ++visits; });
+  kernels::grid_share(v, s, 0, 1, kernels::cells_left_out(v, s))([&](std::uint32_t) { ++visits; });
   return visits;
 }
 
