@@ -98,7 +98,8 @@ __global__ void elastic_force_kernel(DeformableView view) {
 // bytes spilled), because on an H100 the 1M rigid and deformable blocks' density passes, most of
 // whose particles only check their rows, took 23 us longer at 5 (results/performance.md). With the
 // warp's shared cell checks (cells_left_out_by_warp) it compiles to 48 unbound, 40 and 12 bytes
-// spilled at 6. Teams (8 blocks, 32 registers) compile to that anyway; under 6 they took 36.
+// spilled at 6; at 5 (48, no spills) the 1M rigid, deformable and mixed steps took 8-10 us longer,
+// the fluid's the same. Teams (8 blocks, 32 registers) compile to that anyway; under 6 they took 36.
 constexpr int density_blocks_per_multiprocessor(unsigned lanes) { return lanes == 1 ? 6 : 8; }
 
 // A team's lane, on a step that rebuilt the grid, records the candidates of its share within
