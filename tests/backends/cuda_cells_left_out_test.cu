@@ -43,10 +43,7 @@ SortedParticles mixed_block() {
     }
   }
   particles.pop_back();  // 7999 particles: the last warp is not full
-  kernels::GridShape shape;
-  shape.inverse_cell_size = 1.0f;
-  shape.bits_x = shape.bits_y = shape.bits_z = 4;
-  SortedParticles sorted = sort_into_half_cells(particles, shape);
+  SortedParticles sorted = sort_into_half_cells(particles, metre_cells(4, 4, 4));
   sorted.note_cell_bodies(kernels::kMixedCell);
   return sorted;
 }

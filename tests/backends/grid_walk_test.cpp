@@ -168,10 +168,7 @@ TEST(GridWalk, AWalkOverSplitCellsVisitsEveryParticleWithinACell) {
   std::vector<kernels::Vec4> particles;
   for (const Vec3 x : on_half_boundaries(random)) particles.push_back(kernels::Vec4{x.x, x.y, x.z, 0.0f});
   for (int p = 0; p < 600; ++p) particles.push_back(kernels::Vec4{spread(random), spread(random), spread(random), 0.0f});
-  kernels::GridShape shape;
-  shape.inverse_cell_size = 1.0f;
-  shape.bits_x = 3;
-  const SortedParticles sorted = sort_into_half_cells(particles, shape);
+  const SortedParticles sorted = sort_into_half_cells(particles, metre_cells(3, 2, 2));
   const kernels::CellRanges grid = sorted.grid();
   kernels::CellRanges whole_rows = grid;
   whole_rows.cell_middle = nullptr;
@@ -419,10 +416,7 @@ SortedParticles block_with_intruders() {
     add(8.6f, lattice(j) + 0.15f, 0.6f, 0xffffu);
     add(9.4f, lattice(j) + 0.15f, 0.6f, 0xffffu);
   }
-  kernels::GridShape shape;
-  shape.inverse_cell_size = 1.0f;
-  shape.bits_x = shape.bits_y = shape.bits_z = 4;
-  SortedParticles sorted = sort_into_grid(particles, shape);
+  SortedParticles sorted = sort_into_grid(particles, metre_cells(4, 4, 4));
   sorted.note_cell_bodies(kernels::kMixedCell);
   return sorted;
 }

@@ -37,6 +37,16 @@ struct SortedParticles {
   }
 };
 
+// A grid of cells of side 1 m, 2^bits_x x 2^bits_y x 2^bits_z of them.
+inline kernels::GridShape metre_cells(std::uint32_t bits_x, std::uint32_t bits_y, std::uint32_t bits_z) {
+  kernels::GridShape shape;
+  shape.inverse_cell_size = 1.0f;
+  shape.bits_x = bits_x;
+  shape.bits_y = bits_y;
+  shape.bits_z = bits_z;
+  return shape;
+}
+
 // A stable counting sort of the particles by sort_key(x) < key_count; returns where each key's
 // particles begin (key_count + 1 entries) and fills `sorted` with the particles in that order.
 template <class SortKey>
@@ -81,9 +91,7 @@ inline SortedParticles clustered_particles(std::mt19937_64& random, bool half_ce
   std::vector<kernels::Vec4> particles;
   for (int p = 0; p < 300; ++p) particles.push_back(kernels::Vec4{spread(random), spread(random), spread(random), 0.0f});
   for (int p = 0; p < 400; ++p) particles.push_back(kernels::Vec4{packed(random), packed(random), packed(random), 0.0f});
-  kernels::GridShape shape;
-  shape.inverse_cell_size = 1.0f;
-  shape.bits_x = 3;
+  const kernels::GridShape shape = metre_cells(3, 2, 2);
   return half_cells ? sort_into_half_cells(particles, shape) : sort_into_grid(particles, shape);
 }
 
