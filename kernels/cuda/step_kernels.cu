@@ -92,15 +92,28 @@ __global__ void elastic_force_kernel(DeformableView view) {
   if (active && lane == 0) store_elastic_force(view, d, force);
 }
 
-// Blocks of the density kernel that must fit on a multiprocessor at once, which caps its registers
-// as for the force kernel (kForceBlocksPerMultiprocessor). One lane's walk over split cells
-// (CellRanges::cell_middle) compiled to 41 registers, so 5 blocks; held to 6 (40 registers, a few
-// bytes spilled), because on an H100 the 1M rigid and deformable blocks' density passes, most of
-// whose particles only check their rows, took 23 us longer at 5 (results/performance.md). With the
-// warp's shared cell checks (cells_left_out_by_warp) it compiles to 48 unbound, 40 and 12 bytes
-// spilled at 6; at 5 (48, no spills) the 1M rigid, deformable and mixed steps took 8-10 us longer,
-// the fluid's the same. Teams (8 blocks, 32 registers) compile to that anyway; under 6 they took 36.
-constexpr int density_blocks_per_multiprocessor(unsigned lanes) { return lanes == 1 ? 6 : 8; }
+// Threads per block of the density and force kernels: half of kBlock. A block holds its share of
+// the multiprocessor until its slowest warp is done, and a one-lane walk's length varies from
+// warp to warp, so smaller blocks give their share back sooner (the register caps below, per
+// thread, stay as they were). On an H100, against blocks of kBlock, the 1M fluid, rigid,
+// deformable and mixed steps took 704, 369, 854 and 817 us against 725, 404, 889 and 841, their
+// force passes 386, 113, 121 and 257 us against 405, 140, 152 and 287; the 30k fluid block 37.6
+// against 38.4 us (results/performance.md).
+inline constexpr int kSumBlock = 128;
+inline unsigned sum_blocks_for(std::size_t threads) {
+  return static_cast<unsigned>((threads + kSumBlock - 1) / kSumBlock);
+}
+
+// Threads of the density kernel that must fit on a multiprocessor at once, which caps its
+// registers as for the force kernel (kForceThreadsPerMultiprocessor). One lane's walk over split
+// cells (CellRanges::cell_middle) compiled to 41 registers, so 1280 threads; held to 1536 (40
+// registers, a few bytes spilled), because on an H100 the 1M rigid and deformable blocks' density
+// passes, most of whose particles only check their rows, took 23 us longer at 1280
+// (results/performance.md). With the warp's shared cell checks (cells_left_out_by_warp) it
+// compiles to 48 unbound, 40 and 12 bytes spilled at 1536; at 1280 (48, no spills) the 1M rigid,
+// deformable and mixed steps took 8-10 us longer, the fluid's the same. Teams (2048 threads, 32
+// registers) compile to that anyway; under 1536 they took 36.
+constexpr int density_threads_per_multiprocessor(unsigned lanes) { return lanes == 1 ? 1536 : 2048; }
 
 // A team's lane, on a step that rebuilt the grid, records the candidates of its share within
 // h + skin in its list (lists: one per thread), for the force pass and the steps until the next
@@ -110,7 +123,7 @@ constexpr int density_blocks_per_multiprocessor(unsigned lanes) { return lanes =
 // of it (taken by rigid and deformable particles only: DensitySum::nearest_other_body2), which
 // lets the force pass skip the walk of those without one (may_feel_forces).
 template <unsigned Lanes>
-__global__ void __launch_bounds__(kBlock, density_blocks_per_multiprocessor(Lanes))
+__global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(Lanes) / kSumBlock)
     density_kernel(SortedView view, VolumePressure* volume_pressure, std::uint8_t* near_other_body,
                    NeighbourLists lists, ListRefreshState* refresh, float record_radius2) {
   const TeamSeat seat = team_seat<Lanes>();
@@ -139,25 +152,25 @@ __global__ void __launch_bounds__(kBlock, density_blocks_per_multiprocessor(Lane
   }
 }
 
-// Blocks of the force kernel that must fit on a multiprocessor at once, which caps its registers
-// at 65536 / (kBlock * blocks), rounded down to a multiple of 8. One lane per particle (large
-// scenes) holds its walk's segments in shared memory (SharedHeldSegments, 24 KB a block), which
-// the multiprocessor takes from its L1: at 6 blocks (40 registers, spilling) the 1M fluid block's
+// Threads of the force kernel that must fit on a multiprocessor at once, which caps its registers
+// at 65536 / threads, rounded down to a multiple of 8. One lane per particle (large scenes) holds
+// its walk's segments in shared memory (SharedHeldSegments, 96 bytes a thread), which the
+// multiprocessor takes from its L1: at 1536 threads (40 registers, spilling) the 1M fluid block's
 // L1 hit rate fell from 85 % to 61 % and its force pass took 540 us against 519 before the
-// segments were held; at 5 blocks (48 registers) 489 us, at 4 (64, no spills) 428 us, the 1M fluid
+// segments were held; at 1280 (48 registers) 489 us, at 1024 (64, no spills) 428 us, the 1M fluid
 // step 850 -> 760 us on an H100 (rigid 412 -> 419, deformable 888 -> 896, mixed 876 -> 858;
-// results/performance.md). Teams of lanes (small scenes) are held to 4 blocks, 64 registers, which
-// is what they compile to anyway (62 since 0784025, 63 before); at 5, the 30k and 100k blocks
-// were no faster.
-inline constexpr int kForceBlocksPerMultiprocessor = 4;
+// results/performance.md). Teams of lanes (small scenes) are held to 1024 threads, 64 registers,
+// which is what they compile to anyway (62 since 0784025, 63 before); at 1280, the 30k and 100k
+// blocks were no faster.
+inline constexpr int kForceThreadsPerMultiprocessor = 1024;
 
 // The segments a one-lane force walk holds (HeldSegments) in the block's shared memory, a column
 // per thread: a thread's column lies in bank threadIdx.x mod 32, so a warp's lanes never share a
 // bank, whatever segment each is at.
 struct SharedHeldSegments {
   static constexpr std::uint32_t capacity = kHeldSegments;
-  std::uint32_t (*first_)[kBlock];
-  std::uint32_t (*near_)[kBlock];
+  std::uint32_t (*first_)[kSumBlock];
+  std::uint32_t (*near_)[kSumBlock];
 
   __device__ void put(std::uint32_t k, std::uint32_t first, std::uint32_t near) {
     first_[k][threadIdx.x] = first;
@@ -168,7 +181,7 @@ struct SharedHeldSegments {
 };
 
 template <unsigned Lanes>
-__global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor)
+__global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kSumBlock)
     forces_kernel(SortedView view, CanonicalState state, const std::uint8_t* near_other_body, NeighbourLists lists) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
@@ -188,7 +201,7 @@ __global__ void __launch_bounds__(kBlock, kForceBlocksPerMultiprocessor)
       if constexpr (kTeam) {
         sum = force_sum_listed(view, particle, lane, Lanes, lists, list);
       } else {
-        __shared__ std::uint32_t held_first[kHeldSegments][kBlock], held_near[kHeldSegments][kBlock];
+        __shared__ std::uint32_t held_first[kHeldSegments][kSumBlock], held_near[kHeldSegments][kSumBlock];
         SharedHeldSegments held{held_first, held_near};
         sum = force_sum(view, particle, held);
       }
@@ -268,7 +281,7 @@ void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team
   const std::size_t n = state.position.size();
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
-    density_kernel<L><<<blocks_for(n * L), kBlock, 0, stream>>>(
+    density_kernel<L><<<sum_blocks_for(n * L), kSumBlock, 0, stream>>>(
         sorted_view(scene, state), state.volume_pressure.data(), state.near_other_body.data(), team_lists(state, L),
         state.list_refresh.data(), list_skin(scene.step.smoothing.h).record_radius2);
   });
@@ -278,8 +291,8 @@ void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_la
   const std::size_t n = state.position.size();
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
-    forces_kernel<L><<<blocks_for(n * L), kBlock, 0, stream>>>(sorted_view(scene, state), canonical_state(state),
-                                                                state.near_other_body.data(), team_lists(state, L));
+    forces_kernel<L><<<sum_blocks_for(n * L), kSumBlock, 0, stream>>>(
+        sorted_view(scene, state), canonical_state(state), state.near_other_body.data(), team_lists(state, L));
   });
 }
 
