@@ -167,7 +167,8 @@ struct CellRanges {
   // The cells of the 27 around x that hold no particle of a body other than `body` (empty ones
   // included), as a mask: bit cell_bit(dx, dy, dz) for the cell at offset (dx, dy, dz) from x's.
   // Only cells cell_bit = share, share + shares, ... are checked, the others' bits are clear:
-  // lanes that share a cell and a body split the 27 checks and join their masks (step_kernels.cu).
+  // lanes that share a cell and a body split the 27 checks and join their masks
+  // (kernels/cuda/warp_cell_checks.cuh).
   // 0 where no cell can be left out (may_leave_out).
   MSSPH_HD std::uint32_t cells_holding_only(Vec3 x, std::uint32_t body, std::uint32_t share = 0,
                                             std::uint32_t shares = 1) const {
