@@ -100,9 +100,6 @@ __global__ void elastic_force_kernel(DeformableView view) {
 // force passes 386, 113, 121 and 257 us against 405, 140, 152 and 287; the 30k fluid block 37.6
 // against 38.4 us (results/performance.md).
 inline constexpr int kSumBlock = 128;
-inline unsigned sum_blocks_for(std::size_t threads) {
-  return static_cast<unsigned>((threads + kSumBlock - 1) / kSumBlock);
-}
 
 // Threads of the density kernel that must fit on a multiprocessor at once, which caps its
 // registers as for the force kernel (kForceThreadsPerMultiprocessor). One lane's walk over split
@@ -281,7 +278,7 @@ void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team
   const std::size_t n = state.position.size();
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
-    density_kernel<L><<<sum_blocks_for(n * L), kSumBlock, 0, stream>>>(
+    density_kernel<L><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
         sorted_view(scene, state), state.volume_pressure.data(), state.near_other_body.data(), team_lists(state, L),
         state.list_refresh.data(), list_skin(scene.step.smoothing.h).record_radius2);
   });
@@ -291,7 +288,7 @@ void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_la
   const std::size_t n = state.position.size();
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
-    forces_kernel<L><<<sum_blocks_for(n * L), kSumBlock, 0, stream>>>(
+    forces_kernel<L><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
         sorted_view(scene, state), canonical_state(state), state.near_other_body.data(), team_lists(state, L));
   });
 }

@@ -7,6 +7,9 @@ namespace mssph::kernels {
 // Threads per block; also the block size of the CUB block reductions, which must match it.
 inline constexpr int kBlock = 256;
 
-inline unsigned blocks_for(std::size_t n) { return static_cast<unsigned>((n + kBlock - 1) / kBlock); }
+// Blocks of `block` threads that cover n items.
+inline unsigned blocks_for(std::size_t n, unsigned block = kBlock) {
+  return static_cast<unsigned>((n + block - 1) / block);
+}
 
 }  // namespace mssph::kernels
