@@ -67,13 +67,17 @@ MSSPH_HD bool takes_own_body_at_rest(const BodyParameters& body) {
 MSSPH_HD std::uint32_t body_left_out(const BodyParameters& body, std::uint32_t body_index) {
   return takes_own_body_at_rest(body) ? body_index : kNoBody;
 }
+// The body_left_out of a particle at sorted position p (its body in p's w).
+MSSPH_HD std::uint32_t body_left_out(const SortedView& v, Vec4 p) {
+  return body_left_out(v.bodies[body_of(p)], body_of(p));
+}
 
 // The cells around sorted particle s that its density walk leaves out: those holding nothing but
 // its body_left_out (CellRanges::cells_holding_only), all 27 checked here; the GPU's lanes split
 // the checks (kernels/cuda/warp_cell_checks.cuh).
 MSSPH_HD std::uint32_t cells_left_out(const SortedView& v, std::uint32_t s) {
   const Vec4 p = v.position[s];
-  return v.grid.cells_holding_only(xyz(p), body_left_out(v.bodies[body_of(p)], body_of(p)));
+  return v.grid.cells_holding_only(xyz(p), body_left_out(v, p));
 }
 
 // Particle s's live density sum over the candidates that candidates(visit) hands to visit;

@@ -19,7 +19,7 @@ namespace mssph::kernels {
 // steps 6 % and 3 % less (results/performance.md).
 __device__ inline std::uint32_t cells_left_out_by_warp(const SortedView& v, std::uint32_t s) {
   const Vec4 p = v.position[s];
-  const std::uint32_t body = body_left_out(v.bodies[body_of(p)], body_of(p));
+  const std::uint32_t body = body_left_out(v, p);
   if (!v.grid.may_leave_out(body)) return 0;
   const std::uint64_t cell_and_body = std::uint64_t{v.grid.shape.key_of(xyz(p))} << 32 | body;
   namespace cg = cooperative_groups;
