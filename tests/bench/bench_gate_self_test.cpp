@@ -1,10 +1,11 @@
-// The gate catches a known slowdown and passes the same build: three real `mssph bench` runs of
-// the smallest host benchmark (A, B, and one with the MSSPH_BENCH_STEP_DELAY_US test hook set to
+// The gate catches a known slowdown and passes the same build: real `mssph bench` runs of the
+// smallest host benchmark (A, B, and one with the MSSPH_BENCH_STEP_DELAY_US test hook set to
 // twice A's step time), compared through the real `mssph bench compare`. And a scene file's step.
 #include "bench/bench_comparison.hpp"
 #include "cli_fixture.hpp"
 
 #include <cmath>
+#include <iostream>
 
 namespace mssph::test {
 namespace {
@@ -46,8 +47,6 @@ TEST_F(GateSelfTest, PassesTheSameBuildAndCatchesTheDelayedOne) {
   }
   EXPECT_FALSE(context.contains("mssph_test_step_delay_us"));
 
-  const ProcessResult b = bench("b.json", "");
-  ASSERT_EQ(b.exit_code, 0) << b.err;
   const std::string delay_us = std::to_string(std::lround(2.0 * step * 1e6));
   const ProcessResult d = bench("delayed.json", delay_us);
   ASSERT_EQ(d.exit_code, 0) << d.err;
@@ -58,7 +57,20 @@ TEST_F(GateSelfTest, PassesTheSameBuildAndCatchesTheDelayedOne) {
   // of two undelayed runs: the median ratios of same-build runs stayed within 0.73-1.37 in the
   // noise study of results/baselines/ci-2core/ (a 2-core VM at load average 10-13), and this test
   // runs alone (RUN_SERIAL). scripts/bench_gate.sh uses the threshold from the noise study.
-  const ProcessResult same = mssph({"bench", "compare", work("a.json"), work("b.json"), "--threshold", "50%"});
+  // Like the gate (GATE_ATTEMPTS in scripts/bench_gate_settings.sh), B is measured again when it
+  // fails, up to three runs: other load only adds time, so one passing run shows the same build
+  // is not slower (a fresh-clone run of the whole suite on a 2-core machine once had two
+  // same-build medians 1.58x apart). The delayed run must fail its one comparison, so the retries
+  // cannot hide a slowdown.
+  constexpr int kAttempts = 3;
+  ProcessResult same;
+  for (int attempt = 1; attempt <= kAttempts; ++attempt) {
+    const ProcessResult b = bench("b.json", "");
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    same = mssph({"bench", "compare", work("a.json"), work("b.json"), "--threshold", "50%"});
+    if (same.exit_code == 0) break;
+    std::cerr << "same-build run " << attempt << " of " << kAttempts << " failed the comparison:\n" << same.out;
+  }
   EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
   const ProcessResult slow = mssph({"bench", "compare", work("a.json"), work("delayed.json"), "--threshold", "50%",
                                     "--format", "json"});
