@@ -318,7 +318,9 @@ MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, Held& h
 // wraps around the grid; a walk that finds more visits them in two goes, which costs its warp a
 // second loop. On an H100 the 1M fluid block's force pass took 578 us holding 10 against 540 with
 // 12 (1536 threads a multiprocessor), and 439 us holding 16 against 429 with 12 in one run (1024
-// threads), whose shared memory comes out of L1 (results/performance.md).
+// threads), whose shared memory comes out of L1; in blocks of 128 threads it took 424 us holding
+// 10 and 387 holding 11 or 12, though 11 fits the smaller shared-memory configuration
+// (results/performance.md).
 inline constexpr std::uint32_t kHeldSegments = 12;
 
 // The same with the segments in the thread's own array (host tests; the GPU's force probe).
