@@ -108,8 +108,9 @@ inline constexpr int kSumBlock = 128;
 // passes, most of whose particles only check their rows, took 23 us longer at 1280
 // (results/performance.md). With the warp's shared cell checks (cells_left_out_by_warp) it
 // compiles to 48 unbound, 40 and 12 bytes spilled at 1536; at 1280 (48, no spills) the 1M rigid,
-// deformable and mixed steps took 8-10 us longer, the fluid's the same. Teams (2048 threads, 32
-// registers) compile to that anyway; under 1536 they took 36.
+// deformable and mixed steps took 8-10 us longer, the fluid's the same; at 2048 (32, 20 bytes
+// spilled) the fluid's density pass took 10 us longer, the rigid and deformable steps 2-4 us less.
+// Teams (2048 threads, 32 registers) compile to that anyway; under 1536 they took 36.
 constexpr int density_threads_per_multiprocessor(unsigned lanes) { return lanes == 1 ? 1536 : 2048; }
 
 // A team's lane, on a step that rebuilt the grid, records the candidates of its share within
