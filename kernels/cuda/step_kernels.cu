@@ -98,7 +98,8 @@ __global__ void elastic_force_kernel(DeformableView view) {
 // thread, stay as they were). On an H100, against blocks of kBlock, the 1M fluid, rigid,
 // deformable and mixed steps took 704, 369, 854 and 817 us against 725, 404, 889 and 841, their
 // force passes 386, 113, 121 and 257 us against 405, 140, 152 and 287; the 30k fluid block 37.6
-// against 38.4 us (results/performance.md).
+// against 38.4 us. Blocks of 64 or 96 gave the rigid and deformable 1M steps 3-5 us and cost the
+// mixed one 5-7, the fluid's the same (results/performance.md).
 inline constexpr int kSumBlock = 128;
 
 // Threads of the density kernel that must fit on a multiprocessor at once, which caps its
