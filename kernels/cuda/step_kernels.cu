@@ -158,9 +158,10 @@ __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(
 // L1 hit rate fell from 85 % to 61 % and its force pass took 540 us against 519 before the
 // segments were held; at 1280 (48 registers) 489 us, at 1024 (64, no spills) 428 us, the 1M fluid
 // step 850 -> 760 us on an H100 (rigid 412 -> 419, deformable 888 -> 896, mixed 876 -> 858;
-// results/performance.md). Teams of lanes (small scenes) are held to 1024 threads, 64 registers,
-// which is what they compile to anyway (62 since 0784025, 63 before); at 1280, the 30k and 100k
-// blocks were no faster.
+// results/performance.md). In blocks of 128, at 1152 (56 registers, 4 bytes spilled) the 1M
+// fluid force pass took 415 us against 386, the rigid one 132 against 113. Teams of lanes (small
+// scenes) are held to 1024 threads, 64 registers, which is what they compile to anyway (62 since
+// 0784025, 63 before); at 1280, the 30k and 100k blocks were no faster.
 inline constexpr int kForceThreadsPerMultiprocessor = 1024;
 
 // The segments a one-lane force walk holds (HeldSegments) in the block's shared memory, a column
