@@ -1,7 +1,8 @@
 #pragma once
 // The neighbour grid of the kernels: cells of side h (the support radius), wrapped periodically
 // onto 2^bx x 2^by x 2^bz cells, so cell (cx, cy, cz) has the key
-//   (cx mod 2^bx) + 2^bx ((cy mod 2^by) + 2^by (cz mod 2^bz)).
+//   ((cx + ox) mod 2^bx) + 2^bx ((cy mod 2^by) + 2^by (cz mod 2^bz)),
+// ox shifting the wrap along x out of the scene (GridShape::origin_x).
 // Every axis has at least 4 cells, so the 27 cells around a cell have 27 distinct keys and no
 // particle is visited twice; particles of a distant periodic image share a key but fail the
 // distance test. The grid needs no bounding box, never grows, and a particle flung far away
@@ -16,6 +17,14 @@ namespace mssph::kernels {
 struct GridShape {
   float inverse_cell_size = 0.0f;  // 1 / h
   std::uint32_t bits_x = 2, bits_y = 2, bits_z = 2;
+  // Added to a cell's x coordinate before it wraps (modulo 2^32, so a negative shift is its two's
+  // complement). A row of three cells along x is one range of sorted particles unless it wraps
+  // (CellRanges::for_each_range); a wrapped row is walked as three cells, more slowly, and a
+  // warp whose lanes take both kinds of rows runs both. choose_grid_shape puts the wrap beside the
+  // scene. Left at 0, a scene centred on the origin wraps there: on an H100 the 1M fluid block's
+  // density kernel spent a tenth of its instructions on the wrapped rows of the cells on either
+  // side of x = 0, and with the wrap moved its step took 623 us against 706 (results/performance.md).
+  std::uint32_t origin_x = 0;
 
   MSSPH_HD std::uint32_t cell_count() const { return 1u << (bits_x + bits_y + bits_z); }
   MSSPH_HD std::uint32_t total_bits() const { return bits_x + bits_y + bits_z; }
@@ -42,7 +51,7 @@ struct GridShape {
   MSSPH_HD bool in_upper_half(Vec3 x) const { return x_fraction(x) >= 0.5f; }
   MSSPH_HD std::uint32_t key(int cx, int cy, int cz) const {
     const std::uint32_t mx = (1u << bits_x) - 1u, my = (1u << bits_y) - 1u, mz = (1u << bits_z) - 1u;
-    return (static_cast<std::uint32_t>(cx) & mx) | ((static_cast<std::uint32_t>(cy) & my) << bits_x) |
+    return ((static_cast<std::uint32_t>(cx) + origin_x) & mx) | ((static_cast<std::uint32_t>(cy) & my) << bits_x) |
            ((static_cast<std::uint32_t>(cz) & mz) << (bits_x + bits_y));
   }
   MSSPH_HD std::uint32_t key_of(Vec3 x) const {

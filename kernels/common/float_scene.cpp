@@ -127,6 +127,12 @@ GridShape choose_grid_shape(const std::vector<Vec4>& positions, double h) {
   shape.bits_x = bits[0];
   shape.bits_y = bits[1];
   shape.bits_z = bits[2];
+  // The scene's lowest cell along x takes key column 1, so that its rows of cells (from column 0)
+  // do not wrap as long as the scene spans fewer than 2^bits_x - 2 cells (GridShape::origin_x).
+  if (!positions.empty()) {
+    const auto lowest = static_cast<std::int32_t>(std::floor(shape.in_cells(lo[0])));
+    shape.origin_x = 1u - static_cast<std::uint32_t>(lowest);
+  }
   return shape;
 }
 

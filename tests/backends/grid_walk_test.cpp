@@ -106,32 +106,40 @@ std::vector<Vec3> query_points(const SortedParticles& sorted, std::mt19937_64& r
   return points;
 }
 
+// The shifts of the grid's wrap along x (GridShape::origin_x) the walks are tested with: none, 3
+// cells, -5 cells.
+constexpr std::uint32_t kOrigins[] = {0u, 3u, 0u - 5u};
+
 // Over whole cells (the host's sort) and over split ones (the GPU's: CellRanges::cell_middle).
 TEST(GridWalk, EveryLaneVisitsItsStridedShareOfEachRange) {
   for (const bool half_cells : {false, true}) {
-    SCOPED_TRACE(::testing::Message() << (half_cells ? "half cells" : "whole cells"));
-    std::mt19937_64 random(20261124);
-    const SortedParticles sorted = clustered_particles(random, half_cells);
-    const std::vector<Vec3> points = query_points(sorted, random);
-    std::size_t longest_range = 0, wrapped_walks = 0, trimmed_walks = 0;
-    for (std::size_t q = 0; q < points.size(); ++q) {
-      SCOPED_TRACE(::testing::Message() << "query " << q);
-      const Vec3 x = points[q];
-      // One lane trims halves; a team's lanes walk whole cells.
-      const std::vector<std::vector<std::uint32_t>> ranges = expected_ranges(sorted, x);
-      const std::vector<std::vector<std::uint32_t>> whole = expected_ranges(sorted, x, /*trim=*/false);
-      if (ranges.size() > 9) ++wrapped_walks;
-      if (side_trimmed_from(sorted, x) != 0) ++trimmed_walks;
-      for (const std::vector<std::uint32_t>& range : whole) longest_range = std::max(longest_range, range.size());
-      for (const std::uint32_t lanes : {1u, 2u, 3u, 4u, 8u}) expect_team_walk(sorted, x, lanes == 1 ? ranges : whole, lanes);
-      if (HasFatalFailure()) return;
-    }
-    // The walk's corner cases were met: a row of many turns of 8 lanes, rows split where the grid
-    // wraps, and (half cells) trimmed walks.
-    EXPECT_GT(longest_range, 8u * 4u);
-    EXPECT_GT(wrapped_walks, 0u);
-    if (half_cells) {
-      EXPECT_GT(trimmed_walks, 100u);
+    for (const std::uint32_t origin_x : kOrigins) {
+      SCOPED_TRACE(::testing::Message() << (half_cells ? "half cells" : "whole cells") << ", origin_x " << origin_x);
+      std::mt19937_64 random(20261124);
+      const SortedParticles sorted = clustered_particles(random, half_cells, origin_x);
+      const std::vector<Vec3> points = query_points(sorted, random);
+      std::size_t longest_range = 0, wrapped_walks = 0, trimmed_walks = 0;
+      for (std::size_t q = 0; q < points.size(); ++q) {
+        SCOPED_TRACE(::testing::Message() << "query " << q);
+        const Vec3 x = points[q];
+        // One lane trims halves; a team's lanes walk whole cells.
+        const std::vector<std::vector<std::uint32_t>> ranges = expected_ranges(sorted, x);
+        const std::vector<std::vector<std::uint32_t>> whole = expected_ranges(sorted, x, /*trim=*/false);
+        if (ranges.size() > 9) ++wrapped_walks;
+        if (side_trimmed_from(sorted, x) != 0) ++trimmed_walks;
+        for (const std::vector<std::uint32_t>& range : whole) longest_range = std::max(longest_range, range.size());
+        for (const std::uint32_t lanes : {1u, 2u, 3u, 4u, 8u}) {
+          expect_team_walk(sorted, x, lanes == 1 ? ranges : whole, lanes);
+        }
+        if (HasFatalFailure()) return;
+      }
+      // The walk's corner cases were met: a row of many turns of 8 lanes, rows split where the grid
+      // wraps, and (half cells) trimmed walks.
+      EXPECT_GT(longest_range, 8u * 4u);
+      EXPECT_GT(wrapped_walks, 0u);
+      if (half_cells) {
+        EXPECT_GT(trimmed_walks, 100u);
+      }
     }
   }
 }
@@ -163,39 +171,44 @@ std::vector<Vec3> on_half_boundaries(std::mt19937_64& random) {
 // also for particles and points on the halves' boundaries; and the trimming happened (walks that
 // visited fewer candidates than the same walk over whole rows).
 TEST(GridWalk, AWalkOverSplitCellsVisitsEveryParticleWithinACell) {
-  std::mt19937_64 random(20261128);
-  std::uniform_real_distribution<float> spread(-2.5f, 3.5f);
-  std::vector<kernels::Vec4> particles;
-  for (const Vec3 x : on_half_boundaries(random)) particles.push_back(kernels::Vec4{x.x, x.y, x.z, 0.0f});
-  for (int p = 0; p < 600; ++p) particles.push_back(kernels::Vec4{spread(random), spread(random), spread(random), 0.0f});
-  const SortedParticles sorted = sort_into_half_cells(particles, metre_cells(3, 2, 2));
-  const kernels::CellRanges grid = sorted.grid();
-  kernels::CellRanges whole_rows = grid;
-  whole_rows.cell_middle = nullptr;
-  std::vector<Vec3> points = on_half_boundaries(random);
-  for (int q = 0; q < 200; ++q) points.push_back(Vec3{spread(random), spread(random), spread(random)});
-  std::size_t trimmed_walks = 0, near_pairs = 0;
-  for (std::size_t q = 0; q < points.size(); ++q) {
-    SCOPED_TRACE(::testing::Message() << "query " << q);
-    const Vec3 x = points[q];
-    std::vector<int> times_visited(sorted.position.size(), 0);
-    std::size_t visits = 0, whole_visits = 0;
-    grid.for_each_candidate(x, [&](std::uint32_t t) {
-      ++times_visited[t];
-      ++visits;
-    });
-    whole_rows.for_each_candidate(x, [&](std::uint32_t) { ++whole_visits; });
-    for (std::uint32_t t = 0; t < sorted.position.size(); ++t) {
-      ASSERT_LE(times_visited[t], 1) << "particle " << t;
-      if (kernels::squared_norm(x - kernels::xyz(sorted.position[t])) < 1.0f) {
-        ++near_pairs;
-        ASSERT_EQ(times_visited[t], 1) << "particle " << t << " within a cell was not visited";
-      }
+  for (const std::uint32_t origin_x : kOrigins) {
+    SCOPED_TRACE(::testing::Message() << "origin_x " << origin_x);
+    std::mt19937_64 random(20261128);
+    std::uniform_real_distribution<float> spread(-2.5f, 3.5f);
+    std::vector<kernels::Vec4> particles;
+    for (const Vec3 x : on_half_boundaries(random)) particles.push_back(kernels::Vec4{x.x, x.y, x.z, 0.0f});
+    for (int p = 0; p < 600; ++p) {
+      particles.push_back(kernels::Vec4{spread(random), spread(random), spread(random), 0.0f});
     }
-    if (visits < whole_visits) ++trimmed_walks;
+    const SortedParticles sorted = sort_into_half_cells(particles, metre_cells(3, 2, 2, origin_x));
+    const kernels::CellRanges grid = sorted.grid();
+    kernels::CellRanges whole_rows = grid;
+    whole_rows.cell_middle = nullptr;
+    std::vector<Vec3> points = on_half_boundaries(random);
+    for (int q = 0; q < 200; ++q) points.push_back(Vec3{spread(random), spread(random), spread(random)});
+    std::size_t trimmed_walks = 0, near_pairs = 0;
+    for (std::size_t q = 0; q < points.size(); ++q) {
+      SCOPED_TRACE(::testing::Message() << "query " << q);
+      const Vec3 x = points[q];
+      std::vector<int> times_visited(sorted.position.size(), 0);
+      std::size_t visits = 0, whole_visits = 0;
+      grid.for_each_candidate(x, [&](std::uint32_t t) {
+        ++times_visited[t];
+        ++visits;
+      });
+      whole_rows.for_each_candidate(x, [&](std::uint32_t) { ++whole_visits; });
+      for (std::uint32_t t = 0; t < sorted.position.size(); ++t) {
+        ASSERT_LE(times_visited[t], 1) << "particle " << t;
+        if (kernels::squared_norm(x - kernels::xyz(sorted.position[t])) < 1.0f) {
+          ++near_pairs;
+          ASSERT_EQ(times_visited[t], 1) << "particle " << t << " within a cell was not visited";
+        }
+      }
+      if (visits < whole_visits) ++trimmed_walks;
+    }
+    EXPECT_GT(trimmed_walks, 100u);
+    EXPECT_GT(near_pairs, 1000u);
   }
-  EXPECT_GT(trimmed_walks, 100u);
-  EXPECT_GT(near_pairs, 1000u);
 }
 
 // The one-lane walk of the large GPU scenes' force sums (for_each_candidate_within) visits the

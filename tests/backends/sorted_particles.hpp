@@ -37,13 +37,16 @@ struct SortedParticles {
   }
 };
 
-// A grid of cells of side 1 m, 2^bits_x x 2^bits_y x 2^bits_z of them.
-inline kernels::GridShape metre_cells(std::uint32_t bits_x, std::uint32_t bits_y, std::uint32_t bits_z) {
+// A grid of cells of side 1 m, 2^bits_x x 2^bits_y x 2^bits_z of them, the wrap along x shifted by
+// origin_x cells (GridShape::origin_x).
+inline kernels::GridShape metre_cells(std::uint32_t bits_x, std::uint32_t bits_y, std::uint32_t bits_z,
+                                      std::uint32_t origin_x = 0) {
   kernels::GridShape shape;
   shape.inverse_cell_size = 1.0f;
   shape.bits_x = bits_x;
   shape.bits_y = bits_y;
   shape.bits_z = bits_z;
+  shape.origin_x = origin_x;
   return shape;
 }
 
@@ -85,13 +88,14 @@ inline SortedParticles sort_into_half_cells(const std::vector<kernels::Vec4>& pa
 // 2^3 x 2^2 x 2^2 cells of side 1 m, 300 particles spread over a 6 m cube (cells -3 to 3 on each
 // axis: more than the grid's 4 along y and z, so distant particles share keys; across the period of
 // 8 along x, so rows split there) and 400 packed into one cell, whose rows then hold many times 8
-// candidates.
-inline SortedParticles clustered_particles(std::mt19937_64& random, bool half_cells = false) {
+// candidates. origin_x: the grid's GridShape::origin_x.
+inline SortedParticles clustered_particles(std::mt19937_64& random, bool half_cells = false,
+                                           std::uint32_t origin_x = 0) {
   std::uniform_real_distribution<float> spread(-2.5f, 3.5f), packed(0.05f, 0.95f);
   std::vector<kernels::Vec4> particles;
   for (int p = 0; p < 300; ++p) particles.push_back(kernels::Vec4{spread(random), spread(random), spread(random), 0.0f});
   for (int p = 0; p < 400; ++p) particles.push_back(kernels::Vec4{packed(random), packed(random), packed(random), 0.0f});
-  const kernels::GridShape shape = metre_cells(3, 2, 2);
+  const kernels::GridShape shape = metre_cells(3, 2, 2, origin_x);
   return half_cells ? sort_into_half_cells(particles, shape) : sort_into_grid(particles, shape);
 }
 
