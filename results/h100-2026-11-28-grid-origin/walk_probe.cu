@@ -4,7 +4,6 @@
 // grid's period, so that no row of cells wraps. Cells of h, sorted by key, each cell's lower half
 // along x first; walks over whole rows (full) and trimmed by half a cell as the kernels' one-lane
 // walks are (trimmed), the pair's distance from sqrtf or, as in the kernels, from rsqrtf.
-// rows() is pair_once_probe.cu's (h100-2026-11-28-pair-once), taken here whole (half = false).
 // Not part of the build: nvcc -O3 -arch=sm_90 -std=c++17 walk_probe.cu -o walk_probe
 #include <cuda_runtime.h>
 #include <algorithm>
@@ -22,80 +21,59 @@ __host__ __device__ inline uint32_t key(int cx, int cy, int cz) {
 }
 struct View { const float4* pos; const uint32_t* start; int n; float h, h2, c; const uint32_t* middle; };
 
-__device__ inline float spiky(const View& v, float r2) { float r = sqrtf(r2); float d = v.h - r; return v.c * d * d * d; }
+// The spiky number density's pair term from r^2, the distance from sqrtf or, as in the kernels
+// (SmoothingKernels::pair_distance), from one rsqrtf.
+template <bool Rsqrt>
+__device__ inline float spiky(const View& v, float r2) {
+  const float r = Rsqrt ? r2 * (r2 > 1e-24f ? rsqrtf(r2) : 0.f) : sqrtf(r2);
+  const float d = v.h - r;
+  return v.c * d * d * d;
+}
 
-template <class F>
-__device__ inline void rows(const View& v, float4 x, bool half, uint32_t s, F&& f) {
-  int cx = int(floorf(x.x)), cy = int(floorf(x.y)), cz = int(floorf(x.z));
-  for (int dz = -1; dz <= 1; ++dz)
+// f(begin, end) for each range of sorted particles around x: a row of three cells along x, or each
+// cell of a row that wraps; Trimmed: a walk from the upper half of its cell (by 1/64 of a cell)
+// leaves out the lower half of the cell below it along x, and the other way round, as the kernels'
+// one-lane walks do (CellRanges::for_each_range).
+template <bool Trimmed, class F>
+__device__ inline void ranges(const View& v, float4 x, F&& f) {
+  const int cx = int(floorf(x.x)), cy = int(floorf(x.y)), cz = int(floorf(x.z));
+  const float fraction = x.x - floorf(x.x);
+  const int side = !Trimmed ? 0 : fraction >= 0.5f + 1.0f / 64 ? 1 : fraction < 0.5f - 1.0f / 64 ? -1 : 0;
+  const auto begin_below = [&](uint32_t k) { return side > 0 ? v.middle[k] : v.start[k]; };
+  const auto end_above = [&](uint32_t k) { return side < 0 ? v.middle[k] : v.start[k + 1]; };
+  for (int dz = -1; dz <= 1; ++dz) {
     for (int dy = -1; dy <= 1; ++dy) {
-      bool own = dz == 0 && dy == 0;
-      if (half && !own && !(dz == 1 || (dz == 0 && dy == 1))) continue;
-      uint32_t b, e;
-      uint32_t first = key(cx - 1, cy + dy, cz + dz), last = key(cx + 1, cy + dy, cz + dz);
-      if (last == first + 2) { b = v.start[first]; e = v.start[last + 1]; if (half && own) b = s + 1; f(b, e); }
-      else for (int dx = -1; dx <= 1; ++dx) { uint32_t k = key(cx + dx, cy + dy, cz + dz); b = v.start[k]; e = v.start[k + 1];
-        if (half && own) b = max(b, s + 1); if (b < e) f(b, e); }
+      const uint32_t first = key(cx - 1, cy + dy, cz + dz), last = key(cx + 1, cy + dy, cz + dz);
+      if (last == first + 2) {
+        f(begin_below(first), end_above(last));
+      } else {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const uint32_t k = key(cx + dx, cy + dy, cz + dz);
+          f(dx < 0 ? begin_below(k) : v.start[k], dx > 0 ? end_above(k) : v.start[k + 1]);
+        }
+      }
     }
+  }
 }
 
-
-// Trimmed walk over cells split in halves along x (the engine's one-lane walk).
-template <class F>
-__device__ inline void rows_trimmed(const View& v, float4 x, F&& f) {
-  int cx = int(floorf(x.x)), cy = int(floorf(x.y)), cz = int(floorf(x.z));
-  const float frac = x.x - floorf(x.x);
-  const int side = frac >= 0.5f + 1.0f / 64 ? 1 : frac < 0.5f - 1.0f / 64 ? -1 : 0;
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy) {
-      uint32_t first = key(cx - 1, cy + dy, cz + dz), last = key(cx + 1, cy + dy, cz + dz);
-      if (last == first + 2) f(side > 0 ? v.middle[first] : v.start[first], side < 0 ? v.middle[last] : v.start[last + 1]);
-      else for (int dx = -1; dx <= 1; ++dx) { uint32_t k = key(cx + dx, cy + dy, cz + dz);
-        f(dx < 0 && side > 0 ? v.middle[k] : v.start[k], dx > 0 && side < 0 ? v.middle[k] : v.start[k + 1]); }
-    }
-}
-__global__ void trimmed_density_sqrt(View v, float* out) {
-  uint32_t s = blockIdx.x * blockDim.x + threadIdx.x; if (s >= v.n) return;
-  float4 x = v.pos[s]; float sum = 0;
-  rows_trimmed(v, x, [&](uint32_t b, uint32_t e) { for (uint32_t t = b; t < e; ++t) { float4 y = v.pos[t];
-    float dx = x.x - y.x, dy = x.y - y.y, dz = x.z - y.z; float r2 = dx * dx + dy * dy + dz * dz; if (r2 < v.h2) sum += spiky(v, r2); } });
-  out[s] = sum;
-}
-__device__ inline float spiky_rsqrt(const View& v, float r2) { float inv = r2 > 1e-24f ? rsqrtf(r2) : 0.f; float r = r2 * inv; float d = v.h - r; return v.c * d * d * d; }
-__global__ void trimmed_density_rsqrt(View v, float* out) {
-  uint32_t s = blockIdx.x * blockDim.x + threadIdx.x; if (s >= v.n) return;
-  float4 x = v.pos[s]; float sum = 0;
-  rows_trimmed(v, x, [&](uint32_t b, uint32_t e) { for (uint32_t t = b; t < e; ++t) { float4 y = v.pos[t];
-    float dx = x.x - y.x, dy = x.y - y.y, dz = x.z - y.z; float r2 = dx * dx + dy * dy + dz * dz; if (r2 < v.h2) sum += spiky_rsqrt(v, r2); } });
-  out[s] = sum;
-}
-__global__ void full_density_rsqrt(View v, float* out) {
-  uint32_t s = blockIdx.x * blockDim.x + threadIdx.x; if (s >= v.n) return;
-  float4 x = v.pos[s]; float sum = 0;
-  rows(v, x, false, s, [&](uint32_t b, uint32_t e) { for (uint32_t t = b; t < e; ++t) { float4 y = v.pos[t];
-    float dx = x.x - y.x, dy = x.y - y.y, dz = x.z - y.z; float r2 = dx * dx + dy * dy + dz * dz; if (r2 < v.h2) sum += spiky_rsqrt(v, r2); } });
-  out[s] = sum;
-}
-
-// visit(t, d, r2) for each candidate t of the full (half = false) or half walk of sorted particle s
-// at x: d = x - x_t, r2 = |d|^2.
-template <class Visit>
-__device__ inline void candidates(const View& v, float4 x, bool half, uint32_t s, Visit&& visit) {
-  rows(v, x, half, s, [&](uint32_t b, uint32_t e) {
+// One thread per particle: its number density over the candidates of its walk.
+template <bool Trimmed, bool Rsqrt>
+__global__ void density(View v, float* out) {
+  const uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
+  if (s >= v.n) return;
+  const float4 x = v.pos[s];
+  float sum = 0;
+  ranges<Trimmed>(v, x, [&](uint32_t b, uint32_t e) {
     for (uint32_t t = b; t < e; ++t) {
       const float4 y = v.pos[t];
-      const float3 d = make_float3(x.x - y.x, x.y - y.y, x.z - y.z);
-      visit(t, d, d.x * d.x + d.y * d.y + d.z * d.z);
+      const float dx = x.x - y.x, dy = x.y - y.y, dz = x.z - y.z;
+      const float r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 < v.h2) sum += spiky<Rsqrt>(v, r2);
     }
   });
-}
-
-__global__ void full_density(View v, float* out) {
-  uint32_t s = blockIdx.x * blockDim.x + threadIdx.x; if (s >= v.n) return;
-  float sum = 0;
-  candidates(v, v.pos[s], false, s, [&](uint32_t, float3, float r2) { if (r2 < v.h2) sum += spiky(v, r2); });
   out[s] = sum;
 }
+
 template <class F> float time_us(F&& f, int reps = 60) {
   cudaEvent_t a, b; cudaEventCreate(&a); cudaEventCreate(&b); std::vector<float> t;
   for (int i = 0; i < 5; ++i) f();
@@ -123,13 +101,13 @@ int main() {
   View v{dpos, dstart, n, h, h * h, float(15.0 / (M_PI * h * h * h * h * h * h)), dmiddle};
   const int B = 128, G = (n + B - 1) / B;
   float* dout3; CK(cudaMalloc(&dout3, n * 4));
-  float t_full = time_us([&] { full_density<<<G, B>>>(v, dout); });
-  float t_full_r = time_us([&] { full_density_rsqrt<<<G, B>>>(v, dout); });
-  float t_trim = time_us([&] { trimmed_density_sqrt<<<G, B>>>(v, dout2); });
-  float t_trim_r = time_us([&] { trimmed_density_rsqrt<<<G, B>>>(v, dout3); });
+  float t_full = time_us([&] { density<false, false><<<G, B>>>(v, dout); });
+  float t_full_r = time_us([&] { density<false, true><<<G, B>>>(v, dout); });
+  float t_trim = time_us([&] { density<true, false><<<G, B>>>(v, dout2); });
+  float t_trim_r = time_us([&] { density<true, true><<<G, B>>>(v, dout3); });
   CK(cudaDeviceSynchronize());
   std::vector<float> a(n), b(n), c(n);
-  full_density<<<G, B>>>(v, dout); trimmed_density_sqrt<<<G, B>>>(v, dout2); trimmed_density_rsqrt<<<G, B>>>(v, dout3);
+  density<false, false><<<G, B>>>(v, dout); density<true, false><<<G, B>>>(v, dout2); density<true, true><<<G, B>>>(v, dout3);
   cudaMemcpy(a.data(), dout, n * 4, cudaMemcpyDeviceToHost); cudaMemcpy(b.data(), dout2, n * 4, cudaMemcpyDeviceToHost); cudaMemcpy(c.data(), dout3, n * 4, cudaMemcpyDeviceToHost);
   double mb = 0, mc = 0; for (int i = 0; i < n; ++i) { mb = std::max(mb, std::fabs(double(a[i]) - b[i]) / a[i]); mc = std::max(mc, std::fabs(double(a[i]) - c[i]) / a[i]); }
   long long cand_full = 0, cand_trim = 0;
