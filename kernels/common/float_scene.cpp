@@ -130,8 +130,9 @@ GridShape choose_grid_shape(const std::vector<Vec4>& positions, double h) {
   // The scene's lowest cell along x takes key column 1, so that its rows of cells (from column 0)
   // do not wrap as long as the scene spans fewer than 2^bits_x - 2 cells (GridShape::origin_x).
   if (!positions.empty()) {
-    const auto lowest = static_cast<std::int32_t>(std::floor(shape.in_cells(lo[0])));
-    shape.origin_x = 1u - static_cast<std::uint32_t>(lowest);
+    int lowest_x, lowest_y, lowest_z;
+    shape.cell_of(Vec3{lo[0], lo[1], lo[2]}, lowest_x, lowest_y, lowest_z);
+    shape.origin_x = 1u - static_cast<std::uint32_t>(lowest_x);
   }
   return shape;
 }
