@@ -51,10 +51,32 @@ MSSPH_HD std::uint32_t index_from_float_bits(float f) {
 // The body index rides in the sorted position's fourth component.
 MSSPH_HD std::uint32_t body_of(const Vec4& sorted_position) { return index_from_float_bits(sorted_position.w); }
 
-struct VolumePressure {
+struct alignas(8) VolumePressure {  // aligned: one 8-byte load
   float volume;    // V = m / rho [m^3]
   float pressure;  // P [Pa]
 };
+
+// Loads of a sorted array that no thread writes while the pass reading it runs, issued where they
+// are written. nvcc moves a load whose value is used only past a branch into that branch, so a
+// force pair's volume and velocity were loaded after its distance test and its body's kind, each
+// behind the last; on the GPU these read through the read-only data path with inline PTX that the
+// compiler keeps in place (__ldg).
+MSSPH_HD Vec4 load_in_place(const Vec4* array, std::uint32_t k) {
+#if defined(__CUDA_ARCH__)
+  const float4 v = __ldg(reinterpret_cast<const float4*>(array + k));
+  return {v.x, v.y, v.z, v.w};
+#else
+  return array[k];
+#endif
+}
+MSSPH_HD VolumePressure load_in_place(const VolumePressure* array, std::uint32_t k) {
+#if defined(__CUDA_ARCH__)
+  const float2 v = __ldg(reinterpret_cast<const float2*>(array + k));
+  return {v.x, v.y};
+#else
+  return array[k];
+#endif
+}
 
 // Read by the density and force passes.
 struct SortedView {
