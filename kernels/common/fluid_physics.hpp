@@ -279,10 +279,10 @@ MSSPH_HD ForceSum zero_force_sum() {
 // hands over is a neighbour (CellRanges::for_each_candidate_within), a team's list entries three
 // in four. Within i's own body the kind is i's, never a boundary's (boundary particles receive no
 // forces). A rigid or deformable particle's own-body neighbours add nothing, and it loads the rest
-// after the test that leaves them out. On an H200 the 1M fluid step took 574 us against 607 (its
-// force pass 325 against 347), the 30k fluid step 33.9 against 36.3, the rigid and deformable
-// steps the same; with the loads ahead for every particle, the 1M fluid step took 600 us and the
-// rigid and deformable force passes 5-6 us longer (results/performance.md).
+// after the test that leaves them out. On an H200 the 1M fluid step took 574 us against 603 (its
+// force pass 325 against 343), the 30k fluid step 33.9 against 36.3 (one run each), the rigid and
+// deformable steps the same; with the loads ahead for every particle, the 1M fluid step took 600 us
+// and the rigid and deformable force passes 5-6 us longer (results/performance.md).
 MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const SortedView& v, std::uint32_t t) {
   if (t == i.s) return;
   const bool fluid = i.parameters.kind == kFluid;
