@@ -6,8 +6,8 @@
 // Every axis has at least 4 cells, so the 27 cells around a cell have 27 distinct keys and no
 // particle is visited twice; particles of a distant periodic image share a key but fail the
 // distance test. The grid needs no bounding box, never grows, and a particle flung far away
-// costs nothing. Particles are sorted by key at each rebuild (on the GPU, each cell's lower half
-// along x first: CellRanges::cell_middle).
+// costs nothing. Particles are sorted by key at each rebuild, each cell's lower half along x
+// first (CellRanges::cell_middle).
 #include "vec_math.hpp"
 
 #include <cstdint>
@@ -46,8 +46,8 @@ struct GridShape {
     const float c = in_cells(x.x);
     return c - std::floor(c);
   }
-  // Whether x lies in the upper half of its cell along x: the GPU's grid sorts each cell's particles
-  // of the lower half first (CellRanges::cell_middle).
+  // Whether x lies in the upper half of its cell along x: the grids (GPU and host) sort each cell's
+  // particles of the lower half first (CellRanges::cell_middle).
   MSSPH_HD bool in_upper_half(Vec3 x) const { return x_fraction(x) >= 0.5f; }
   MSSPH_HD std::uint32_t key(int cx, int cy, int cz) const {
     const std::uint32_t mx = (1u << bits_x) - 1u, my = (1u << bits_y) - 1u, mz = (1u << bits_z) - 1u;
@@ -145,14 +145,14 @@ struct CellRanges {
   // entries are stale): lets a walk leave out the rows of cells that hold nothing but one body.
   // Null where no walk does (scenes without rigid or deformable bodies, the host).
   const std::uint16_t* cell_body = nullptr;
-  // Where the GPU's grid splits each cell along x (GridShape::in_upper_half): cell k's particles of
-  // the lower half are [cell_start[k], cell_middle[k]), of the upper half [cell_middle[k],
-  // cell_start[k + 1]). A one-lane walk from the upper half of a cell (trimmed_side) skips the
-  // lower half of the cell below it along x, whose particles all lie farther than a cell away, and
-  // the other way round: it walks 2.5 cells of each row instead of 3. Null where cells are not
-  // split (the host). (Cells sorted by x within, with walks that stop along x at each row's reach,
-  // took a quarter to two fifths fewer candidates, and the 1M fluid step 27-35 % longer on an
-  // H100: the stop made each load wait for the last, and a warp's lanes stop apart;
+  // Where the grids (GPU and host) split each cell along x (GridShape::in_upper_half): cell k's
+  // particles of the lower half are [cell_start[k], cell_middle[k]), of the upper half
+  // [cell_middle[k], cell_start[k + 1]). A one-lane walk from the upper half of a cell (trimmed_side)
+  // skips the lower half of the cell below it along x, whose particles all lie farther than a cell
+  // away, and the other way round: it walks 2.5 cells of each row instead of 3. Null where cells are
+  // not split (tests of whole cells). (Cells sorted by x within, with walks that stop along x at each
+  // row's reach, took a quarter to two fifths fewer candidates, and the 1M fluid step 27-35 % longer
+  // on an H100: the stop made each load wait for the last, and a warp's lanes stop apart;
   // results/performance.md.)
   const std::uint32_t* cell_middle = nullptr;
 

@@ -42,6 +42,7 @@ class CpuBackend final : public Backend {
   FloatScene scene_;
   // Per step, in cell order.
   std::vector<std::uint32_t> cell_start_;  // cell_count() + 1 entries
+  std::vector<std::uint32_t> cell_middle_;  // CellRanges::cell_middle: where each cell's upper half begins
   std::vector<std::uint32_t> sorted_id_;
   std::vector<Vec4> sorted_position_, sorted_velocity_;
   std::vector<VolumePressure> volume_pressure_;
