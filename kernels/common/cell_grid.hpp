@@ -59,6 +59,11 @@ struct GridShape {
     cell_of(x, cx, cy, cz);
     return key(cx, cy, cz);
   }
+  // A particle's half key, by which the grids (GPU and host) sort: its cell key times two, plus
+  // one in the cell's upper half along x (in_upper_half). Cell keys take at most 31 bits below
+  // 2^30 particles (choose_grid_shape: about two cells per particle), whose arrays alone would
+  // take 120 GB.
+  MSSPH_HD std::uint32_t half_key_of(Vec3 x) const { return key_of(x) << 1 | (in_upper_half(x) ? 1u : 0u); }
 };
 
 // The index of the lowest set bit of a non-zero word.

@@ -61,12 +61,9 @@ NeighbourLists CpuBackend::neighbour_lists() {
 void CpuBackend::build_grid() {
   const std::size_t n = setup_.size();
   const std::size_t cells = scene_.grid.cell_count();
-  std::vector<std::uint32_t> half_key(n);  // 2 key + 1 in the upper half
+  std::vector<std::uint32_t> half_key(n);
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 x = xyz(scene_.position[i]);
-    half_key[i] = 2 * scene_.grid.key_of(x) + (scene_.grid.in_upper_half(x) ? 1u : 0u);
-  }
+  for (std::size_t i = 0; i < n; ++i) half_key[i] = scene_.grid.half_key_of(xyz(scene_.position[i]));
   // The prefix sum of the halves' counts gives the cell table and the halves' boundaries, as the
   // GPU's scan makes them.
   std::vector<std::uint32_t> half_start(2 * cells + 1, 0u);

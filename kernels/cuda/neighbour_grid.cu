@@ -23,7 +23,7 @@ struct GridArrays {
   const Vec4* position;
   const Vec4* velocity;
   const std::uint32_t* body;
-  std::uint32_t* keys;         // half keys (half_key)
+  std::uint32_t* keys;         // half keys (GridShape::half_key_of)
   std::uint32_t* cell_count;
   std::uint32_t* cell_start;
   std::uint32_t* cell_middle;
@@ -44,16 +44,9 @@ struct GridArrays {
   }
 };
 
-// A particle's half key: its cell key times two, plus one in the cell's upper half along x
-// (GridShape::in_upper_half). Cell keys take at most 31 bits below 2^30 particles
-// (choose_grid_shape: about two cells per particle), whose arrays alone would take 120 GB.
-__device__ std::uint32_t half_key(const GridShape& grid, Vec3 x) {
-  return grid.key_of(x) << 1 | (grid.in_upper_half(x) ? 1u : 0u);
-}
-
 // A particle's half id: its index, plus 2^31 in its cell's upper half, so that half ids order a
 // cell's particles as the grid sorts them, its lower half first. Indices take at most 31 bits
-// (half_key says why).
+// (GridShape::half_key_of says why).
 constexpr std::uint32_t kUpperHalfBit = 1u << 31;
 __device__ std::uint32_t half_id(std::uint32_t i, std::uint32_t half_key) {
   return half_key & 1u ? i | kUpperHalfBit : i;
@@ -149,7 +142,7 @@ __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check, 
     return;
   }
   for_each_grid_item(a.n, [&](std::uint32_t i) {
-    const std::uint32_t key = half_key(a.grid, xyz(a.position[i]));
+    const std::uint32_t key = a.grid.half_key_of(xyz(a.position[i]));
     a.keys[i] = key;
     atomicAdd(&a.cell_count[key >> 1], 1u);
   });
