@@ -1,6 +1,7 @@
 #include "float_scene.hpp"
 
 #include "eigen_conversion.hpp"
+#include "list_skin.hpp"
 #include "model/deformable_rest_state.hpp"
 #include "model/wall_exclusion.hpp"
 #include "util/errors.hpp"
@@ -196,6 +197,12 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
   }
   scene.grid = choose_grid_shape(scene.position, setup.smoothing_length);
   add_rest_state(setup, scene);
+  return scene;
+}
+
+FloatScene make_float_scene_with_list_cells(const ParticleSetup& setup) {
+  FloatScene scene = make_float_scene(setup);
+  scene.grid = choose_grid_shape(scene.position, list_cell_size(setup.smoothing_length));
   return scene;
 }
 

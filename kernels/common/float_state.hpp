@@ -2,8 +2,9 @@
 // The float backends' checkpoint (Backend::save_state), the same arrays for `cpu` and `cuda`:
 // canonical positions and velocities, the held or deactivated flags, the movable rigid bodies,
 // the deformable particles' last rotations (the next step's rotation iteration starts from them:
-// elastic_physics.hpp), the time and step count and, for `cuda` with neighbour lists, what makes a
-// restart record the same lists. Everything else a step computes from these before reading it.
+// elastic_physics.hpp), the time and step count and, where the backend keeps neighbour lists
+// (`cpu`, and `cuda` with teams of lanes), what makes a restart record the same lists. Everything
+// else a step computes from these before reading it.
 #include "float_scene.hpp"
 #include "sim/state_arrays.hpp"
 
@@ -19,7 +20,7 @@ struct FloatRunState {
   std::vector<Quat> rotation;  // per deformable particle
   double time = 0.0;
   std::uint64_t steps = 0;
-  // The cuda backend's neighbour lists, where it keeps them (list_skin.hpp): each particle's
+  // The neighbour lists, where the backend keeps them (list_skin.hpp): each particle's
   // canonical position at the last grid rebuild, from which a restart records the same lists
   // again, and whether the next step must rebuild. Empty and 0 otherwise.
   std::vector<Vec4> list_origin;

@@ -1,12 +1,12 @@
 #pragma once
-// The skin of the GPU teams' neighbour lists: Verlet's neighbour list (Verlet 1967; Allen and
-// Tildesley, "Computer Simulation of Liquids", its neighbour-list section). At a rebuild each list
-// records every candidate within h + skin of its particle. Two particles within h now, each having
-// moved at most half the skin since, were within h + skin then (triangle inequality), so they are
-// listed: the lists, the cell order and the grid stay valid, and a step reads the lists instead of
-// sorting the particles and walking the cells, until some particle has moved farther than half the
-// skin (moved_past_trigger). The sums then take the same terms as over a fresh grid, in the order
-// of the rebuild's walk.
+// The skin of the neighbour lists, the cpu backend's and the GPU teams': Verlet's neighbour list
+// (Verlet 1967; Allen and Tildesley, "Computer Simulation of Liquids", its neighbour-list
+// section). At a rebuild each list records every candidate within h + skin of its particle. Two
+// particles within h now, each having moved at most half the skin since, were within h + skin then
+// (triangle inequality), so they are listed: the lists, the cell order and the grid stay valid, and
+// a step reads the lists instead of sorting the particles and walking the cells, until some
+// particle has moved farther than half the skin (moved_past_trigger). The sums then take the same
+// terms as over a fresh grid, in the order of the rebuild's walk.
 //
 // The grid's cells are h + skin wide (list_cell_size), so a rebuild's walk of 27 cells sees every
 // candidate within h + skin.

@@ -6,10 +6,11 @@
 // list takes the same terms in the same order as a sum over the walk: the same bits.
 //
 // One layout, written and read by two pairs of loops:
-// - the host records one list per particle and step, of radius h, before its sums
+// - the host records one list per particle, of radius h + skin, when its grid is rebuilt
 //   (record_neighbours), without a branch on the distance (every candidate is written, the count
-//   advances only for one within the support), since on the host that branch is mispredicted
-//   about one candidate in six; its density and force passes read the list (for_each_neighbour);
+//   advances only for one within the radius), since on the host that branch is mispredicted
+//   about one candidate in six; its density and force passes read the list (for_each_neighbour),
+//   on that step and on the following ones until the lists expire (list_skin.hpp);
 // - a GPU team's density pass, on a step that rebuilt the grid, records one list per lane, its
 //   share of the walk, of radius h + skin, as it sums (density_sum_recording, through
 //   ListRecorder); the force pass visits it instead of walking the cells again, and so do both
@@ -72,19 +73,43 @@ class ListRecorder {
   std::uint32_t count_ = 0;
 };
 
-// Records sorted particle s's neighbours (itself included, r = 0) into its row of the host's
-// lists (particle_lists: entries contiguous, which this loop relies on; with the GPU's recorder
-// and its stride the cpu backend's grid phase took 25 % longer).
-MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists, std::uint32_t s) {
+// Records the candidates closer than sqrt(radius2) to sorted particle s (itself included, r = 0)
+// into its row of the host's lists (particle_lists: entries contiguous, which this loop relies on;
+// with the GPU's recorder and its stride the cpu backend's grid phase took 25 % longer).
+MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2) {
   const Vec3 x_i = xyz(v.position[s]);
   std::uint32_t* list = lists.first_entry(s);
   const std::uint32_t last = lists.capacity - 1;
   std::uint32_t count = 0;
   v.grid.for_each_candidate(x_i, [&](std::uint32_t t) {
     list[count < last ? count : last] = t;
-    count += squared_norm(x_i - xyz(v.position[t])) < v.step.smoothing.h2 ? 1u : 0u;
+    count += squared_norm(x_i - xyz(v.position[t])) < radius2 ? 1u : 0u;
   });
   lists.count[s] = count;
+}
+
+// Copies the entries of sorted particle s's row of `recorded` (particle_lists of the same capacity
+// as `within`, recorded within h + skin) that lie within the support where the particles stand now into its row of `within`, in
+// their order, with record_neighbours' writes free of a branch on the distance: the sums over
+// `within` then take only terms they keep, which is what keeps their pair functions' branches
+// predictable on the host. An overflowed row stays overflowed (its readers walk the grid).
+MSSPH_HD void keep_within_support(const SortedView& v, const NeighbourLists& recorded, const NeighbourLists& within,
+                                  std::uint32_t s) {
+  const std::uint32_t recorded_count = recorded.count[s];
+  if (recorded_count >= recorded.capacity) {
+    within.count[s] = within.capacity;
+    return;
+  }
+  const Vec3 x_i = xyz(v.position[s]);
+  const std::uint32_t* from = recorded.first_entry(s);
+  std::uint32_t* to = within.first_entry(s);
+  std::uint32_t count = 0;
+  for (std::uint32_t k = 0; k < recorded_count; ++k) {
+    const std::uint32_t t = from[k];
+    to[count] = t;
+    count += squared_norm(x_i - xyz(v.position[t])) < v.step.smoothing.h2 ? 1u : 0u;
+  }
+  within.count[s] = count;
 }
 
 // Calls visit(t) for every entry of list `list` in its order; an overflowed list calls

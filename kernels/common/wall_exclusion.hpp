@@ -10,8 +10,8 @@
 // (touches_wall over each lane's share, the shares' results ORed). Only what a rejection does to
 // the velocity depends on the order, so that part (keep_out_of_walls) runs in one lane, and only
 // for a rejected move. Boundary particles never move, so their sorted positions (from the start
-// of the step) are where they are now; the grid's 27 cells around the new position hold every
-// particle within h of it.
+// of the step) are where they are now, and the grid's 27 cells around the new position hold every
+// boundary particle within h of it, a grid kept from an earlier step's rebuild too (list_skin.hpp).
 #include "particle_views.hpp"
 
 #include <cmath>

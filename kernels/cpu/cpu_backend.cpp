@@ -4,6 +4,7 @@
 #include "../common/elastic_physics.hpp"
 #include "../common/float_state.hpp"
 #include "../common/fluid_physics.hpp"
+#include "../common/list_skin.hpp"
 #include "../common/neighbour_list.hpp"
 #include "../common/read_back.hpp"
 #include "util/host_info.hpp"
@@ -13,7 +14,8 @@
 
 namespace mssph::kernels {
 
-CpuBackend::CpuBackend(ParticleSetup setup) : setup_(std::move(setup)), scene_(make_float_scene(setup_)) {
+CpuBackend::CpuBackend(ParticleSetup setup)
+    : setup_(std::move(setup)), scene_(make_float_scene_with_list_cells(setup_)) {
   const std::size_t n = setup_.size();
   cell_start_.assign(std::size_t{scene_.grid.cell_count()} + 1, 0);
   cell_middle_.assign(scene_.grid.cell_count(), 0);
@@ -21,8 +23,11 @@ CpuBackend::CpuBackend(ParticleSetup setup) : setup_(std::move(setup)), scene_(m
   sorted_position_.resize(n);
   sorted_velocity_.resize(n);
   volume_pressure_.resize(n);
+  recorded_count_.resize(n);
+  recorded_index_.resize(n * kNeighbourCapacity);
   neighbour_count_.resize(n);
   neighbour_index_.resize(n * kNeighbourCapacity);
+  list_origin_.resize(n);
   interaction_force_.assign(n, Vec4{0, 0, 0, 0});
   elastic_force_.assign(n, Vec4{0, 0, 0, 0});
   const std::size_t deformables = scene_.deformable_body.size();
@@ -49,15 +54,52 @@ SortedView CpuBackend::sorted_view() const {
                     scene_.own_rest_number_density.empty() ? nullptr : scene_.own_rest_number_density.data()};
 }
 
+NeighbourLists CpuBackend::recorded_lists() {
+  return particle_lists(kNeighbourCapacity, recorded_count_.data(), recorded_index_.data());
+}
+
 NeighbourLists CpuBackend::neighbour_lists() {
   return particle_lists(kNeighbourCapacity, neighbour_count_.data(), neighbour_index_.data());
 }
 
+// The neighbours phase: the particles copied into the cell order of the last rebuild, whose lists
+// are kept until some particle has moved past the trigger (list_skin.hpp); then the grid is
+// rebuilt and the lists recorded again. Either way each list's entries within h now are copied out
+// for the step's sums (keep_within_support). Summing over the recorded lists themselves, whose
+// entries beyond h (about one in four) the pair functions skip by a branch the host mispredicts,
+// made the 5k fluid block's density and force passes 1.8x as long on the 2-core CI machine; the
+// copy made inside the density pass, just before each particle's sum, left the fluid blocks 8-11 %
+// slower than this separate pass (results/performance.md).
+void CpuBackend::update_neighbour_lists() {
+  if (rebuild_requested_ || lists_expired()) build_grid();
+  const SortedView view = sorted_view();
+  const NeighbourLists recorded = recorded_lists(), within = neighbour_lists();
+  const auto count = static_cast<std::uint32_t>(setup_.size());
+#pragma omp parallel for schedule(static)
+  for (std::uint32_t s = 0; s < count; ++s) keep_within_support(view, recorded, within, s);
+}
+
+// Copies every particle into the last rebuild's cell order and returns whether one has moved past
+// the trigger since.
+bool CpuBackend::lists_expired() {
+  const ListSkin skin = list_skin(scene_.step.smoothing.h);
+  const auto count = static_cast<std::uint32_t>(setup_.size());
+  bool moved_far = false;
+#pragma omp parallel for schedule(static) reduction(|| : moved_far)
+  for (std::uint32_t s = 0; s < count; ++s) {
+    place_in_cell_order(s, sorted_id_[s], scene_.position.data(), scene_.velocity.data(), scene_.body.data(),
+                        sorted_position_.data(), sorted_velocity_.data());
+    if (moved_past_trigger(xyz(sorted_position_[s]), xyz(list_origin_[s]), skin)) moved_far = true;
+  }
+  return moved_far;
+}
+
 // Counting sort of the particles by cell key and, within a cell, by half along x (stable: equal
 // keys keep canonical order), then the same cell table, halves and cell-ordered copies as the
-// CUDA backend, then every particle's neighbour list, which the density and force passes visit
-// instead of the 27 cells. The halves let the list's walk trim half a cell at each end of a row
-// (CellRanges::cell_middle), 2.5 cells of 3, as the GPU's one-lane walks do.
+// CUDA backend, then every particle's list of the candidates within h + skin, which the density
+// and force passes visit instead of the 27 cells until the lists expire. The halves let the list's
+// walk trim half a cell at each end of a row (CellRanges::cell_middle), 2.5 cells of 3, as the
+// GPU's one-lane walks do.
 void CpuBackend::build_grid() {
   const std::size_t n = setup_.size();
   const std::size_t cells = scene_.grid.cell_count();
@@ -83,9 +125,17 @@ void CpuBackend::build_grid() {
                         sorted_position_.data(), sorted_velocity_.data());
   }
   const SortedView view = sorted_view();
-  const NeighbourLists lists = neighbour_lists();
-#pragma omp parallel for schedule(static)
-  for (std::uint32_t s = 0; s < count; ++s) record_neighbours(view, lists, s);
+  const NeighbourLists lists = recorded_lists();
+  const float record_radius2 = list_skin(scene_.step.smoothing.h).record_radius2;
+  bool overflowed = false;
+#pragma omp parallel for schedule(static) reduction(|| : overflowed)
+  for (std::uint32_t s = 0; s < count; ++s) {
+    record_neighbours(view, lists, s, record_radius2);
+    if (lists.count[s] >= lists.capacity) overflowed = true;
+  }
+  list_origin_ = sorted_position_;
+  rebuild_requested_ = overflowed;  // an overflowed list is walked on this step's fresh grid only
+  ++grid_builds_;
 }
 
 DeformableView CpuBackend::deformable_view() {
@@ -155,7 +205,7 @@ void CpuBackend::advance_rigid_bodies() {
 
 // Paper 3.2 on the kernels' functions, one phase per line with the shared phase names.
 void CpuBackend::step() {
-  timed(phase_seconds_[kNeighbours], [&] { build_grid(); });
+  timed(phase_seconds_[kNeighbours], [&] { update_neighbour_lists(); });
   timed(phase_seconds_[kRotations], [&] { compute_rotations_and_elastic_forces(); });  // step 1
   timed(phase_seconds_[kDensities], [&] { compute_densities(); });                       // step 2
   timed(phase_seconds_[kForces], [&] { compute_forces_and_advance_particles(); });       // step 3 (+ 4: leap-frog)
@@ -163,9 +213,11 @@ void CpuBackend::step() {
   time_ += setup_.dt;
 }
 
-// Steps up to the force sums, which are returned in canonical order instead of being integrated.
+// Steps up to the force sums, which are returned in canonical order instead of being integrated,
+// on a grid rebuilt where the particles stand.
 ForceEvaluation CpuBackend::evaluate_forces() {
-  build_grid();
+  rebuild_requested_ = true;
+  update_neighbour_lists();
   compute_rotations_and_elastic_forces();
   compute_densities();
   const SortedView view = sorted_view();
@@ -182,6 +234,7 @@ void CpuBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& posi
     const std::uint32_t kind = scene_.bodies[scene_.body[i]].kind;
     if (kind == kFluid || kind == kDeformable) scene_.position[i] = make_vec4(scene_.to_kernel_frame(positions[i]), 0.0f);
   }
+  rebuild_requested_ = true;
 }
 
 StateArrays CpuBackend::save_state() {
@@ -193,11 +246,23 @@ StateArrays CpuBackend::save_state() {
   run.rotation = rotation_;
   run.time = time_;
   run.steps = static_cast<std::uint64_t>(std::llround(time_ / setup_.dt));
+  // The lists' origin back in canonical order: the positions the last rebuild sorted (before the
+  // first, any: that step rebuilds).
+  run.list_origin = scene_.position;
+  if (grid_builds_ > 0) {
+    for (std::size_t s = 0; s < list_origin_.size(); ++s) run.list_origin[sorted_id_[s]] = make_vec4(xyz(list_origin_[s]), 0.0f);
+  }
+  run.list_rebuild_requested = rebuild_requested_ ? 1 : 0;
   return save_float_state(run);
 }
 
 void CpuBackend::restore_state(const StateArrays& state) {
-  FloatRunState restored = restore_float_state(state, scene_, false);
+  FloatRunState restored = restore_float_state(state, scene_, true);
+  // The saved run's lists: the grid rebuilt where the particles stood at its last rebuild gives the
+  // same cell order and lists, so the restarted run sums as the saved one did.
+  scene_.position = std::move(restored.list_origin);
+  build_grid();
+  rebuild_requested_ = restored.list_rebuild_requested != 0;
   scene_.position = std::move(restored.position);
   scene_.velocity = std::move(restored.velocity);
   scene_.fixed = std::move(restored.fixed);

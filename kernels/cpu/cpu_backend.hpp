@@ -1,11 +1,15 @@
 #pragma once
 // The `cpu` backend: the CUDA backend's float32 per-particle functions (kernels/common/) run by
 // OpenMP loops on the host, so a machine without a GPU exercises exactly the kernels' arithmetic.
+// Its neighbour lists have a skin, as the GPU teams' do: the grid is rebuilt and the lists recorded
+// only when they expire (list_skin.hpp).
 #include "../common/float_scene.hpp"
 #include "../common/neighbour_list.hpp"
 #include "sim/backend.hpp"
 
 #include <array>
+#include <cstdint>
+#include <optional>
 
 namespace mssph::kernels {
 
@@ -26,30 +30,39 @@ class CpuBackend final : public Backend {
   void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) override;
   StateArrays save_state() override;
   void restore_state(const StateArrays& state) override;
+  std::optional<std::uint64_t> neighbour_grid_builds() override { return grid_builds_; }
 
  private:
+  void update_neighbour_lists();
+  bool lists_expired();
   void build_grid();
   void compute_rotations_and_elastic_forces();
   void compute_densities();
   void compute_forces_and_advance_particles();
   void advance_rigid_bodies();
   SortedView sorted_view() const;
+  NeighbourLists recorded_lists();
   NeighbourLists neighbour_lists();
   DeformableView deformable_view();
   RigidBody& rigid_of(std::size_t body);
 
   ParticleSetup setup_;
   FloatScene scene_;
-  // Per step, in cell order.
+  // In the cell order of the last grid rebuild.
   std::vector<std::uint32_t> cell_start_;  // cell_count() + 1 entries
   std::vector<std::uint32_t> cell_middle_;  // CellRanges::cell_middle: where each cell's upper half begins
   std::vector<std::uint32_t> sorted_id_;
-  std::vector<Vec4> sorted_position_, sorted_velocity_;
+  std::vector<Vec4> sorted_position_, sorted_velocity_;  // copied every step
   std::vector<VolumePressure> volume_pressure_;
-  // A particle has ~30 neighbours at h = 2 dx (44 the most seen, in the Figure 3 and benchmark
-  // scenes); a list that overflows costs only speed (neighbour_list.hpp).
+  // A particle has ~30 neighbours within h at h = 2 dx, ~35-40 within h + skin (57 the most seen,
+  // in the Figure 3 scenes); a list that overflows costs only speed: the next step rebuilds
+  // (neighbour_list.hpp).
   static constexpr std::uint32_t kNeighbourCapacity = 64;
-  std::vector<std::uint32_t> neighbour_count_, neighbour_index_;
+  std::vector<std::uint32_t> recorded_count_, recorded_index_;  // the last rebuild's, within h + skin
+  std::vector<std::uint32_t> neighbour_count_, neighbour_index_;  // this step's, within h: the sums visit these
+  std::vector<Vec4> list_origin_;  // each sorted particle's position at the last rebuild
+  bool rebuild_requested_ = true;  // the next step rebuilds: no lists yet, one overflowed, or positions were set
+  std::uint64_t grid_builds_ = 0;
   // Canonical order.
   std::vector<Vec4> interaction_force_;
   std::vector<Vec4> elastic_force_;  // zero outside deformable bodies

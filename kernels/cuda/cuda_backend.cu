@@ -29,9 +29,7 @@ namespace {
 // The scene in the kernels' form. With teams of lanes (choose_team_lanes), whose lists have a
 // skin, the grid's cells are h + skin wide (list_skin.hpp).
 FloatScene cuda_scene(const ParticleSetup& setup, unsigned team_lanes) {
-  FloatScene scene = make_float_scene(setup);
-  if (team_lanes > 1) scene.grid = choose_grid_shape(scene.position, list_cell_size(setup.smoothing_length));
-  return scene;
+  return team_lanes > 1 ? make_float_scene_with_list_cells(setup) : make_float_scene(setup);
 }
 
 class CudaBackend final : public Backend {

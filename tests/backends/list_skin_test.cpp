@@ -1,7 +1,7 @@
-// The GPU teams' lists with a skin (kernels/common/list_skin.hpp), on the host: recorded once,
-// they must give every particle the same neighbours as a fresh search for as long as no particle
-// has moved past the trigger, and the trigger must fire before a pair can come within the support
-// unlisted.
+// The neighbour lists with a skin (kernels/common/list_skin.hpp), the cpu backend's and the GPU
+// teams' (recorded on the host): recorded once, they must give every particle the same neighbours
+// as a fresh search for as long as no particle has moved past the trigger, and the trigger must
+// fire before a pair can come within the support unlisted.
 #include "common/fluid_physics.hpp"
 #include "common/list_skin.hpp"
 #include "neighbour_list_fixtures.hpp"
@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -44,6 +45,32 @@ std::vector<std::uint32_t> neighbours_from_lists(const kernels::SortedView& v, c
   return out;
 }
 
+// The cpu backend's lists: one row per particle (record_neighbours) within record_radius2.
+struct HostLists {
+  std::vector<std::uint32_t> count, index;
+  kernels::NeighbourLists lists;
+
+  HostLists(const kernels::SortedView& v, float record_radius2)
+      : count(v.step.particle_count), index(std::size_t{v.step.particle_count} * kCapacity) {
+    lists = kernels::particle_lists(kCapacity, count.data(), index.data());
+    for (std::uint32_t s = 0; s < v.step.particle_count; ++s) kernels::record_neighbours(v, lists, s, record_radius2);
+  }
+};
+
+// The entries of s's row within h where the particles stand now, but its own deformable body's
+// (its density sum skips them, its force sum adds nothing for them): what the cpu backend's passes
+// of a step that keeps the lists take.
+std::vector<std::uint32_t> neighbours_from_lists(const kernels::SortedView& v, const HostLists& host, std::uint32_t s) {
+  EXPECT_LT(host.count[s], kCapacity) << "particle " << s << ": the test needs the list itself";
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t k = 0; k < host.count[s] && k < kCapacity; ++k) {
+    const std::uint32_t t = host.index[std::size_t{s} * kCapacity + k];
+    if (!own_deformable_body(v, s, t) && within_support(v, s, t)) out.push_back(t);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 Vec3 random_direction(std::mt19937_64& random) {
   std::normal_distribution<float> normal;
   const Vec3 d{normal(random), normal(random), normal(random)};
@@ -52,14 +79,22 @@ Vec3 random_direction(std::mt19937_64& random) {
 
 // Every particle moves by just under the trigger, in a random direction; the lists recorded before
 // must still hold every particle's neighbours, among them pairs that were beyond h when recorded.
+// lanes = 1: the cpu backend's lists; 2, 4, 8: a GPU team's.
 TEST(ListSkin, ListsHoldEveryNeighbourWhileNoParticleMovedPastTheTrigger) {
-  for (const std::uint32_t lanes : {2u, 4u, 8u}) {
+  for (const std::uint32_t lanes : {1u, 2u, 4u, 8u}) {
     SCOPED_TRACE(::testing::Message() << lanes << " lanes");
     std::mt19937_64 random(1967 + lanes);
     JitteredLattice lattice(random, compressed_by_up_to_4_percent(random), static_cast<float>(kernels::list_cell_size(1.0)));
     const kernels::SortedView v = lattice.view();  // views the lattice's positions, which move below
     const kernels::ListSkin skin = kernels::list_skin(v.step.smoothing.h);
-    const TeamLists team(v, lanes, kCapacity, skin.record_radius2);
+    std::unique_ptr<HostLists> host;
+    std::unique_ptr<TeamLists> team;
+    if (lanes == 1) {
+      host = std::make_unique<HostLists>(v, skin.record_radius2);
+    } else {
+      team = std::make_unique<TeamLists>(v, lanes, kCapacity, skin.record_radius2);
+    }
+    const auto listed = [&](std::uint32_t s) { return host ? neighbours_from_lists(v, *host, s) : neighbours_from_lists(v, *team, s); };
 
     std::vector<Vec3> recorded(lattice.size());
     std::vector<std::vector<std::uint32_t>> neighbours_then(lattice.size());
@@ -76,7 +111,7 @@ TEST(ListSkin, ListsHoldEveryNeighbourWhileNoParticleMovedPastTheTrigger) {
     for (std::uint32_t s = 0; s < lattice.size(); ++s) {
       ASSERT_FALSE(kernels::moved_past_trigger(kernels::xyz(v.position[s]), recorded[s], skin)) << "particle " << s;
       const std::vector<std::uint32_t> now = neighbours_by_brute_force(v, s);
-      ASSERT_EQ(neighbours_from_lists(v, team, s), now) << "particle " << s;
+      ASSERT_EQ(listed(s), now) << "particle " << s;
       for (const std::uint32_t t : now) {
         entered_the_support += std::binary_search(neighbours_then[s].begin(), neighbours_then[s].end(), t) ? 0 : 1;
       }
@@ -112,8 +147,10 @@ TEST(ListSkin, TheTriggerFiresBeforeAPairComesWithinTheSupportUnlisted) {
   v.grid = sorted.grid();
   v.position = sorted.position.data();
   const TeamLists team(v, 2, kCapacity, skin.record_radius2);
+  const HostLists host(v, skin.record_radius2);
   const std::uint32_t s_a = kernels::xyz(sorted.position[0]).x == a.x ? 0 : 1, s_b = 1 - s_a;
   ASSERT_EQ(neighbours_from_lists(v, team, s_a), std::vector<std::uint32_t>{s_a}) << "only itself is listed";
+  ASSERT_EQ(neighbours_from_lists(v, host, s_a), std::vector<std::uint32_t>{s_a}) << "only itself is listed";
 
   const auto place = [&](float approach) {
     sorted.position[s_a] = kernels::make_vec4(a + towards_b * approach, sorted.position[s_a].w);
@@ -124,10 +161,12 @@ TEST(ListSkin, TheTriggerFiresBeforeAPairComesWithinTheSupportUnlisted) {
   EXPECT_FALSE(kernels::moved_past_trigger(kernels::xyz(sorted.position[s_b]), b, skin));
   EXPECT_FALSE(within_support(v, s_a, s_b)) << "within the trigger the pair stays beyond h";
   EXPECT_EQ(neighbours_from_lists(v, team, s_a), neighbours_by_brute_force(v, s_a));
+  EXPECT_EQ(neighbours_from_lists(v, host, s_a), neighbours_by_brute_force(v, s_a));
 
   place(0.505f * skin_width);
   EXPECT_TRUE(within_support(v, s_a, s_b)) << "each past half the skin, the pair comes within h";
   EXPECT_NE(neighbours_from_lists(v, team, s_a), neighbours_by_brute_force(v, s_a)) << "and the lists miss it";
+  EXPECT_NE(neighbours_from_lists(v, host, s_a), neighbours_by_brute_force(v, s_a)) << "and the host's too";
   EXPECT_TRUE(kernels::moved_past_trigger(kernels::xyz(sorted.position[s_a]), a, skin));
   EXPECT_TRUE(kernels::moved_past_trigger(kernels::xyz(sorted.position[s_b]), b, skin));
 }

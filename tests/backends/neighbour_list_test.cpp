@@ -28,7 +28,7 @@ struct Lists {
   Lists(const kernels::SortedView& v, std::uint32_t capacity)
       : count(v.step.particle_count), index(std::size_t{v.step.particle_count} * capacity) {
     lists = kernels::particle_lists(capacity, count.data(), index.data());
-    for (std::uint32_t s = 0; s < v.step.particle_count; ++s) kernels::record_neighbours(v, lists, s);
+    for (std::uint32_t s = 0; s < v.step.particle_count; ++s) kernels::record_neighbours(v, lists, s, v.step.smoothing.h2);
   }
 };
 

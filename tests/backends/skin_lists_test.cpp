@@ -1,7 +1,8 @@
-// The cuda backend's neighbour lists with a skin (kernels/common/list_skin.hpp) on the GPU: in the
-// fluid sphere drop the grid is rebuilt on some steps and kept on the others, and a step that kept
-// the lists finds the densities a fresh grid gives where the particles stand. (list_skin_test.cpp
-// checks the lists' neighbours themselves, on the host, up to the moment a pair crosses the skin.)
+// The float backends' neighbour lists with a skin (kernels/common/list_skin.hpp): the cpu
+// backend's, and the cuda backend's teams' on the GPU. In the fluid sphere drop the grid is rebuilt
+// on some steps and kept on the others, and a step that kept the lists finds the densities a fresh
+// grid gives where the particles stand. (list_skin_test.cpp checks the lists' neighbours
+// themselves, up to the moment a pair crosses the skin.)
 #include "backend_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace mssph::testing {
@@ -22,10 +24,12 @@ void step(Backend& backend, int k) {
   for (int i = 0; i < k; ++i) backend.step();
 }
 
-TEST(CudaSkinLists, TheGridIsRebuiltOnSomeStepsAndKeptOnOthers) {
-  MSSPH_SKIP_WITHOUT("cuda");
+class SkinLists : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SkinLists, TheGridIsRebuiltOnSomeStepsAndKeptOnOthers) {
+  MSSPH_SKIP_WITHOUT(GetParam());
   const ParticleSetup setup = coarse_scene("sphere_drop_fluid.json", kSteps * 0.00025);
-  const std::unique_ptr<Backend> backend = make_backend("cuda", setup);
+  const std::unique_ptr<Backend> backend = make_backend(GetParam(), setup);
   ASSERT_TRUE(backend->neighbour_grid_builds().has_value()) << "a scene this small keeps lists";
   step(*backend, kSteps);
   const std::uint64_t builds = *backend->neighbour_grid_builds();
@@ -34,29 +38,31 @@ TEST(CudaSkinLists, TheGridIsRebuiltOnSomeStepsAndKeptOnOthers) {
 }
 
 // The densities of every step k from kFirstChecked to kLastChecked that kept the lists against
-// those of a fresh grid at the same positions: a second backend stepped k - 1 times (the same bits:
-// runs are deterministic) whose evaluate_forces() rebuilds the grid before its density pass. The
-// two sums take the same terms in other orders, so they agree to float rounding. A neighbour
-// missing from the lists at 0.9 h would move its particle's density by about 6e-4 of it (spiky
-// W(0.9 h) against the rest number density at h = 2 dx), 60 times the tolerance; one missing
-// nearer h moves it by less (W falls as (h - r)^3), which the host test of the lists' sets covers.
-// On an H100 this test failed with the skin taken away (lists recorded within h: at step 164, by
-// 1.0e-5 of a density) and with the trigger taken away (no rebuild after the first).
-TEST(CudaSkinLists, AStepThatKeepsTheListsHasTheDensitiesOfAFreshGrid) {
-  MSSPH_SKIP_WITHOUT("cuda");
+// those of a fresh grid at the same positions: a second backend restored from the first's state
+// before step k (restarts are exact: the positions are compared) whose evaluate_forces() rebuilds
+// the grid before its density pass. The two sums take the same terms in other orders, so they
+// agree to float rounding. A neighbour missing from the lists at 0.9 h would move its particle's
+// density by about 6e-4 of it (spiky W(0.9 h) against the rest number density at h = 2 dx), 60
+// times the tolerance; one missing nearer h moves it by less (W falls as (h - r)^3), which the
+// host test of the lists' sets covers. On an H100 this test failed with the skin taken away (lists
+// recorded within h: at step 164, by 1.0e-5 of a density) and with the trigger taken away (no
+// rebuild after the first); on the host, with either taken away, at step 164 too.
+TEST_P(SkinLists, AStepThatKeepsTheListsHasTheDensitiesOfAFreshGrid) {
+  MSSPH_SKIP_WITHOUT(GetParam());
   constexpr int kLastChecked = 200;
   const ParticleSetup setup = coarse_scene("sphere_drop_fluid.json", kSteps * 0.00025);
-  const std::unique_ptr<Backend> listed = make_backend("cuda", setup);
+  const std::unique_ptr<Backend> listed = make_backend(GetParam(), setup);
   step(*listed, kFirstChecked - 1);
   int checked = 0;
   for (int k = kFirstChecked; k <= kLastChecked; ++k) {
     const std::uint64_t builds_before = *listed->neighbour_grid_builds();
+    const StateArrays before = listed->save_state();
     const std::vector<float> positions_before = listed->snapshot().position;
     listed->step();
     if (*listed->neighbour_grid_builds() != builds_before) continue;  // step k rebuilt the grid
     SCOPED_TRACE(::testing::Message() << "step " << k);
-    const std::unique_ptr<Backend> fresh = make_backend("cuda", setup);
-    step(*fresh, k - 1);
+    const std::unique_ptr<Backend> fresh = make_backend(GetParam(), setup);
+    fresh->restore_state(before);
     ASSERT_EQ(fresh->snapshot().position, positions_before) << "the second backend stands where the first stood";
     const ForceEvaluation fresh_grid = fresh->evaluate_forces();
     const ParticleSnapshot from_lists = listed->snapshot();
@@ -68,6 +74,9 @@ TEST(CudaSkinLists, AStepThatKeepsTheListsHasTheDensitiesOfAFreshGrid) {
   }
   EXPECT_GT(checked, (kLastChecked - kFirstChecked) / 2) << "steps that kept the lists";
 }
+
+INSTANTIATE_TEST_SUITE_P(FloatBackends, SkinLists, ::testing::Values("cpu", "cuda"),
+                         [](const auto& test) { return test.param; });
 
 }  // namespace
 }  // namespace mssph::testing
