@@ -4,17 +4,25 @@
 # tests and cases skip themselves when no device is present.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each stage's end, in seconds since the start: CI has a time budget, and this says where it goes.
+stage_done() { echo "test.sh: $1 done at $SECONDS s" >&2; }
 scripts/setup.sh
+stage_done "set-up"
 scripts/build.sh
+stage_done "build"
 # ctest runs as many tests at once as there are cores: one OpenMP thread each, so that two tests'
 # thread teams do not fight over the same cores (tests that need threads set them themselves).
 OMP_NUM_THREADS=1 ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 1500
+stage_done "test suite"
 # Part of the suite again under AddressSanitizer + UBSan (build-asan/: the physics, the CLI through
 # an instrumented mssph; what it leaves out and why is in the script), then both fuzz targets for a
 # bounded time (build-fuzz/, MSSPH_FUZZ_SECONDS each).
 scripts/asan_tests.sh
+stage_done "AddressSanitizer suite"
 scripts/fuzz_tests.sh
+stage_done "fuzzing"
 scripts/bench_gate.sh
+stage_done "benchmark gate"
 # Every quick case but physics/cantilever: its beam with the default (uncorrected) gradient never
 # comes to rest under its own weight, a finding of the scheme that the case reports as FAIL (see
 # validation/physics/cantilever/README.md); the corrected beam's deflection is still checked by
@@ -24,3 +32,4 @@ scripts/bench_gate.sh
   --case hydrostatic --case archimedes --case torque_free_spin --case rotation_invariance --case patch_tests \
   --case bar_vibration --case cantilever_frequency --case hertz --case coupling_step --case passivity \
   --case hydrostatic_slope --case floating_depth --case cantilever_deflection
+stage_done "quick validation"
