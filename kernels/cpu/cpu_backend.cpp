@@ -67,9 +67,10 @@ NeighbourLists CpuBackend::neighbour_lists() {
 // rebuilt and the lists recorded again. Either way each list's entries within h now are copied out
 // for the step's sums (keep_within_support). Summing over the recorded lists themselves, whose
 // entries beyond h (about one in four) the pair functions skip by a branch the host mispredicts,
-// made the 5k fluid block's density and force passes 1.8x as long on the 2-core CI machine; the
-// copy made inside the density pass, just before each particle's sum, left the fluid blocks 8-11 %
-// slower than this separate pass (results/performance.md).
+// made the 5k fluid block's step 1.4x as long on the 2-core CI machine. The copy made in the
+// density pass instead (just before each particle's sum, or by the sum over the recorded list as it
+// meets them) left the 5k fluid block 11-20 % slower than this separate pass, though the second
+// made the rigid and deformable blocks 5-30 % faster (results/performance.md).
 void CpuBackend::update_neighbour_lists() {
   if (rebuild_requested_ || lists_expired()) build_grid();
   const SortedView view = sorted_view();
