@@ -13,15 +13,20 @@ namespace {
 
 // Peak resident memory per particle [bytes], measured with /usr/bin/time -v (maximum resident
 // set size minus that of a 227-particle run) on a 64,000-particle box (0.4 m at 1 cm, h = 2 dx,
-// 2 steps) with this build: fluid 1670 (reference) and 276 (cpu); deformable 4268 and 4818.
+// 2 steps): fluid 1670 (reference) and 276 (cpu); deformable 4268 and 4818.
 // tests/data/tiny_drop.json at 5 mm (233,371 rigid and boundary particles) gave 1710 and 320.
-// Rounded up. Neighbour lists dominate and grow with the neighbours per particle, (h / dx)^3.
+// The cpu backend's neighbour lists (64 entries a particle) came later, and with their skin two
+// sets of them: measured again on 2026-11-28 (512affa), cpu fluid 817 (543 before the skin),
+// tiny_drop 892, deformable 3346 (its peak is the set-up's). Rounded up. Neighbour lists dominate
+// and grow with the neighbours per particle, (h / dx)^3.
 constexpr double kReferenceBytes = 1750.0, kReferenceDeformableBytes = 4300.0;
-constexpr double kHostFloatBytes = 330.0, kHostFloatDeformableBytes = 4900.0;
+constexpr double kHostFloatBytes = 900.0, kHostFloatDeformableBytes = 4900.0;
 // The cuda backend keeps the scene set-up on the host (position, velocity, mass, body, rest
-// offset: about 90 bytes, twice) and float32 arrays like the cpu backend's on the device. Not
-// measured on a GPU: the device figure is the cpu backend's per-particle memory.
+// offset: about 90 bytes, twice) and float32 arrays on the device: the figures the cpu backend
+// had before its neighbour lists, above what the device holds at 1M particles (117 fluid, 139
+// rigid, 377 deformable bytes; results/performance.md).
 constexpr double kCudaHostBytes = 200.0;
+constexpr double kCudaDeviceBytes = 330.0, kCudaDeviceDeformableBytes = 4900.0;
 
 // float32 has a 24-bit significand: at a distance R from the origin positions are resolved to
 // R 2^-23. Requiring that to be at most 2^-10 (about 0.1 %) of a spacing keeps lattice offsets
@@ -86,7 +91,7 @@ RunEstimate estimate_run(const Scene& scene, const std::string& backend) {
   RunEstimate e;
   e.steps = scene.simulation.duration / scene.simulation.dt;
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = Eigen::Vector3d::Constant(-INFINITY);
-  double per_particle_bytes = 0.0;
+  double per_particle_bytes = 0.0, device_bytes = 0.0;
   for (const BodyConfig& body : scene.bodies) {
     const double n = shape_particles(body.shape, dx);
     e.bodies.push_back({body.name, n});
@@ -95,13 +100,14 @@ RunEstimate estimate_run(const Scene& scene, const std::string& backend) {
     const double bytes = backend == "reference" ? (deformable ? kReferenceDeformableBytes : kReferenceBytes)
                                                 : (deformable ? kHostFloatDeformableBytes : kHostFloatBytes);
     per_particle_bytes += n * bytes;
+    device_bytes += n * (deformable ? kCudaDeviceDeformableBytes : kCudaDeviceBytes);
     const double reach = shape_reach(body.shape, dx);
     lo = lo.cwiseMin(body.position - Eigen::Vector3d::Constant(reach));
     hi = hi.cwiseMax(body.position + Eigen::Vector3d::Constant(reach));
   }
   per_particle_bytes *= neighbour_scale;
   if (backend == "cuda") {
-    e.device_bytes = per_particle_bytes;
+    e.device_bytes = device_bytes * neighbour_scale;
     e.host_bytes = e.particles * kCudaHostBytes;
   } else {
     e.host_bytes = per_particle_bytes;
