@@ -9,8 +9,9 @@
 // - the host records one list per particle, of radius h + skin, when its grid is rebuilt
 //   (record_neighbours), without a branch on the distance (every candidate is written, the count
 //   advances only for one within the radius), since on the host that branch is mispredicted
-//   about one candidate in six; its density and force passes read the list (for_each_neighbour),
-//   on that step and on the following ones until the lists expire (list_skin.hpp);
+//   about one candidate in six; on that step and the following ones until the lists expire
+//   (list_skin.hpp) it copies each list's entries within h into a second list
+//   (keep_within_support), which its density and force passes read (for_each_neighbour);
 // - a GPU team's density pass, on a step that rebuilt the grid, records one list per lane, its
 //   share of the walk, of radius h + skin, as it sums (density_sum_recording, through
 //   ListRecorder); the force pass visits it instead of walking the cells again, and so do both
@@ -89,10 +90,11 @@ MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists
 }
 
 // Copies the entries of sorted particle s's row of `recorded` (particle_lists of the same capacity
-// as `within`, recorded within h + skin) that lie within the support where the particles stand now into its row of `within`, in
-// their order, with record_neighbours' writes free of a branch on the distance: the sums over
-// `within` then take only terms they keep, which is what keeps their pair functions' branches
-// predictable on the host. An overflowed row stays overflowed (its readers walk the grid).
+// as `within`, recorded within h + skin) that lie within the support where the particles stand
+// now into its row of `within`, in their order, with record_neighbours' writes free of a branch on
+// the distance: the sums over `within` then take only terms they keep, which is what keeps their
+// pair functions' branches predictable on the host. An overflowed row stays overflowed (its
+// readers walk the grid).
 MSSPH_HD void keep_within_support(const SortedView& v, const NeighbourLists& recorded, const NeighbourLists& within,
                                   std::uint32_t s) {
   const std::uint32_t recorded_count = recorded.count[s];

@@ -251,7 +251,9 @@ StateArrays CpuBackend::save_state() {
   // first, any: that step rebuilds).
   run.list_origin = scene_.position;
   if (grid_builds_ > 0) {
-    for (std::size_t s = 0; s < list_origin_.size(); ++s) run.list_origin[sorted_id_[s]] = make_vec4(xyz(list_origin_[s]), 0.0f);
+    for (std::size_t s = 0; s < list_origin_.size(); ++s) {
+      run.list_origin[sorted_id_[s]] = make_vec4(xyz(list_origin_[s]), 0.0f);
+    }
   }
   run.list_rebuild_requested = rebuild_requested_ ? 1 : 0;
   return save_float_state(run);

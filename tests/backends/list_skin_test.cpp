@@ -94,7 +94,9 @@ TEST(ListSkin, ListsHoldEveryNeighbourWhileNoParticleMovedPastTheTrigger) {
     } else {
       team = std::make_unique<TeamLists>(v, lanes, kCapacity, skin.record_radius2);
     }
-    const auto listed = [&](std::uint32_t s) { return host ? neighbours_from_lists(v, *host, s) : neighbours_from_lists(v, *team, s); };
+    const auto listed = [&](std::uint32_t s) {
+      return host ? neighbours_from_lists(v, *host, s) : neighbours_from_lists(v, *team, s);
+    };
 
     std::vector<Vec3> recorded(lattice.size());
     std::vector<std::vector<std::uint32_t>> neighbours_then(lattice.size());

@@ -26,7 +26,8 @@ CaseResult convergence_result(const std::string& quantity, const std::vector<dou
     result.checks.push_back(range_check("observed order p of the relative error", "-", 0.0,
                                         std::numeric_limits<double>::infinity(), observed_order(spacing, error)));
   } else {
-    result.details += " observed order p = " + std::to_string(observed_order(spacing, error)) + " (reported, not checked);";
+    const double order = observed_order(spacing, error);
+    result.details += " observed order p = " + std::to_string(order) + " (reported, not checked);";
     const double combined =
         std::hypot(standard_error[finest] / std::abs(expected[finest]), standard_error[0] / std::abs(expected[0]));
     result.checks.push_back(bound_check("relative error at the finest dx minus at the coarsest (<= 2 standard errors)",
