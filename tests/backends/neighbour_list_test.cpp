@@ -1,9 +1,11 @@
 // The host's neighbour lists (kernels/common/neighbour_list.hpp): a particle's list must hold
 // exactly the particles within the support h, in the grid walk's order, and the density and force
 // sums over it must be the grid walk's sums bit for bit, which is what lets the cpu backend use
-// them without changing a result. Checked on a jittered, compressed lattice of three bodies
-// (walls, fluid, a deformable block whose own neighbours the density sum skips) in a grid small
-// enough to wrap, so periodic images share cells with real neighbours.
+// them without changing a result on a step that rebuilt its grid (the steps that keep the lists sum
+// in the rebuild's order: list_skin_test.cpp, skin_lists_test.cpp). Checked on a jittered,
+// compressed lattice of three bodies (walls, fluid, a deformable block whose own neighbours the
+// density sum skips) in a grid small enough to wrap, so periodic images share cells with real
+// neighbours.
 #include "common/fluid_physics.hpp"
 #include "common/list_skin.hpp"
 #include "common/neighbour_list.hpp"
