@@ -2,10 +2,10 @@
 # so that a baseline and the runs compared with it are always made the same way.
 #
 # The smallest host size of every medium and the haptic tick: a run took about 7 s on the 2-core
-# CI machine kind (30 s at load average 10 before the host's skin lists). And calibration/cpu, a fixed workload that times the machine:
-# the comparison divides each ratio by its ratio (GATE_NORMALIZE_BY), since the same build ran the
-# gate 1.2-1.4x slower in some hours of the CI machine kind than in others
-# (results/baselines/ci-2core/README.md).
+# CI machine kind (30 s at load average 10 before the host's skin lists). And calibration/cpu, a
+# fixed workload that times the machine: the comparison divides each ratio by its ratio
+# (GATE_NORMALIZE_BY), since the same build ran the gate 1.2-1.4x slower in some hours of the CI
+# machine kind than in others (results/baselines/ci-2core/README.md).
 GATE_FILTER='^step/cpu/(fluid|rigid|deformable|mixed)/2000/|^haptic_tick/cpu$|^calibration/cpu$'
 GATE_NORMALIZE_BY=calibration/cpu
 # 10 repetitions a side: complete separation gives p = 2 / C(20, 10) = 1.1e-5, so a real

@@ -34,6 +34,13 @@ constexpr std::size_t kFloatsPerRigidBody = sizeof(RigidMotion) / sizeof(float);
 
 }  // namespace
 
+std::vector<Vec4> list_origin_in_canonical_order(const std::vector<Vec4>& sorted_origin,
+                                                 const std::vector<std::uint32_t>& sorted_id) {
+  std::vector<Vec4> origin(sorted_origin.size(), Vec4{0, 0, 0, 0});
+  for (std::size_t s = 0; s < sorted_origin.size(); ++s) origin[sorted_id[s]] = make_vec4(xyz(sorted_origin[s]), 0.0f);
+  return origin;
+}
+
 StateArrays save_float_state(const FloatRunState& state) {
   StateArrays out;
   out.put("position", as_floats(state.position));

@@ -27,6 +27,11 @@ struct FloatRunState {
   std::uint8_t list_rebuild_requested = 0;
 };
 
+// The lists' origin in canonical order, for FloatRunState::list_origin: sorted particle s stood
+// at sorted_origin[s] at the last rebuild, and is canonical particle sorted_id[s].
+std::vector<Vec4> list_origin_in_canonical_order(const std::vector<Vec4>& sorted_origin,
+                                                 const std::vector<std::uint32_t>& sorted_id);
+
 StateArrays save_float_state(const FloatRunState& state);
 // The state saved for `scene`: sizes are checked against it, and each rigid body keeps its
 // particle range, mass and inertia from it (only what moves is restored). `with_lists`: the

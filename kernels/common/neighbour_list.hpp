@@ -74,27 +74,37 @@ class ListRecorder {
   std::uint32_t count_ = 0;
 };
 
-// Records the candidates closer than sqrt(radius2) to sorted particle s (itself included, r = 0)
-// into its row of the host's lists (particle_lists: entries contiguous, which this loop relies on;
-// with the GPU's recorder and its stride the cpu backend's grid phase took 25 % longer).
-MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2) {
+// Writes into sorted particle s's row of the host's lists (particle_lists: entries contiguous,
+// which this loop relies on; with the GPU's recorder and its stride the cpu backend's grid phase
+// took 25 % longer) the candidates that candidates(visit) hands over closer than sqrt(radius2) to
+// s, in their order, without a branch on the distance: every candidate is written, the count
+// advances only for one within the radius (the last entry takes every candidate once the row is
+// full: overflowed).
+template <class Candidates>
+MSSPH_HD void write_row_within(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2,
+                               Candidates&& candidates) {
   const Vec3 x_i = xyz(v.position[s]);
   std::uint32_t* list = lists.first_entry(s);
   const std::uint32_t last = lists.capacity - 1;
   std::uint32_t count = 0;
-  v.grid.for_each_candidate(x_i, [&](std::uint32_t t) {
+  candidates([&](std::uint32_t t) {
     list[count < last ? count : last] = t;
     count += squared_norm(x_i - xyz(v.position[t])) < radius2 ? 1u : 0u;
   });
   lists.count[s] = count;
 }
 
-// Copies the entries of sorted particle s's row of `recorded` (particle_lists of the same capacity
-// as `within`, recorded within h + skin) that lie within the support where the particles stand
-// now into its row of `within`, in their order, with record_neighbours' writes free of a branch on
-// the distance: the sums over `within` then take only terms they keep, which is what keeps their
-// pair functions' branches predictable on the host. An overflowed row stays overflowed (its
-// readers walk the grid).
+// Records the candidates of the 27 cells closer than sqrt(radius2) to sorted particle s (itself
+// included, r = 0) into its row of the host's lists.
+MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2) {
+  write_row_within(v, lists, s, radius2, [&](auto&& visit) { v.grid.for_each_candidate(xyz(v.position[s]), visit); });
+}
+
+// Copies the entries of sorted particle s's row of `recorded` (recorded within h + skin, rows of
+// the same capacity as `within`'s) that lie within the support where the particles stand now into
+// its row of `within`, in their order: the sums over `within` then take only terms they keep,
+// which is what keeps their pair functions' branches predictable on the host. An overflowed row
+// stays overflowed (its readers walk the grid).
 MSSPH_HD void keep_within_support(const SortedView& v, const NeighbourLists& recorded, const NeighbourLists& within,
                                   std::uint32_t s) {
   const std::uint32_t recorded_count = recorded.count[s];
@@ -102,16 +112,10 @@ MSSPH_HD void keep_within_support(const SortedView& v, const NeighbourLists& rec
     within.count[s] = within.capacity;
     return;
   }
-  const Vec3 x_i = xyz(v.position[s]);
-  const std::uint32_t* from = recorded.first_entry(s);
-  std::uint32_t* to = within.first_entry(s);
-  std::uint32_t count = 0;
-  for (std::uint32_t k = 0; k < recorded_count; ++k) {
-    const std::uint32_t t = from[k];
-    to[count] = t;
-    count += squared_norm(x_i - xyz(v.position[t])) < v.step.smoothing.h2 ? 1u : 0u;
-  }
-  within.count[s] = count;
+  const std::uint32_t* entry = recorded.first_entry(s);
+  write_row_within(v, within, s, v.step.smoothing.h2, [&](auto&& visit) {
+    for (std::uint32_t k = 0; k < recorded_count; ++k) visit(entry[k]);
+  });
 }
 
 // Calls visit(t) for every entry of list `list` in its order; an overflowed list calls

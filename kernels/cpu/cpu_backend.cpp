@@ -249,12 +249,7 @@ StateArrays CpuBackend::save_state() {
   run.steps = static_cast<std::uint64_t>(std::llround(time_ / setup_.dt));
   // The lists' origin back in canonical order: the positions the last rebuild sorted (before the
   // first, any: that step rebuilds).
-  run.list_origin = scene_.position;
-  if (grid_builds_ > 0) {
-    for (std::size_t s = 0; s < list_origin_.size(); ++s) {
-      run.list_origin[sorted_id_[s]] = make_vec4(xyz(list_origin_[s]), 0.0f);
-    }
-  }
+  run.list_origin = grid_builds_ > 0 ? list_origin_in_canonical_order(list_origin_, sorted_id_) : scene_.position;
   run.list_rebuild_requested = rebuild_requested_ ? 1 : 0;
   return save_float_state(run);
 }

@@ -210,10 +210,7 @@ StateArrays CudaBackend::save_state() {
   run.steps = steps_;
   if (keeps_lists()) {
     // The lists' origin back in canonical order: the positions the last rebuild sorted.
-    const std::vector<Vec4> origin = state_.list_origin.download();
-    const std::vector<std::uint32_t> id = state_.sorted_id.download();
-    run.list_origin.assign(origin.size(), Vec4{0, 0, 0, 0});
-    for (std::size_t s = 0; s < origin.size(); ++s) run.list_origin[id[s]] = make_vec4(xyz(origin[s]), 0.0f);
+    run.list_origin = list_origin_in_canonical_order(state_.list_origin.download(), state_.sorted_id.download());
     run.list_rebuild_requested = state_.list_refresh.download().front().requested != 0;
   }
   return save_float_state(run);
