@@ -139,6 +139,20 @@ MSSPH_HD std::uint16_t cell_body_code(std::uint32_t count, BodyOf&& body_of) {
 // which float positions resolve no better than a hundredth of a cell anyway.
 inline constexpr float kHalfTrimMargin = 1.0f / 64.0f;
 
+// The bit mask of the `size` (at most 32) sorted particles from `first` that lie closer to x than
+// sqrt(radius2): bit b for particle first + b. Addressed from the first by a signed offset, whose
+// overflow the compiler may assume away: the unrolled loads then take their offsets as immediates,
+// where an unsigned index, which may wrap, cost each candidate its own address sums (on an H200 the
+// 1M fluid step took 603 us against 607; results/performance.md).
+MSSPH_HD std::uint32_t near_mask(Vec3 x, float radius2, const Vec4* position, std::uint32_t first, int size) {
+  const Vec4* candidate = position + first;
+  std::uint32_t near = 0;
+  for (int k = 0; k < size; ++k) {
+    if (squared_norm(x - xyz(candidate[k])) < radius2) near |= 1u << k;
+  }
+  return near;
+}
+
 // The sorted particles of cell k are [cell_start[k], cell_start[k + 1]): cell_start holds, for
 // every key, the first sorted particle whose key is not smaller (a prefix sum of the cell counts),
 // so an empty cell is an empty range and the three cells of a row along x, whose keys are
@@ -259,41 +273,53 @@ struct CellRanges {
         cells_left_out, /*trim_halves=*/lanes == 1);
   }
 
+  // Calls visit_segment(first, size) for each segment of for_each_range's ranges (one lane's: halves
+  // trimmed, nothing left out), in order: runs of `size` sorted particles from `first`, 32 of them
+  // but at a range's end. A one-lane walk takes a segment's near candidates as one bit mask
+  // (near_mask).
+  template <class VisitSegment>
+  MSSPH_HD void for_each_segment(Vec3 x, VisitSegment&& visit_segment) const {
+    for_each_range(x, [&](std::uint32_t begin, std::uint32_t end) {
+      for (std::uint32_t segment = begin; segment < end; segment += 32) {
+        visit_segment(segment, end - segment < 32 ? static_cast<int>(end - segment) : 32);
+      }
+    });
+  }
+
   // Calls visit(s) for every sorted particle s in the 27 cells around x that lies closer to x than
   // sqrt(radius2) (`position`: the sorted positions), in for_each_candidate's order, after the
-  // walk rather than inside it. The walk takes each range 32 candidates at a time, their distances
-  // into a bit mask of the near ones, and keeps each segment that has one in `held` (HeldSegments);
-  // then one loop visits the held segments' near candidates in order. One lane per particle (large
-  // GPU scenes) is why: the lanes of a warp find their ~30 neighbours among ~200 candidates each at
-  // other places, so visits inside the walk ran once per segment as often as the lane with the most
-  // near ones in it needed, and on an H100 the 1M fluid block's force pass executed its pair
-  // arithmetic with 16 of 32 lanes on average; one loop after the walk runs as often as the lane
-  // with the most neighbours in all needs. A walk that finds more segments than `held` holds visits
-  // those it holds and starts again. The visits see exactly the candidates a filter on the same r^2
-  // would pass.
+  // walk rather than inside it. The walk takes each segment's distances into a bit mask of the
+  // near ones (for_each_segment, near_mask), and keeps each segment that has one in `held`
+  // (HeldSegments); then one loop visits the held segments' near candidates in order. One lane per
+  // particle (large GPU scenes) is why: the lanes of a warp find their ~30 neighbours among ~200
+  // candidates each at other places, so visits inside the walk ran once per segment as often as
+  // the lane with the most near ones in it needed, and on an H100 the 1M fluid block's force pass
+  // executed its pair arithmetic with 16 of 32 lanes on average; one loop after the walk runs as
+  // often as the lane with the most neighbours in all needs. A walk that finds more segments than
+  // `held` holds visits those it holds and starts again. The visits see exactly the candidates a
+  // filter on the same r^2 would pass.
   template <class Held, class Visit>
   MSSPH_HD void for_each_candidate_within(Vec3 x, float radius2, const Vec4* position, Held& held,
                                           Visit&& visit) const {
-    std::uint32_t count = 0;
-    for_each_range(x, [&](std::uint32_t begin, std::uint32_t end) {
-      for (std::uint32_t segment = begin; segment < end; segment += 32) {
-        const int size = end - segment < 32 ? static_cast<int>(end - segment) : 32;
-        // Addressed from the segment's first candidate by a signed offset, whose overflow the
-        // compiler may assume away: the unrolled loads then take their offsets as immediates,
-        // where an unsigned index, which may wrap, cost each candidate its own address sums (on an
-        // H200 the 1M fluid step took 603 us against 607; results/performance.md).
-        const Vec4* candidate = position + segment;
-        std::uint32_t near = 0;
-        for (int k = 0; k < size; ++k) {
-          if (squared_norm(x - xyz(candidate[k])) < radius2) near |= 1u << k;
-        }
-        if (near == 0) continue;
-        if (count == Held::capacity) {
-          visit_held(held, count, visit);
-          count = 0;
-        }
-        held.put(count++, segment, near);
+    for_each_candidate_near(
+        x, [&](std::uint32_t, std::uint32_t first, int size) { return near_mask(x, radius2, position, first, size); },
+        held, visit);
+  }
+
+  // The same walk with the masks from near_of(k, first, size) for the k-th segment (counted from
+  // 0 in for_each_segment's order): a GPU force walk takes those its density walk noted
+  // (near_notes.hpp).
+  template <class NearOf, class Held, class Visit>
+  MSSPH_HD void for_each_candidate_near(Vec3 x, NearOf&& near_of, Held& held, Visit&& visit) const {
+    std::uint32_t count = 0, k = 0;
+    for_each_segment(x, [&](std::uint32_t first, int size) {
+      const std::uint32_t near = near_of(k++, first, size);
+      if (near == 0) return;
+      if (count == Held::capacity) {
+        visit_held(held, count, visit);
+        count = 0;
       }
+      held.put(count++, first, near);
     });
     visit_held(held, count, visit);
   }

@@ -18,6 +18,7 @@
 // force_sum_listed; list_skin.hpp); the host visits the particle's neighbour list. Lists
 // (neighbour_list.hpp) give the same bits as the walks they were recorded from, as long as the
 // particles stay where they were.
+#include "near_notes.hpp"
 #include "neighbour_list.hpp"
 #include "particle_views.hpp"
 #include "simulation_domain.hpp"
@@ -44,10 +45,13 @@ struct DensitySum {
 // (The term taken for every candidate and added through a select, without the branch, kept the
 // sums' bits and took the 1M fluid block's density pass 291 us against 238 on an H100: warps skip
 // the term together where no lane's candidate is near; results/performance.md.)
-MSSPH_HD float add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, std::uint32_t t) {
-  const float r2 = squared_norm(x_i - xyz(v.position[t]));
-  if (r2 < v.step.smoothing.h2) sum.delta += v.step.smoothing.spiky(v.step.smoothing.pair_distance(r2).r);
+MSSPH_HD float add_density_pair(DensitySum& sum, const SmoothingKernels& w, Vec3 x_i, Vec3 x_j) {
+  const float r2 = squared_norm(x_i - x_j);
+  if (r2 < w.h2) sum.delta += w.spiky(w.pair_distance(r2).r);
   return r2;
+}
+MSSPH_HD float add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, std::uint32_t t) {
+  return add_density_pair(sum, v.step.smoothing, x_i, xyz(v.position[t]));
 }
 
 // A particle whose density takes its own body's share at rest (own_rest_number_density) and sums
@@ -113,6 +117,34 @@ MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candi
 template <class Candidates>
 MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates) {
   return density_sum_over(v, s, candidates, [](std::uint32_t, float) {});
+}
+
+// Whether a particle's one-lane walks take near notes when the pass has them: a fluid particle's.
+MSSPH_HD bool takes_near_notes(const BodyParameters& body) { return body.kind == kFluid; }
+
+// The density sum of fluid or boundary particle s in one lane (canonical index i), over density_sum's
+// walk (none of their rows is left out) a segment at a time (CellRanges::for_each_segment): the same
+// candidates in the same order, so the same bits. A fluid particle notes which candidates lie within
+// h (NearNotes, when `notes` are taken). A boundary particle, which receives no forces, notes nothing,
+// but walks the same way: the lanes of a warp that holds both, near the walls, run one walk
+// together.
+MSSPH_HD DensitySum density_sum_noting_near(const SortedView& v, std::uint32_t s, std::uint32_t i,
+                                            const NearNotes& notes) {
+  const Vec4 p_i = v.position[s];
+  const Vec3 x_i = xyz(p_i);
+  const bool noting = notes.taken() && takes_near_notes(v.bodies[body_of(p_i)]);
+  DensitySum sum{0.0f, 0.0f};
+  std::uint32_t k = 0;
+  v.grid.for_each_segment(x_i, [&](std::uint32_t first, int size) {
+    const Vec4* candidate = v.position + first;  // signed offsets, as near_mask's
+    std::uint32_t near = 0;
+    for (int b = 0; b < size; ++b) {
+      if (add_density_pair(sum, v.step.smoothing, x_i, xyz(candidate[b])) < v.step.smoothing.h2) near |= 1u << b;
+    }
+    if (noting) notes.put(i, s, k, near);
+    ++k;
+  });
+  return sum;
 }
 
 // Particle s's grid walk as a candidate source: lane `lane` of `lanes`' share of the 27 cells
@@ -338,6 +370,24 @@ template <class Held>
 MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, Held& held) {
   return force_sum_over(v, i, [&](auto&& visit) {
     v.grid.for_each_candidate_within(i.x, v.step.smoothing.h2, v.position, held, visit);
+  });
+}
+
+// The same sum, canonical index i, for a particle that took near notes (takes_near_notes): its
+// first segments' masks from the notes, those past them tested. One walk for every particle, the
+// masks' source chosen per segment, so the force kernel holds one copy of it. Where no notes were
+// taken (`notes` empty), every segment is tested, as above.
+template <class Held>
+MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& p, std::uint32_t i, const NearNotes& notes,
+                            Held& held) {
+  const std::uint32_t noted = notes.taken() && takes_near_notes(p.parameters) ? NearNotes::capacity : 0u;
+  return force_sum_over(v, p, [&](auto&& visit) {
+    v.grid.for_each_candidate_near(
+        p.x,
+        [&](std::uint32_t k, std::uint32_t first, int size) {
+          return k < noted ? notes.get(i, p.s, k) : near_mask(p.x, v.step.smoothing.h2, v.position, first, size);
+        },
+        held, visit);
   });
 }
 

@@ -142,10 +142,13 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
   record_neighbour_grid(stream);
   mark(kRotations);
   launch_elasticity(scene_, state_, deformable_team_lanes_, stream);
+  // One lane per particle: the density pass notes each fluid particle's near candidates for the
+  // force pass (near_notes.hpp); teams visit their lists instead.
+  const NearNotes notes = keeps_lists() ? NearNotes{} : step_near_notes(state_);
   mark(kDensities);
-  launch_densities(scene_, state_, team_lanes_, stream);
+  launch_densities(scene_, state_, team_lanes_, notes, stream);
   mark(kForces);
-  launch_forces(scene_, state_, team_lanes_, stream);
+  launch_forces(scene_, state_, team_lanes_, notes, stream);
   mark(kIntegration);
   launch_rigid_bodies(scene_, chunks_, state_, readback_.rigid_bodies_on_device(), stream);
   mark(kPhaseCount);
@@ -176,13 +179,16 @@ std::optional<std::uint64_t> CudaBackend::neighbour_grid_builds() {
   return state_.list_refresh.download().front().rebuilds;
 }
 
-// The step's first three phases outside the graph (the grid rebuilt, the lists recorded), then the
-// force sums written out in canonical order instead of being integrated.
+// The step's first three phases outside the graph (the grid rebuilt, the lists recorded, with one
+// lane per particle the near notes taken, in arrays of the probe's own), then the force sums
+// written out in canonical order instead of being integrated.
 ForceEvaluation CudaBackend::evaluate_forces() {
+  ProbeNearNotes probe_notes(keeps_lists() ? 0 : state_.position.size());
+  const NearNotes notes = probe_notes.view();
   launch_neighbour_grid(state_, scene_.grid, stream_);
   launch_elasticity(scene_, state_, deformable_team_lanes_, stream_);
-  launch_densities(scene_, state_, team_lanes_, stream_);
-  return probe_forces(scene_, state_, stream_);
+  launch_densities(scene_, state_, team_lanes_, notes, stream_);
+  return probe_forces(scene_, state_, notes, stream_);
 }
 
 void CudaBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& positions) {
@@ -222,7 +228,7 @@ StateArrays CudaBackend::save_state() {
 void CudaBackend::record_lists_at(const std::vector<Vec4>& origin, bool rebuild_requested) {
   state_.position.upload(origin);
   launch_neighbour_grid(state_, scene_.grid, stream_);
-  launch_densities(scene_, state_, team_lanes_, stream_);
+  launch_densities(scene_, state_, team_lanes_, NearNotes{}, stream_);
   cuda_check(cudaStreamSynchronize(stream_), "record the restart's lists");
   std::vector<ListRefreshState> refresh = state_.list_refresh.download();
   refresh.front().requested = rebuild_requested ? 1u : 0u;

@@ -82,6 +82,17 @@ CanonicalState canonical_state(DeviceState& state) {
                         state.elastic_force.data(), state.fixed.data()};
 }
 
+// A fluid particle's canonical velocity and interaction force hold nothing from the density pass
+// to the force pass's store: the grid kernel has copied the velocity into cell order, and the force
+// pass writes both for every fluid particle (store_advance: fluid particles always integrate), in
+// the thread that read the particle's notes, after reading them; the bond passes, which read
+// deformable particles' velocities, run before the density pass. The grid's keys and unordered ids
+// are read only inside the grid kernel.
+NearNotes step_near_notes(DeviceState& state) {
+  return NearNotes{state.velocity.data(), state.interaction_force.data(), reinterpret_cast<float*>(state.keys.data()),
+                   reinterpret_cast<float*>(state.unordered_id.data())};
+}
+
 DeformableView deformable_view(const FloatScene& scene, DeviceState& state) {
   return DeformableView{state.elastic_bodies.data(), state.deformable_body.data(), state.bond_count.data(),
                         state.bond_neighbour.data(), state.rest.data(),               state.correction.data(),

@@ -2,6 +2,7 @@
 // A scene's device arrays (the list in device_arrays.hpp, allocated) and the views the kernels
 // take of them.
 #include "../common/elastic_physics.hpp"
+#include "../common/near_notes.hpp"
 #include "../common/neighbour_list.hpp"
 #include "../common/particle_views.hpp"
 #include "device_arrays.hpp"
@@ -22,6 +23,8 @@ SortedView sorted_view(const FloatScene& scene, const DeviceState& state);
 // The lanes' neighbour lists of teams of `team_lanes` (the lanes the state was allocated for).
 NeighbourLists team_lists(DeviceState& state, unsigned team_lanes);
 CanonicalState canonical_state(DeviceState& state);
+// Where a step's density pass leaves its near notes for the force pass (near_notes.hpp).
+NearNotes step_near_notes(DeviceState& state);
 DeformableView deformable_view(const FloatScene& scene, DeviceState& state);
 
 }  // namespace mssph::kernels

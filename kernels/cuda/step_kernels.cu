@@ -111,20 +111,41 @@ inline constexpr int kSumBlock = 128;
 // compiles to 48 unbound, 40 and 12 bytes spilled at 1536; at 1280 (48, no spills) the 1M rigid,
 // deformable and mixed steps took 8-10 us longer, the fluid's the same; at 2048 (32, 20 bytes
 // spilled) the fluid's density pass took 10 us longer, the rigid and deformable steps 2-4 us less.
-// Teams (2048 threads, 32 registers) compile to that anyway; under 1536 they took 36.
-constexpr int density_threads_per_multiprocessor(unsigned lanes) { return lanes == 1 ? 1536 : 2048; }
+// Teams (2048 threads, 32 registers) compile to that anyway; under 1536 they took 36. With the
+// walk by segments that takes near notes (walks_by_segments) one lane compiles to 48 registers and
+// 12 bytes spilled at 1280; on an H200 the 1M fluid step took 503 us at 1280 against 516 at 1536
+// and 506 at 1024, the rigid and deformable steps 341 and 812 us at 1280 as at 1536
+// (results/performance.md).
+constexpr int density_threads_per_multiprocessor(unsigned lanes) { return lanes == 1 ? 1280 : 2048; }
+
+// Whether particle s's one-lane density walk goes a segment at a time (density_sum_noting_near):
+// a fluid particle's, which notes its near candidates when the pass has notes, and a boundary
+// particle's whose warp holds one, so that the warp's lanes walk together; the walk is the plain
+// one's, candidate for candidate, so either gives the same bits. On an H200 the 1M fluid step took
+// 529 us with every boundary particle walking by segments against 559 with none (which kept the
+// warps near the walls apart), 575 without notes. Boundary particles whose warp holds no fluid one
+// (a container's walls beside a rigid or deformable block) have nothing to note and walk the plain
+// way; against every boundary particle by segments that measured the same (1M fluid 502.6 against
+// 502.7 us, rigid 340 against 341; results/performance.md).
+__device__ bool walks_by_segments(const SortedView& view, std::uint32_t s, const NearNotes& notes) {
+  if (!notes.taken()) return false;
+  const BodyParameters& body = view.bodies[body_of(view.position[s])];
+  const bool notes_near = takes_near_notes(body);
+  return !takes_own_body_at_rest(body) && __any_sync(__activemask(), notes_near);
+}
 
 // A team's lane, on a step that rebuilt the grid, records the candidates of its share within
 // h + skin in its list (lists: one per thread), for the force pass and the steps until the next
 // rebuild, and asks for the next step to rebuild if the list overflowed; on the other steps it
 // sums over that list. One lane alone records none and walks every step (device_arrays.hpp,
-// team_list_capacity, says why). Every particle also stores whether another body lies within h
+// team_list_capacity, says why); for a fluid particle it notes which candidates lie within h, for
+// the force pass, when the pass is given notes (near_notes.hpp). Every particle also stores whether another body lies within h
 // of it (taken by rigid and deformable particles only: DensitySum::nearest_other_body2), which
 // lets the force pass skip the walk of those without one (may_feel_forces).
 template <unsigned Lanes>
 __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(Lanes) / kSumBlock)
     density_kernel(SortedView view, VolumePressure* volume_pressure, std::uint8_t* near_other_body,
-                   NeighbourLists lists, ListRefreshState* refresh, float record_radius2) {
+                   NeighbourLists lists, ListRefreshState* refresh, float record_radius2, NearNotes notes) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
@@ -139,6 +160,8 @@ __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(
       } else {
         sum = density_sum_listed(view, s, lane, Lanes, lists, list);
       }
+    } else if (walks_by_segments(view, s, notes)) {
+      sum = density_sum_noting_near(view, s, view.id[s], notes);
     } else {
       sum = density_sum(view, s, lane, Lanes, cells_left_out_by_warp(view, s));
     }
@@ -182,13 +205,15 @@ struct SharedHeldSegments {
 
 template <unsigned Lanes>
 __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kSumBlock)
-    forces_kernel(SortedView view, CanonicalState state, const std::uint8_t* near_other_body, NeighbourLists lists) {
+    forces_kernel(SortedView view, CanonicalState state, const std::uint8_t* near_other_body, NeighbourLists lists,
+                  NearNotes notes) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
   ForceSum sum = zero_force_sum();
   // A team's lane visits the list of its last rebuild (density_kernel) instead of walking its share
-  // of the 27 cells again; one lane alone (large scenes) has no lists (density_kernel) and walks.
+  // of the 27 cells again; one lane alone (large scenes) has no lists (density_kernel) and walks,
+  // a fluid particle over the near notes its density walk took, when the pass has them.
   // Neither walks for a rigid or deformable particle with no other body within h: its sums are zero.
   constexpr bool kTeam = Lanes > 1;
   const std::uint32_t list = blockIdx.x * blockDim.x + threadIdx.x;
@@ -203,7 +228,7 @@ __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kS
       } else {
         __shared__ std::uint32_t held_first[kHeldSegments][kSumBlock], held_near[kHeldSegments][kSumBlock];
         SharedHeldSegments held{held_first, held_near};
-        sum = force_sum(view, particle, held);
+        sum = force_sum(view, particle, i, notes, held);
       }
     }
   }
@@ -277,22 +302,24 @@ void launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned tea
   });
 }
 
-void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream) {
+void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team_lanes, const NearNotes& notes,
+                      cudaStream_t stream) {
   const std::size_t n = state.position.size();
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
     density_kernel<L><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
         sorted_view(scene, state), state.volume_pressure.data(), state.near_other_body.data(), team_lists(state, L),
-        state.list_refresh.data(), list_skin(scene.step.smoothing.h).record_radius2);
+        state.list_refresh.data(), list_skin(scene.step.smoothing.h).record_radius2, notes);
   });
 }
 
-void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream) {
+void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_lanes, const NearNotes& notes,
+                   cudaStream_t stream) {
   const std::size_t n = state.position.size();
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
     forces_kernel<L><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
-        sorted_view(scene, state), canonical_state(state), state.near_other_body.data(), team_lists(state, L));
+        sorted_view(scene, state), canonical_state(state), state.near_other_body.data(), team_lists(state, L), notes);
   });
 }
 
