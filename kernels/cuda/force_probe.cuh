@@ -12,7 +12,10 @@ namespace mssph::kernels {
 class ProbeNearNotes {
  public:
   explicit ProbeNearNotes(std::size_t particles)
-      : canonical_first_(particles), canonical_second_(particles), sorted_eighth_(particles), sorted_ninth_(particles) {}
+      : canonical_first_(particles),
+        canonical_second_(particles),
+        sorted_eighth_(particles),
+        sorted_ninth_(particles) {}
   NearNotes view() {
     return {canonical_first_.data(), canonical_second_.data(), sorted_eighth_.data(), sorted_ninth_.data()};
   }

@@ -139,9 +139,10 @@ __device__ bool walks_by_segments(const SortedView& view, std::uint32_t s, const
 // rebuild, and asks for the next step to rebuild if the list overflowed; on the other steps it
 // sums over that list. One lane alone records none and walks every step (device_arrays.hpp,
 // team_list_capacity, says why); for a fluid particle it notes which candidates lie within h, for
-// the force pass, when the pass is given notes (near_notes.hpp). Every particle also stores whether another body lies within h
-// of it (taken by rigid and deformable particles only: DensitySum::nearest_other_body2), which
-// lets the force pass skip the walk of those without one (may_feel_forces).
+// the force pass, when the pass is given notes (near_notes.hpp). Every particle also stores
+// whether another body lies within h of it (taken by rigid and deformable particles only:
+// DensitySum::nearest_other_body2), which lets the force pass skip the walk of those without one
+// (may_feel_forces).
 template <unsigned Lanes>
 __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(Lanes) / kSumBlock)
     density_kernel(SortedView view, VolumePressure* volume_pressure, std::uint8_t* near_other_body,
