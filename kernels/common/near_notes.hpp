@@ -32,7 +32,7 @@ struct NearNotes {
 
   // Note k (below capacity) of the particle of canonical index i and sorted index s.
   MSSPH_HD float& word(std::uint32_t i, std::uint32_t s, std::uint32_t k) const {
-    if (k < 8) return (&(k < 4 ? canonical_first : canonical_second)[i].x)[k % 4];
+    if (k < 8) return reinterpret_cast<float*>((k < 4 ? canonical_first : canonical_second) + i)[k % 4];
     return (k == 8 ? sorted_eighth : sorted_ninth)[s];
   }
   MSSPH_HD void put(std::uint32_t i, std::uint32_t s, std::uint32_t k, std::uint32_t near) const {
