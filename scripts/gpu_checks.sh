@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The checks that need a GPU, on an already built tree: the cuda backend's tests (one step and
 # many steps against the reference, repeatability), compute-sanitizer memcheck, racecheck, initcheck
-# and synccheck on a short run of every shipped scene, and the Figure 2 step-time benchmarks as JSON.
+# and synccheck on a short run of every shipped scene, memcheck and racecheck on two drops at one
+# lane per particle, and the Figure 2 step-time benchmarks as JSON.
 #
 # Usage: scripts/gpu_checks.sh [BUILD_DIR] [OUT_DIR] [BENCHMARK_FILTER]
 #   BUILD_DIR         default build
@@ -51,6 +52,19 @@ for scene in sphere_drop_fluid sphere_drop_deformable sphere_drop_rigid tap sque
     stage "${tool}_${scene}" compute-sanitizer --tool "$tool" --error-exitcode 9 \
       "$build/mssph" run "configs/$scene.json" "${short_run[@]}" "${placement[@]}" --out "$out/${tool}_${scene}.h5"
     rm -f "$out/${tool}_${scene}.h5" "$out/${tool}_${scene}.h5.xdmf"
+  done
+done
+
+# The same scenes at 4 cm give every particle a team of lanes. Large scenes take one lane per
+# particle, whose walks hold segments in shared memory and, for fluid particles, pass near notes
+# from the density pass to the force pass (kernels/common/near_notes.hpp): memcheck and racecheck
+# on the fluid and rigid drops at 5 mm, which an H100 or H200 gives one lane per particle.
+one_lane_run=(--backend cuda -q --set simulation/particle_spacing=0.005 --set simulation/duration=0.0005)
+for scene in sphere_drop_fluid sphere_drop_rigid; do
+  for tool in memcheck racecheck; do
+    stage "${tool}_${scene}_one_lane" compute-sanitizer --tool "$tool" --error-exitcode 9 \
+      "$build/mssph" run "configs/$scene.json" "${one_lane_run[@]}" --out "$out/${tool}_${scene}_one_lane.h5"
+    rm -f "$out/${tool}_${scene}_one_lane.h5" "$out/${tool}_${scene}_one_lane.h5.xdmf"
   done
 done
 
