@@ -139,18 +139,20 @@ MSSPH_HD std::uint16_t cell_body_code(std::uint32_t count, BodyOf&& body_of) {
 // which float positions resolve no better than a hundredth of a cell anyway.
 inline constexpr float kHalfTrimMargin = 1.0f / 64.0f;
 
-// The bit mask of the `size` (at most 32) sorted particles from `first` that lie closer to x than
+// The bit mask of the `size` (1 to 32) sorted particles from `first` that lie closer to x than
 // sqrt(radius2): bit b for particle first + b. Addressed from the first by a signed offset, whose
 // overflow the compiler may assume away: the unrolled loads then take their offsets as immediates,
 // where an unsigned index, which may wrap, cost each candidate its own address sums (on an H200 the
-// 1M fluid step took 603 us against 607; results/performance.md).
+// 1M fluid step took 603 us against 607; results/performance.md). Each candidate's bit enters at the
+// top and the mask moves down one place, as the density walk's notes are built
+// (density_sum_noting_near); the last shift puts candidate b's at bit b.
 MSSPH_HD std::uint32_t near_mask(Vec3 x, float radius2, const Vec4* position, std::uint32_t first, int size) {
   const Vec4* candidate = position + first;
   std::uint32_t near = 0;
   for (int k = 0; k < size; ++k) {
-    if (squared_norm(x - xyz(candidate[k])) < radius2) near |= 1u << k;
+    near = near >> 1 | (squared_norm(x - xyz(candidate[k])) < radius2 ? 0x80000000u : 0u);
   }
-  return near;
+  return near >> (32 - size);
 }
 
 // The sorted particles of cell k are [cell_start[k], cell_start[k + 1]): cell_start holds, for
