@@ -7,8 +7,9 @@
 //
 // One layout, written and read by two pairs of loops:
 // - the host records one list per particle, of radius h + skin, when its grid is rebuilt
-//   (record_neighbours), without a branch on the distance (every candidate is written, the count
-//   advances only for one within the radius), since on the host that branch is mispredicted
+//   (record_neighbours; a rigid or deformable particle's own body left out), without a branch on
+//   the distance (every candidate is written, the count advances only for one within the radius),
+//   since on the host that branch is mispredicted
 //   about one candidate in six; on that step and the following ones until the lists expire
 //   (list_skin.hpp) it copies each list's entries within h into a second list
 //   (keep_within_support), which its density and force passes read (for_each_neighbour);
@@ -77,27 +78,34 @@ class ListRecorder {
 // Writes into sorted particle s's row of the host's lists (particle_lists: entries contiguous,
 // which this loop relies on; with the GPU's recorder and its stride the cpu backend's grid phase
 // took 25 % longer) the candidates that candidates(visit) hands over closer than sqrt(radius2) to
-// s, in their order, without a branch on the distance: every candidate is written, the count
-// advances only for one within the radius (the last entry takes every candidate once the row is
-// full: overflowed).
+// s, but those of body `left_out`, in their order, without a branch on either test: every
+// candidate is written, the count advances only for one kept (the last entry takes every candidate
+// once the row is full: overflowed).
 template <class Candidates>
 MSSPH_HD void write_row_within(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2,
-                               Candidates&& candidates) {
+                               std::uint32_t left_out, Candidates&& candidates) {
   const Vec3 x_i = xyz(v.position[s]);
   std::uint32_t* list = lists.first_entry(s);
   const std::uint32_t last = lists.capacity - 1;
   std::uint32_t count = 0;
   candidates([&](std::uint32_t t) {
     list[count < last ? count : last] = t;
-    count += squared_norm(x_i - xyz(v.position[t])) < radius2 ? 1u : 0u;
+    const Vec4 p = v.position[t];
+    count += ((squared_norm(x_i - xyz(p)) < radius2) & (body_of(p) != left_out)) ? 1u : 0u;
   });
   lists.count[s] = count;
 }
 
 // Records the candidates of the 27 cells closer than sqrt(radius2) to sorted particle s (itself
-// included, r = 0) into its row of the host's lists.
-MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2) {
-  write_row_within(v, lists, s, radius2, [&](auto&& visit) { v.grid.for_each_candidate(xyz(v.position[s]), visit); });
+// included, r = 0) into its row of the host's lists, but those of body `left_out`: a rigid or
+// deformable particle's own (body_left_out), whose pairs its sums skip, as the GPU teams' lists
+// leave it out (density_sum_recording). Inside such a block a list is then empty: on the 2-core CI
+// machine, with the cost-balanced split of the host's loops, the 30k rigid block's step took 0.60 of
+// its time before, the deformable one's 0.91 (results/performance.md).
+MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2,
+                                std::uint32_t left_out) {
+  write_row_within(v, lists, s, radius2, left_out,
+                   [&](auto&& visit) { v.grid.for_each_candidate(xyz(v.position[s]), visit); });
 }
 
 // Copies the entries of sorted particle s's row of `recorded` (recorded within h + skin, rows of
@@ -113,7 +121,7 @@ MSSPH_HD void keep_within_support(const SortedView& v, const NeighbourLists& rec
     return;
   }
   const std::uint32_t* entry = recorded.first_entry(s);
-  write_row_within(v, within, s, v.step.smoothing.h2, [&](auto&& visit) {
+  write_row_within(v, within, s, v.step.smoothing.h2, kNoBody, [&](auto&& visit) {
     for (std::uint32_t k = 0; k < recorded_count; ++k) visit(entry[k]);
   });
 }

@@ -75,9 +75,7 @@ void CpuBackend::update_neighbour_lists() {
   if (rebuild_requested_ || lists_expired()) build_grid();
   const SortedView view = sorted_view();
   const NeighbourLists recorded = recorded_lists(), within = neighbour_lists();
-  const auto count = static_cast<std::uint32_t>(setup_.size());
-#pragma omp parallel for schedule(static)
-  for (std::uint32_t s = 0; s < count; ++s) keep_within_support(view, recorded, within, s);
+  list_partition_.for_each([&](std::uint32_t s) { keep_within_support(view, recorded, within, s); });
 }
 
 // Copies every particle into the last rebuild's cell order and returns whether one has moved past
@@ -131,12 +129,28 @@ void CpuBackend::build_grid() {
   bool overflowed = false;
 #pragma omp parallel for schedule(static) reduction(|| : overflowed)
   for (std::uint32_t s = 0; s < count; ++s) {
-    record_neighbours(view, lists, s, record_radius2);
+    record_neighbours(view, lists, s, record_radius2, body_left_out(view, view.position[s]));
     if (lists.count[s] >= lists.capacity) overflowed = true;
   }
   list_origin_ = sorted_position_;
+  partition_by_list_length();
   rebuild_requested_ = overflowed;  // an overflowed list is walked on this step's fresh grid only
   ++grid_builds_;
+}
+
+// The loops over the lists split by their lengths until the next rebuild (particle_partition.hpp):
+// a particle's sums cost about one unit per recorded neighbour, plus its own loads and stores,
+// taken as kParticleCost units; a boundary particle's force pass, which sums nothing, that alone.
+void CpuBackend::partition_by_list_length() {
+  constexpr std::uint32_t kParticleCost = 4;
+  const SortedView view = sorted_view();
+  const auto count = static_cast<std::uint32_t>(setup_.size());
+  const std::uint32_t parts = ParticlePartition::for_this_machine();
+  list_partition_.assign(count, parts, [&](std::uint32_t s) { return kParticleCost + recorded_count_[s]; });
+  force_partition_.assign(count, parts, [&](std::uint32_t s) {
+    const bool sums = receives_forces(view.bodies[body_of(view.position[s])]);
+    return kParticleCost + (sums ? recorded_count_[s] : 0u);
+  });
 }
 
 DeformableView CpuBackend::deformable_view() {
@@ -162,11 +176,9 @@ void CpuBackend::compute_rotations_and_elastic_forces() {
 void CpuBackend::compute_densities() {
   const SortedView view = sorted_view();
   const NeighbourLists lists = neighbour_lists();
-  const auto n = static_cast<std::uint32_t>(setup_.size());
-#pragma omp parallel for schedule(static)
-  for (std::uint32_t s = 0; s < n; ++s) {
+  list_partition_.for_each([&](std::uint32_t s) {
     volume_pressure_[s] = density_from(density_sum_over(view, s, neighbours_of(view, lists, s)), view, s).volume_pressure;
-  }
+  });
 }
 
 // Step 3, pressure and viscosity forces (eq. 2, 3, 7), each particle then advanced by step 4's
@@ -176,12 +188,10 @@ void CpuBackend::compute_forces_and_advance_particles() {
   const CanonicalState state{scene_.position.data(), scene_.velocity.data(), interaction_force_.data(),
                              rotation_.empty() ? nullptr : elastic_force_.data(), scene_.fixed.data()};
   const NeighbourLists lists = neighbour_lists();
-  const auto n = static_cast<std::uint32_t>(setup_.size());
-#pragma omp parallel for schedule(static)
-  for (std::uint32_t s = 0; s < n; ++s) {
+  force_partition_.for_each([&](std::uint32_t s) {
     const ForceParticle particle = load_force_particle(view, s);
     apply_forces(view, state, particle, force_sum_over(view, particle, neighbours_of(view, lists, s)));
-  }
+  });
 }
 
 // Step 4 of rigid bodies: the interaction wrench of their particles, rigid-body dynamics, then

@@ -45,7 +45,8 @@ std::vector<std::uint32_t> neighbours_from_lists(const kernels::SortedView& v, c
   return out;
 }
 
-// The cpu backend's lists: one row per particle (record_neighbours) within record_radius2.
+// The cpu backend's lists: one row per particle (record_neighbours) within record_radius2, but a
+// deformable particle's own body.
 struct HostLists {
   std::vector<std::uint32_t> count, index;
   kernels::NeighbourLists lists;
@@ -53,7 +54,9 @@ struct HostLists {
   HostLists(const kernels::SortedView& v, float record_radius2)
       : count(v.step.particle_count), index(std::size_t{v.step.particle_count} * kCapacity) {
     lists = kernels::particle_lists(kCapacity, count.data(), index.data());
-    for (std::uint32_t s = 0; s < v.step.particle_count; ++s) kernels::record_neighbours(v, lists, s, record_radius2);
+    for (std::uint32_t s = 0; s < v.step.particle_count; ++s) {
+      kernels::record_neighbours(v, lists, s, record_radius2, kernels::body_left_out(v, v.position[s]));
+    }
   }
 };
 
