@@ -11,8 +11,9 @@
 //   the distance (every candidate is written, the count advances only for one within the radius),
 //   since on the host that branch is mispredicted
 //   about one candidate in six; on that step and the following ones until the lists expire
-//   (list_skin.hpp) it copies each list's entries within h into a second list
-//   (keep_within_support), which its density and force passes read (for_each_neighbour);
+//   (list_skin.hpp) its density pass sums over each list and copies its entries within h into a
+//   second list (density_sum_keeping_within, through RowWriter), which its force pass reads
+//   (for_each_neighbour);
 // - a GPU team's density pass, on a step that rebuilt the grid, records one list per lane, its
 //   share of the walk, of radius h + skin, as it sums (density_sum_recording, through
 //   ListRecorder); the force pass visits it instead of walking the cells again, and so do both
@@ -75,25 +76,39 @@ class ListRecorder {
   std::uint32_t count_ = 0;
 };
 
-// Writes into sorted particle s's row of the host's lists (particle_lists: entries contiguous,
-// which this loop relies on; with the GPU's recorder and its stride the cpu backend's grid phase
-// took 25 % longer) the candidates that candidates(visit) hands over closer than sqrt(radius2) to
-// s, but those of body `left_out`, in their order, without a branch on either test: every
-// candidate is written, the count advances only for one kept (the last entry takes every candidate
-// once the row is full: overflowed).
+// Writes sorted particle s's row of the host's lists (particle_lists: entries contiguous, which
+// this writer relies on; with the GPU's recorder and its stride the cpu backend's grid phase took
+// 25 % longer) without a branch on whether an entry is kept: every entry offered is written, the
+// count advances only for one kept (the last entry takes every entry once the row is full:
+// overflowed).
+class RowWriter {
+ public:
+  MSSPH_HD RowWriter(const NeighbourLists& lists, std::uint32_t s) : row_(lists.first_entry(s)), last_(lists.capacity - 1) {}
+
+  MSSPH_HD void offer(std::uint32_t t, bool keep) {
+    row_[count_ < last_ ? count_ : last_] = t;
+    count_ += keep ? 1u : 0u;
+  }
+  MSSPH_HD std::uint32_t count() const { return count_; }
+
+ private:
+  std::uint32_t* row_;
+  std::uint32_t last_;
+  std::uint32_t count_ = 0;
+};
+
+// Writes into sorted particle s's row of the host's lists the candidates that candidates(visit)
+// hands over closer than sqrt(radius2) to s, but those of body `left_out`, in their order.
 template <class Candidates>
 MSSPH_HD void write_row_within(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2,
                                std::uint32_t left_out, Candidates&& candidates) {
   const Vec3 x_i = xyz(v.position[s]);
-  std::uint32_t* list = lists.first_entry(s);
-  const std::uint32_t last = lists.capacity - 1;
-  std::uint32_t count = 0;
+  RowWriter row(lists, s);
   candidates([&](std::uint32_t t) {
-    list[count < last ? count : last] = t;
     const Vec4 p = v.position[t];
-    count += ((squared_norm(x_i - xyz(p)) < radius2) & (body_of(p) != left_out)) ? 1u : 0u;
+    row.offer(t, (squared_norm(x_i - xyz(p)) < radius2) & (body_of(p) != left_out));
   });
-  lists.count[s] = count;
+  lists.count[s] = row.count();
 }
 
 // Records the candidates of the 27 cells closer than sqrt(radius2) to sorted particle s (itself
@@ -106,24 +121,6 @@ MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists
                                 std::uint32_t left_out) {
   write_row_within(v, lists, s, radius2, left_out,
                    [&](auto&& visit) { v.grid.for_each_candidate(xyz(v.position[s]), visit); });
-}
-
-// Copies the entries of sorted particle s's row of `recorded` (recorded within h + skin, rows of
-// the same capacity as `within`'s) that lie within the support where the particles stand now into
-// its row of `within`, in their order: the sums over `within` then take only terms they keep,
-// which is what keeps their pair functions' branches predictable on the host. An overflowed row
-// stays overflowed (its readers walk the grid).
-MSSPH_HD void keep_within_support(const SortedView& v, const NeighbourLists& recorded, const NeighbourLists& within,
-                                  std::uint32_t s) {
-  const std::uint32_t recorded_count = recorded.count[s];
-  if (recorded_count >= recorded.capacity) {
-    within.count[s] = within.capacity;
-    return;
-  }
-  const std::uint32_t* entry = recorded.first_entry(s);
-  write_row_within(v, within, s, v.step.smoothing.h2, kNoBody, [&](auto&& visit) {
-    for (std::uint32_t k = 0; k < recorded_count; ++k) visit(entry[k]);
-  });
 }
 
 // Calls visit(t) for every entry of list `list` in its order; an overflowed list calls

@@ -64,18 +64,12 @@ NeighbourLists CpuBackend::neighbour_lists() {
 
 // The neighbours phase: the particles copied into the cell order of the last rebuild, whose lists
 // are kept until some particle has moved past the trigger (list_skin.hpp); then the grid is
-// rebuilt and the lists recorded again. Either way each list's entries within h now are copied out
-// for the step's sums (keep_within_support). Summing over the recorded lists themselves, whose
-// entries beyond h (about one in four) the pair functions skip by a branch the host mispredicts,
-// made the 5k fluid block's step 1.4x as long on the 2-core CI machine. The copy made in the
-// density pass instead (just before each particle's sum, or by the sum over the recorded list as it
-// meets them) left the 5k fluid block 11-20 % slower than this separate pass, though the second
-// made the rigid and deformable blocks 5-30 % faster (results/performance.md).
+// rebuilt and the lists recorded again. The density pass copies each list's entries within h for
+// the force pass (density_sum_keeping_within): the force pair's branch on h, which the host
+// mispredicts for about one entry in four of a list with a skin, made the 5k fluid block's step
+// 1.4x as long over the recorded lists themselves on the 2-core CI machine.
 void CpuBackend::update_neighbour_lists() {
   if (rebuild_requested_ || lists_expired()) build_grid();
-  const SortedView view = sorted_view();
-  const NeighbourLists recorded = recorded_lists(), within = neighbour_lists();
-  list_partition_.for_each([&](std::uint32_t s) { keep_within_support(view, recorded, within, s); });
 }
 
 // Copies every particle into the last rebuild's cell order and returns whether one has moved past
@@ -146,7 +140,7 @@ void CpuBackend::partition_by_list_length() {
   const SortedView view = sorted_view();
   const auto count = static_cast<std::uint32_t>(setup_.size());
   const std::uint32_t parts = ParticlePartition::for_this_machine();
-  list_partition_.assign(count, parts, [&](std::uint32_t s) { return kParticleCost + recorded_count_[s]; });
+  density_partition_.assign(count, parts, [&](std::uint32_t s) { return kParticleCost + recorded_count_[s]; });
   force_partition_.assign(count, parts, [&](std::uint32_t s) {
     const bool sums = receives_forces(view.bodies[body_of(view.position[s])]);
     return kParticleCost + (sums ? recorded_count_[s] : 0u);
@@ -172,12 +166,13 @@ void CpuBackend::compute_rotations_and_elastic_forces() {
   for (std::uint32_t d = 0; d < view.count; ++d) elastic_force(view, d);
 }
 
-// Step 2, densities and pressures (eq. 1 and the equation of state), in cell order.
+// Step 2, densities and pressures (eq. 1 and the equation of state), in cell order, over the
+// recorded lists, whose entries within h each particle's sum copies for the force pass.
 void CpuBackend::compute_densities() {
   const SortedView view = sorted_view();
-  const NeighbourLists lists = neighbour_lists();
-  list_partition_.for_each([&](std::uint32_t s) {
-    volume_pressure_[s] = density_from(density_sum_over(view, s, neighbours_of(view, lists, s)), view, s).volume_pressure;
+  const NeighbourLists recorded = recorded_lists(), within = neighbour_lists();
+  density_partition_.for_each([&](std::uint32_t s) {
+    volume_pressure_[s] = density_from(density_sum_keeping_within(view, recorded, within, s), view, s).volume_pressure;
   });
 }
 

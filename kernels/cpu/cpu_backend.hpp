@@ -63,9 +63,9 @@ class CpuBackend final : public Backend {
   std::vector<std::uint32_t> recorded_count_, recorded_index_;  // the last rebuild's, within h + skin
   std::vector<std::uint32_t> neighbour_count_, neighbour_index_;  // this step's, within h: the sums visit these
   std::vector<Vec4> list_origin_;  // each sorted particle's position at the last rebuild
-  // The lists' loops split by cost among the threads, set at each rebuild: the copy of the entries
-  // within h and the density pass (list_partition_), the force pass (force_partition_).
-  ParticlePartition list_partition_, force_partition_;
+  // The lists' loops split by cost among the threads, set at each rebuild: the density pass, which
+  // copies the entries within h (density_partition_), and the force pass (force_partition_).
+  ParticlePartition density_partition_, force_partition_;
   bool rebuild_requested_ = true;  // the next step rebuilds: no lists yet, one overflowed, or positions were set
   std::uint64_t grid_builds_ = 0;
   // Canonical order.

@@ -126,6 +126,44 @@ TEST(ListSkin, ListsHoldEveryNeighbourWhileNoParticleMovedPastTheTrigger) {
   }
 }
 
+// The cpu backend's density pass on a step that keeps the lists (density_sum_keeping_within): after
+// every particle has moved by just under the trigger, it copies out of each recorded row exactly
+// the entries within h, in the row's order, and its sum has the bits of the sum over that copy,
+// the one the force pass reads.
+TEST(ListSkin, TheHostsDensitySumCopiesExactlyTheEntriesWithinTheSupport) {
+  std::mt19937_64 random(2011);
+  JitteredLattice lattice(random, compressed_by_up_to_4_percent(random), static_cast<float>(kernels::list_cell_size(1.0)));
+  const kernels::SortedView v = lattice.view();
+  const kernels::ListSkin skin = kernels::list_skin(v.step.smoothing.h);
+  const HostLists host(v, skin.record_radius2);
+  for (std::uint32_t s = 0; s < lattice.size(); ++s) {
+    lattice.move(s, random_direction(random) * (0.999f * std::sqrt(skin.trigger2)));
+  }
+  std::vector<std::uint32_t> count(lattice.size()), index(std::size_t{lattice.size()} * kCapacity);
+  const kernels::NeighbourLists within = kernels::particle_lists(kCapacity, count.data(), index.data());
+  std::size_t dropped = 0;
+  for (std::uint32_t s = 0; s < lattice.size(); ++s) {
+    const kernels::DensitySum fused = kernels::density_sum_keeping_within(v, host.lists, within, s);
+    ASSERT_LT(host.count[s], kCapacity) << "particle " << s << ": the test needs the list itself";
+    std::vector<std::uint32_t> expected;  // the recorded row's entries within h now, in its order
+    for (std::uint32_t k = 0; k < host.count[s]; ++k) {
+      const std::uint32_t t = host.index[std::size_t{s} * kCapacity + k];
+      if (within_support(v, s, t)) expected.push_back(t);
+    }
+    dropped += host.count[s] - expected.size();
+    const std::vector<std::uint32_t> kept(index.begin() + std::ptrdiff_t{s} * kCapacity,
+                                          index.begin() + std::ptrdiff_t{s} * kCapacity + count[s]);
+    ASSERT_EQ(kept, expected) << "particle " << s;
+    std::vector<std::uint32_t> as_set = kept;
+    std::sort(as_set.begin(), as_set.end());
+    ASSERT_EQ(as_set, neighbours_by_brute_force(v, s)) << "particle " << s;
+    const kernels::DensitySum over_copy = kernels::density_sum_over(v, s, kernels::neighbours_of(v, within, s));
+    ASSERT_TRUE(same_bits(fused.delta, over_copy.delta)) << "particle " << s;
+  }
+  // Not vacuous: the rows held entries beyond h, which the copy left out.
+  EXPECT_GT(dropped, std::size_t{lattice.size()});
+}
+
 // Two fluid particles just beyond the recording radius h + skin: unlisted. Approaching each other
 // by the trigger each, they stay beyond h, so the lists are still right and no rebuild is due;
 // a little farther, each past half the skin, they come within h, unlisted, and that is the moment
