@@ -22,6 +22,7 @@ programs=(
   backend_agreement_test         # tests/backends: the three sphere drops, 2000 steps, cpu vs reference
   read_back_test                 # tests/backends
   neighbour_list_test            # tests/backends: the host's neighbour lists vs the grid walk
+  particle_partition_test        # tests/backends: the host loops' split among OpenMP threads
   wall_check_lanes_test          # tests/backends: the wall check split over a team of lanes
   grid_walk_test                 # tests/backends: each lane's share of the grid walk
   reference_unit_tests           # tests/reference: kernels, neighbour search

@@ -9,11 +9,10 @@
 // - the host records one list per particle, of radius h + skin, when its grid is rebuilt
 //   (record_neighbours; a rigid or deformable particle's own body left out), without a branch on
 //   the distance (every candidate is written, the count advances only for one within the radius),
-//   since on the host that branch is mispredicted
-//   about one candidate in six; on that step and the following ones until the lists expire
-//   (list_skin.hpp) its density pass sums over each list and copies its entries within h into a
-//   second list (density_sum_keeping_within, through RowWriter), which its force pass reads
-//   (for_each_neighbour);
+//   since on the host that branch is mispredicted about one candidate in six; on that step and the
+//   following ones until the lists expire (list_skin.hpp) its density pass sums over each list
+//   and copies its entries within h into a second list (density_sum_keeping_within, through
+//   RowWriter), which its force pass reads (for_each_neighbour);
 // - a GPU team's density pass, on a step that rebuilt the grid, records one list per lane, its
 //   share of the walk, of radius h + skin, as it sums (density_sum_recording, through
 //   ListRecorder); the force pass visits it instead of walking the cells again, and so do both
@@ -111,12 +110,13 @@ MSSPH_HD void write_row_within(const SortedView& v, const NeighbourLists& lists,
   lists.count[s] = row.count();
 }
 
-// Records the candidates of the 27 cells closer than sqrt(radius2) to sorted particle s (itself
-// included, r = 0) into its row of the host's lists, but those of body `left_out`: a rigid or
-// deformable particle's own (body_left_out), whose pairs its sums skip, as the GPU teams' lists
-// leave it out (density_sum_recording). Inside such a block a list is then empty: on the 2-core CI
-// machine, with the cost-balanced split of the host's loops, the 30k rigid block's step took 0.60 of
-// its time before, the deformable one's 0.91 (results/performance.md).
+// Records the candidates of the 27 cells closer than sqrt(radius2) to sorted particle s into its
+// row of the host's lists, but those of body `left_out` (s itself, at r = 0, is recorded unless it
+// is of that body): a rigid or deformable particle's own body (body_left_out), whose pairs its
+// sums skip, as the GPU teams' lists leave it out (density_sum_recording). Inside such a block a
+// list is then empty: on the 2-core CI machine, with the cost-balanced split of the host's loops,
+// the 30k rigid block's step took 0.60 of its time before, the deformable one's 0.91
+// (results/performance.md).
 MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2,
                                 std::uint32_t left_out) {
   write_row_within(v, lists, s, radius2, left_out,

@@ -90,9 +90,10 @@ bool CpuBackend::lists_expired() {
 // Counting sort of the particles by cell key and, within a cell, by half along x (stable: equal
 // keys keep canonical order), then the same cell table, halves and cell-ordered copies as the
 // CUDA backend, then every particle's list of the candidates within h + skin, which the density
-// and force passes visit instead of the 27 cells until the lists expire. The halves let the list's
-// walk trim half a cell at each end of a row (CellRanges::cell_middle), 2.5 cells of 3, as the
-// GPU's one-lane walks do.
+// pass visits instead of the 27 cells until the lists expire (copying the entries within h for the
+// force pass), and the threads' shares of the loops over them (partition_by_list_length). The
+// halves let the list's walk trim half a cell at each end of a row (CellRanges::cell_middle), 2.5
+// cells of 3, as the GPU's one-lane walks do.
 void CpuBackend::build_grid() {
   const std::size_t n = setup_.size();
   const std::size_t cells = scene_.grid.cell_count();
@@ -139,7 +140,7 @@ void CpuBackend::partition_by_list_length() {
   constexpr std::uint32_t kParticleCost = 4;
   const SortedView view = sorted_view();
   const auto count = static_cast<std::uint32_t>(setup_.size());
-  const std::uint32_t parts = ParticlePartition::for_this_machine();
+  const std::uint32_t parts = ParticlePartition::for_current_threads();
   density_partition_.assign(count, parts, [&](std::uint32_t s) { return kParticleCost + recorded_count_[s]; });
   force_partition_.assign(count, parts, [&](std::uint32_t s) {
     const bool sums = receives_forces(view.bodies[body_of(view.position[s])]);

@@ -61,7 +61,8 @@ class CpuBackend final : public Backend {
   // (neighbour_list.hpp).
   static constexpr std::uint32_t kNeighbourCapacity = 64;
   std::vector<std::uint32_t> recorded_count_, recorded_index_;  // the last rebuild's, within h + skin
-  std::vector<std::uint32_t> neighbour_count_, neighbour_index_;  // this step's, within h: the sums visit these
+  // This step's, within h, copied by the density pass from the recorded lists: the force pass visits these.
+  std::vector<std::uint32_t> neighbour_count_, neighbour_index_;
   std::vector<Vec4> list_origin_;  // each sorted particle's position at the last rebuild
   // The lists' loops split by cost among the threads, set at each rebuild: the density pass, which
   // copies the entries within h (density_partition_), and the force pass (force_partition_).

@@ -16,11 +16,12 @@ namespace mssph::kernels {
 
 class ParticlePartition {
  public:
-  // Splits particles [0, n) into `parts` contiguous ranges: part k ends at the first particle
-  // whose running cost reaches k + 1 parts' share of the total (cost(s) >= 0 for particle s), so
-  // no part exceeds its share by more than one particle's cost.
+  // Splits particles [0, n) into `parts` contiguous ranges (at least one): part k ends at the
+  // first particle whose running cost reaches k + 1 parts' share of the total (cost(s) >= 0 for
+  // particle s), so no part exceeds its share by more than one particle's cost.
   template <class Cost>
   void assign(std::uint32_t n, std::uint32_t parts, Cost&& cost) {
+    parts = parts > 0 ? parts : 1u;  // no parts would leave every particle out
     begin_.assign(static_cast<std::size_t>(parts) + 1, n);
     begin_[0] = 0;
     std::uint64_t total = 0;
@@ -39,7 +40,7 @@ class ParticlePartition {
   std::uint32_t end(std::uint32_t part) const { return begin_[part + 1]; }
 
   // Calls body(s) for every particle of every part, the parts shared among the threads of one
-  // parallel region: with as many threads as parts (the usual case, see for_this_machine), one
+  // parallel region: with as many threads as parts (the usual case, see for_current_threads), one
   // part each; with fewer (a nested region, OMP_DYNAMIC), still every part, once.
   template <class Body>
   void for_each(Body&& body) const {
@@ -53,8 +54,8 @@ class ParticlePartition {
     }
   }
 
-  // One part per thread of the host's parallel regions.
-  static std::uint32_t for_this_machine() { return static_cast<std::uint32_t>(omp_get_max_threads()); }
+  // One part per thread of the host's parallel regions, as the OpenMP settings give them now.
+  static std::uint32_t for_current_threads() { return static_cast<std::uint32_t>(omp_get_max_threads()); }
 
  private:
   std::vector<std::uint32_t> begin_{0, 0};  // part k is [begin_[k], begin_[k + 1])

@@ -124,6 +124,31 @@ TEST(NeighbourLists, AFullListFallsBackToTheGridWalk) {
   EXPECT_TRUE(same_bits(walked, kernels::density_sum_over(v, s, kernels::neighbours_of(v, just_enough.lists, s)).delta));
 }
 
+// The cpu backend's density pass over a row that overflowed (density_sum_keeping_within): its sum
+// walks the grid, and the copy it makes for the force pass stays overflowed, so that the force
+// pass walks the grid too; a row that did not overflow is copied whole (recorded within h here).
+TEST(NeighbourLists, TheDensityPassCopyOfAFullListStaysFull) {
+  std::mt19937_64 random(13);
+  const JitteredLattice lattice(random, compressed_by_up_to_4_percent(random));
+  const kernels::SortedView v = lattice.view();
+  constexpr std::uint32_t kSmall = 8;
+  const Lists recorded(v, kSmall);
+  std::vector<std::uint32_t> count(lattice.size()), index(std::size_t{lattice.size()} * kSmall);
+  const kernels::NeighbourLists within = kernels::particle_lists(kSmall, count.data(), index.data());
+  int overflowed = 0;
+  for (std::uint32_t s = 0; s < lattice.size(); ++s) {
+    const kernels::DensitySum fused = kernels::density_sum_keeping_within(v, recorded.lists, within, s);
+    ASSERT_TRUE(same_bits(fused.delta, kernels::density_sum(v, s, 0, 1).delta)) << "particle " << s;
+    if (recorded.count[s] >= kSmall) {
+      ++overflowed;
+      ASSERT_EQ(count[s], kSmall) << "particle " << s;
+    } else {
+      ASSERT_EQ(count[s], recorded.count[s]) << "particle " << s;
+    }
+  }
+  EXPECT_GT(overflowed, 100);
+}
+
 // ---- A GPU team's lists: one per lane, recorded with a skin by a rebuild's density pass ----
 // (list_skin_test.cpp checks them after the particles have moved.)
 

@@ -8,6 +8,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -89,15 +90,15 @@ TEST(ParticlePartition, LoopVisitsEveryParticleOnceWithFewerThreadsThanParts) {
   ParticlePartition partition;
   partition.assign(n, 5, [](std::uint32_t) { return 1u; });
   std::vector<int> visits(n, 0);
-  int threads = 0;
+  std::atomic<int> team_size{0};  // atomic: were the setting ignored, several threads would store it
   const int levels = omp_get_max_active_levels();
   omp_set_max_active_levels(0);
   partition.for_each([&](std::uint32_t s) {
     ++visits[s];
-    threads = omp_get_num_threads();
+    team_size = omp_get_num_threads();
   });
   omp_set_max_active_levels(levels);
-  EXPECT_EQ(threads, 1);
+  EXPECT_EQ(team_size.load(), 1);
   EXPECT_EQ(std::count(visits.begin(), visits.end(), 1), static_cast<long>(n));
 }
 
