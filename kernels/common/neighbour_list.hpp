@@ -96,31 +96,22 @@ class RowWriter {
   std::uint32_t count_ = 0;
 };
 
-// Writes into sorted particle s's row of the host's lists the candidates that candidates(visit)
-// hands over closer than sqrt(radius2) to s, but those of body `left_out`, in their order.
-template <class Candidates>
-MSSPH_HD void write_row_within(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2,
-                               std::uint32_t left_out, Candidates&& candidates) {
+// Records the candidates of the 27 cells closer than sqrt(radius2) to sorted particle s into its
+// row of the host's lists, in the walk's order, but those of body `left_out` (s itself, at r = 0,
+// is recorded unless it is of that body): a rigid or deformable particle's own body
+// (body_left_out), whose pairs its sums skip, as the GPU teams' lists leave it out
+// (density_sum_recording). Inside such a block a list is then empty: on the 2-core CI machine,
+// with the cost-balanced split of the host's loops, the 30k rigid block's step took 0.60 of its
+// time before, the deformable one's 0.91 (results/performance.md).
+MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2,
+                                std::uint32_t left_out) {
   const Vec3 x_i = xyz(v.position[s]);
   RowWriter row(lists, s);
-  candidates([&](std::uint32_t t) {
+  v.grid.for_each_candidate(x_i, [&](std::uint32_t t) {
     const Vec4 p = v.position[t];
     row.offer(t, (squared_norm(x_i - xyz(p)) < radius2) & (body_of(p) != left_out));
   });
   lists.count[s] = row.count();
-}
-
-// Records the candidates of the 27 cells closer than sqrt(radius2) to sorted particle s into its
-// row of the host's lists, but those of body `left_out` (s itself, at r = 0, is recorded unless it
-// is of that body): a rigid or deformable particle's own body (body_left_out), whose pairs its
-// sums skip, as the GPU teams' lists leave it out (density_sum_recording). Inside such a block a
-// list is then empty: on the 2-core CI machine, with the cost-balanced split of the host's loops,
-// the 30k rigid block's step took 0.60 of its time before, the deformable one's 0.91
-// (results/performance.md).
-MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2,
-                                std::uint32_t left_out) {
-  write_row_within(v, lists, s, radius2, left_out,
-                   [&](auto&& visit) { v.grid.for_each_candidate(xyz(v.position[s]), visit); });
 }
 
 // Calls visit(t) for every entry of list `list` in its order; an overflowed list calls
