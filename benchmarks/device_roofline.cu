@@ -1,4 +1,4 @@
-// The card's own limits, for the roofline estimates beside the step times (results/performance.md):
+// The card's own limits, for the roofline estimates beside the step times (results/current/):
 // DRAM bandwidth (a streaming copy far larger than L2) and FP32 rate (independent FMA chains).
 // Both report what they achieve, not the datasheet's peak.
 #include <benchmark/benchmark.h>
@@ -42,7 +42,7 @@ double elapsed_seconds(cudaEvent_t start, cudaEvent_t stop) {
 }
 
 void BM_dram_copy(benchmark::State& state) {
-  const std::size_t bytes = std::size_t{1} << 30;  // 1 GiB each way, 20x the H100's L2
+  const std::size_t bytes = std::size_t{1} << 30;  // 1 GiB each way, far larger than any GPU's L2
   const std::size_t n = bytes / sizeof(float4);
   float4 *in = nullptr, *out = nullptr;
   if (!cuda_ok(cudaMalloc(&in, bytes), state) || !cuda_ok(cudaMalloc(&out, bytes), state)) return;

@@ -4,9 +4,7 @@
 #include "step_delay.hpp"
 #include "util/build_info.hpp"
 #include "util/host_info.hpp"
-#ifdef MSSPH_HAVE_CUDA_BACKEND
-#include "cuda/cuda_backend.hpp"
-#endif
+#include "backend_factory/backend_factory.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -20,15 +18,11 @@ namespace {
 // The GPU the cuda backend runs on (device 0), or "none": a property of the machine, the same
 // whether this binary was built with the CUDA backend or not (mssph_cuda_backend says that).
 std::string gpu_name() {
-#ifdef MSSPH_HAVE_CUDA_BACKEND
-  const std::vector<kernels::CudaDeviceInfo> devices = kernels::cuda_devices();
+  const std::vector<GpuDevice> devices = gpu_devices();
   if (devices.empty()) return "none";
-  const kernels::CudaDeviceInfo& d = devices.front();
+  const GpuDevice& d = devices.front();
   return d.name + " (sm_" + std::to_string(d.compute_major) + std::to_string(d.compute_minor) + ", " +
          std::to_string(d.total_memory / (1024 * 1024)) + " MiB)";
-#else
-  return "none";
-#endif
 }
 
 // The NVIDIA kernel driver's version line, as nvidia-smi reports it; "none" without the driver.

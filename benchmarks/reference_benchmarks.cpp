@@ -1,10 +1,10 @@
 // Google Benchmark timings of the double-precision reference: neighbour search and whole steps
 // for blocks of each medium. The reference is the oracle, not the fast path; these numbers say
 // how large a scene the validation suite can afford.
-#include "scene/block_scene.hpp"
+#include "model/block_scene.hpp"
 #include "model/neighbour_search.hpp"
 #include "reference_backend.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include <benchmark/benchmark.h>
 

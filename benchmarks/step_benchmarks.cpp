@@ -2,7 +2,7 @@
 // and the mixed scene with the coupled proxy, from 2k to 1M particles; one scene file's step;
 // and the haptic tick. Each benchmark iteration runs a batch of steps and waits for the device
 // once, so a GPU's asynchronous launches are timed as they run in a simulation.
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "benchmark_suite.hpp"
 #include "config/scene_loader.hpp"
 #include "haptics/haptics_run.hpp"
@@ -10,12 +10,9 @@
 #include "haptics/virtual_coupling.hpp"
 #include "machine_calibration.hpp"
 #include "mixed_scene.hpp"
-#include "scene/block_scene.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/block_scene.hpp"
+#include "model/scene_builder.hpp"
 #include "step_delay.hpp"
-#ifdef MSSPH_HAVE_CUDA_BACKEND
-#include "cuda/cuda_backend.hpp"
-#endif
 
 #include <benchmark/benchmark.h>
 
@@ -43,13 +40,9 @@ class SteppedScene {
     ParticleSetup setup = build_particles(scene);
     particles_ = static_cast<double>(setup.size());
     if (scene.proxy) haptics_.emplace(scene.proxy->haptics, proxy_model_of(scene, setup), scene.simulation.dt);
-#ifdef MSSPH_HAVE_CUDA_BACKEND
-    if (backend_name == "cuda") {
-      state.counters["device_bytes_per_particle"] = static_cast<double>(kernels::cuda_backend_bytes(setup)) / particles_;
+    if (const std::optional<std::size_t> bytes = backend_device_bytes(backend_name, setup)) {
+      state.counters["device_bytes_per_particle"] = static_cast<double>(*bytes) / particles_;
     }
-#else
-    (void)state;
-#endif
     backend_ = make_backend(backend_name, std::move(setup));
   }
 
@@ -103,7 +96,7 @@ void time_steps(benchmark::State& state, const Scene& scene, const std::string& 
     state.counters["grid_builds_per_step"] = static_cast<double>(builds) / (static_cast<double>(state.iterations()) * kBatch);
   }
   // Where a step's time goes, from one further step per iteration with phase timing on (device
-  // events on a GPU), outside the timed batches: the events would cost the timed steps ~10 us.
+  // events on a GPU), outside the timed batches, whose steps the events would lengthen.
   sim.backend().set_phase_timing(true);
   for (benchmark::IterationCount k = 0; k < state.iterations(); ++k) {
     sim.step();
@@ -162,9 +155,7 @@ std::vector<std::string> default_benchmark_backends() {
   std::vector<std::string> backends;
   for (const std::string& backend : available_backends()) {
     if (backend == "reference") continue;
-#ifdef MSSPH_HAVE_CUDA_BACKEND
-    if (backend == "cuda" && kernels::cuda_devices().empty()) continue;  // built with CUDA, run without a GPU
-#endif
+    if (!why_backend_cannot_run(backend).empty()) continue;  // e.g. built with CUDA, run without a GPU
     backends.push_back(backend);
   }
   return backends;

@@ -11,7 +11,7 @@
 // momentum.
 #include "deformable_state.hpp"
 #include "particle_state.hpp"
-#include "scene/particle_setup.hpp"
+#include "model/particle_setup.hpp"
 
 #include <Eigen/Core>
 

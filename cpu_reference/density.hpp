@@ -3,7 +3,7 @@
 #include "model/deformable_rest_state.hpp"
 #include "model/neighbour_search.hpp"
 #include "particle_state.hpp"
-#include "scene/particle_setup.hpp"
+#include "model/particle_setup.hpp"
 
 #include <algorithm>
 #include <vector>

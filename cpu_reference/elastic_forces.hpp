@@ -4,7 +4,7 @@
 // The per-particle math is in corotation.hpp and elasticity.hpp.
 #include "model/deformable_rest_state.hpp"
 #include "deformable_state.hpp"
-#include "scene/particle_setup.hpp"
+#include "model/particle_setup.hpp"
 
 #include <Eigen/Core>
 

@@ -4,7 +4,7 @@
 // media).
 #include "model/neighbour_search.hpp"
 #include "particle_state.hpp"
-#include "scene/particle_setup.hpp"
+#include "model/particle_setup.hpp"
 
 #include <Eigen/Core>
 

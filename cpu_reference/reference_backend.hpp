@@ -5,7 +5,7 @@
 #include "deformable_state.hpp"
 #include "model/neighbour_search.hpp"
 #include "particle_state.hpp"
-#include "sim/backend.hpp"
+#include "backend/backend.hpp"
 
 #include <array>
 #include <chrono>

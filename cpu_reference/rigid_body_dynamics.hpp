@@ -3,7 +3,7 @@
 // 9): the forces on a body's particles are summed into one wrench, the body is integrated as a
 // rigid body, and its particles are placed back from their body-frame offsets.
 #include "particle_state.hpp"
-#include "scene/particle_setup.hpp"
+#include "model/particle_setup.hpp"
 
 namespace mssph::reference {
 

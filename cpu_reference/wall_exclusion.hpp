@@ -3,7 +3,7 @@
 // (model/wall_exclusion.hpp says why and with what distance; float twin:
 // kernels::keep_out_of_walls).
 #include "model/neighbour_search.hpp"
-#include "scene/particle_setup.hpp"
+#include "model/particle_setup.hpp"
 
 #include <Eigen/Core>
 

@@ -7,7 +7,7 @@
 // position its particles' deformation gradients predict. Off when zero_energy_stiffness = 0.
 #include "model/deformable_rest_state.hpp"
 #include "deformable_state.hpp"
-#include "scene/particle_setup.hpp"
+#include "model/particle_setup.hpp"
 
 #include <Eigen/Core>
 

@@ -1,11 +1,10 @@
 # The CPU benchmark gate's settings, sourced by scripts/bench_gate.sh and scripts/bench_baseline.sh
 # so that a baseline and the runs compared with it are always made the same way.
 #
-# The smallest host size of every medium and the haptic tick: a run took about 7 s on the 2-core
-# CI machine kind (30 s at load average 10 before the host's skin lists). And calibration/cpu, a
-# fixed workload that times the machine: the comparison divides each ratio by its ratio
-# (GATE_NORMALIZE_BY), since the same build ran the gate 1.2-1.4x slower in some hours of the CI
-# machine kind than in others (results/baselines/ci-2core/README.md).
+# The smallest host size of every medium and the haptic tick, and calibration/cpu, a fixed
+# workload that times the machine: the comparison divides each ratio by its ratio
+# (GATE_NORMALIZE_BY), since a shared CI machine runs the same build slower in some hours than in
+# others (results/baselines/ci-2core/README.md).
 GATE_FILTER='^step/cpu/(fluid|rigid|deformable|mixed)/2000/|^haptic_tick/cpu$|^calibration/cpu$'
 GATE_NORMALIZE_BY=calibration/cpu
 # 10 repetitions a side: complete separation gives p = 2 / C(20, 10) = 1.1e-5, so a real
@@ -15,10 +14,8 @@ GATE_REPETITIONS=10
 GATE_MIN_TIME=0.01
 # Runs of the gate before it fails: a run that fails is repeated, up to this many runs in all,
 # and the gate passes when one run passes. Other load on a shared VM only adds time, so a run that
-# passes shows that the code is not slower; a real slowdown slows every run. On 2026-11-27 a
-# fresh-clone CI failed the gate at median ratios of 1.19-1.41 while its fastest repetitions were
-# 0.99-1.11 of the baseline's (results/baselines/ci-2core/README.md); the normalization divides
-# out a slow hour, the repeats a burst of load within a run.
+# passes shows that the code is not slower; a real slowdown slows every run. The normalization
+# divides out a slow hour, the repeats a burst of load within a run.
 GATE_ATTEMPTS=3
 # One OpenMP thread: the gate watches the cost of the kernels; on a 2-core VM a second thread
 # that waits at every barrier for a core a neighbour holds adds more noise than information.

@@ -60,7 +60,8 @@ done
 # The same scenes at 4 cm give every particle a team of lanes. Large scenes take one lane per
 # particle, whose walks hold segments in shared memory and, for fluid particles, pass near notes
 # from the density pass to the force pass (kernels/common/near_notes.hpp): memcheck and racecheck
-# on the fluid and rigid drops at 5 mm, which an H100 or H200 gives one lane per particle.
+# on the fluid and rigid drops at 5 mm, which a data-centre GPU gives one lane per particle
+# (choose_team_lanes).
 one_lane_run=(--backend cuda -q --set simulation/particle_spacing=0.005 --set simulation/duration=0.0005)
 for scene in sphere_drop_fluid sphere_drop_rigid; do
   for tool in memcheck racecheck; do

@@ -21,9 +21,7 @@ struct GridShape {
   // complement). A row of three cells along x is one range of sorted particles unless it wraps
   // (CellRanges::for_each_range); a wrapped row is walked as three cells, more slowly, and a
   // warp whose lanes take both kinds of rows runs both. choose_grid_shape puts the wrap beside the
-  // scene. Left at 0, a scene centred on the origin wraps there: on an H100 the 1M fluid block's
-  // density kernel spent a tenth of its instructions on the wrapped rows of the cells on either
-  // side of x = 0, and with the wrap moved its step took 623 us against 706 (results/performance.md).
+  // scene, so that no row inside it wraps (at 0, a scene centred on the origin would wrap there).
   std::uint32_t origin_x = 0;
 
   MSSPH_HD std::uint32_t cell_count() const { return 1u << (bits_x + bits_y + bits_z); }
@@ -141,10 +139,9 @@ inline constexpr float kHalfTrimMargin = 1.0f / 64.0f;
 
 // The bit mask of the `size` (1 to 32) sorted particles from `first` that lie closer to x than
 // sqrt(radius2): bit b for particle first + b. Addressed from the first by a signed offset, whose
-// overflow the compiler may assume away: the unrolled loads then take their offsets as immediates,
-// where an unsigned index, which may wrap, cost each candidate its own address sums (on an H200 the
-// 1M fluid step took 603 us against 607; results/performance.md). Each candidate's bit enters at the
-// top and the mask moves down one place, as the density walk's notes are built
+// overflow the compiler may assume away, so the unrolled loads take their offsets as immediates
+// (an unsigned index, which may wrap, costs each candidate its own address sums). Each candidate's
+// bit enters at the top and the mask moves down one place, as the density walk's notes are built
 // (density_sum_noting_near); the last shift puts candidate b's at bit b.
 MSSPH_HD std::uint32_t near_mask(Vec3 x, float radius2, const Vec4* position, std::uint32_t first, int size) {
   const Vec4* candidate = position + first;
@@ -171,10 +168,7 @@ struct CellRanges {
   // [cell_middle[k], cell_start[k + 1]). A one-lane walk from the upper half of a cell (trimmed_side)
   // skips the lower half of the cell below it along x, whose particles all lie farther than a cell
   // away, and the other way round: it walks 2.5 cells of each row instead of 3. Null where cells are
-  // not split (tests of whole cells). (Cells sorted by x within, with walks that stop along x at each
-  // row's reach, took a quarter to two fifths fewer candidates, and the 1M fluid step 27-35 % longer
-  // on an H100: the stop made each load wait for the last, and a warp's lanes stop apart;
-  // results/performance.md.)
+  // not split (tests of whole cells).
   const std::uint32_t* cell_middle = nullptr;
 
   // +1 where x lies above the middle of its cell along x by kHalfTrimMargin, -1 below it by as
@@ -292,14 +286,12 @@ struct CellRanges {
   // sqrt(radius2) (`position`: the sorted positions), in for_each_candidate's order, after the
   // walk rather than inside it. The walk takes each segment's distances into a bit mask of the
   // near ones (for_each_segment, near_mask), and keeps each segment that has one in `held`
-  // (HeldSegments); then one loop visits the held segments' near candidates in order. One lane per
-  // particle (large GPU scenes) is why: the lanes of a warp find their ~30 neighbours among ~200
-  // candidates each at other places, so visits inside the walk ran once per segment as often as
-  // the lane with the most near ones in it needed, and on an H100 the 1M fluid block's force pass
-  // executed its pair arithmetic with 16 of 32 lanes on average; one loop after the walk runs as
-  // often as the lane with the most neighbours in all needs. A walk that finds more segments than
-  // `held` holds visits those it holds and starts again. The visits see exactly the candidates a
-  // filter on the same r^2 would pass.
+  // (HeldSegments); then one loop visits the held segments' near candidates in order. The lanes of
+  // a warp (one lane per particle, large GPU scenes) find their ~30 neighbours among ~200
+  // candidates each at other places: visits inside the walk would leave most lanes idle, while one
+  // loop after the walk runs only as often as the lane with the most neighbours needs. A walk that
+  // finds more segments than `held` holds visits those it holds and starts again. The visits see
+  // exactly the candidates a filter on the same r^2 would pass.
   template <class Held, class Visit>
   MSSPH_HD void for_each_candidate_within(Vec3 x, float radius2, const Vec4* position, Held& held,
                                           Visit&& visit) const {

@@ -57,8 +57,8 @@ struct DeformableView {
 
 // Rest neighbour j (deformable index dj) of deformable particle i, derived from their rest positions
 // and volumes whenever a pass reads it: the bonds are the deformable passes' largest read, and a
-// 4-byte neighbour index per bond moves a twelfth of the 48-byte record of offset, weights and
-// both d's it replaces. The reference builds the same quantities once, in double
+// 4-byte neighbour index per bond moves a twelfth of a stored 48-byte record of offset, weights
+// and both d's. The reference builds the same quantities once, in double
 // (build_deformable_rest_state). The correction L_i of d_ij = V0_j L_i grad W(X_i - X_j) is not
 // applied per bond: each pass takes it out of its sum (bond_sums, elastic_force).
 struct RestBond {
@@ -107,9 +107,9 @@ MSSPH_HD Quat extract_rotation(const Mat3& a, Quat q) {
 // What step 1 and eq. 4 need of deformable particle d's rest bonds, gathered in one pass: the
 // moment matrix A = sum_j m_j W_ij x_ij X_ij^T and the two halves of eq. 4,
 // sum_j x_ij d_ij^T and sum_j X_ij d_ij^T, each as (sum_j x_ij (V0_j grad W_ij)^T) L_i^T since
-// d_ij = L_i V0_j grad W_ij: one product by L_i per particle instead of one per bond. Each half sums terms of size |X_ij| |d_ij| as the
-// per-bond form does, so float32 rounding is of the same order; the bonds, the step's largest
-// read, are read once instead of twice.
+// d_ij = L_i V0_j grad W_ij: one product by L_i per particle instead of one per bond. Each half
+// sums terms of size |X_ij| |d_ij| as the per-bond form does, so float32 rounding is of the same
+// order; the bonds, the step's largest read, are read once instead of twice.
 struct BondSums {
   Mat3 moment;
   Mat3 current_gradient;
@@ -241,7 +241,7 @@ MSSPH_HD Vec3 elastic_force_pair(const Mat3& action_i, Vec3 d_ij, const Mat3& ac
 //   delta = ((F_i + F_j) X_ij - 2 x_ij) . n,  f_i = -(alpha / 2) V0_i V0_j W(|X_ij|) E delta / |X_ij|^2 n.
 // Needs |x_ij| > 0: coincident particles have no pair direction, and the caller skips them
 // (the reference's twin returns zero for them). The test stays with the caller so that the
-// GPU's compiler can still fuse the force sum's multiply-add, as it did before this function.
+// GPU's compiler can fuse the force sum's multiply-add.
 MSSPH_HD Vec3 zero_energy_force_pair(const Mat3& world_f_i, const Mat3& world_f_j, Vec3 rest_x_ij, Vec3 x_ij,
                                      float rest_volume_i, float rest_volume_j, float w_rest, float young_modulus,
                                      float alpha) {

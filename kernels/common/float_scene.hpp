@@ -7,8 +7,8 @@
 #include "elastic_physics.hpp"
 #include "particle_views.hpp"
 #include "rigid_physics.hpp"
-#include "scene/particle_setup.hpp"
-#include "sim/backend.hpp"
+#include "model/particle_setup.hpp"
+#include "backend/backend.hpp"
 
 #include <vector>
 

@@ -6,7 +6,7 @@
 // (`cpu`, and `cuda` with teams of lanes), what makes a restart record the same lists. Everything
 // else a step computes from these before reading it.
 #include "float_scene.hpp"
-#include "sim/state_arrays.hpp"
+#include "backend/state_arrays.hpp"
 
 #include <cstdint>
 #include <vector>

@@ -41,10 +41,9 @@ struct DensitySum {
 };
 
 // Candidates beyond the support (about 85 % of the 27 cells' volume) are rejected on r^2, the
-// force pair's test, before their distance is taken. Returns r^2, the candidate's squared distance.
-// (The term taken for every candidate and added through a select, without the branch, kept the
-// sums' bits and took the 1M fluid block's density pass 291 us against 238 on an H100: warps skip
-// the term together where no lane's candidate is near; results/performance.md.)
+// force pair's test, before their distance is taken: a branch rather than a select, so that warps
+// skip the term together where no lane's candidate is near. Returns r^2, the candidate's squared
+// distance.
 MSSPH_HD float add_density_pair(DensitySum& sum, const SmoothingKernels& w, Vec3 x_i, Vec3 x_j) {
   const float r2 = squared_norm(x_i - x_j);
   if (r2 < w.h2) sum.delta += w.spiky(w.pair_distance(r2).r);
@@ -67,10 +66,8 @@ MSSPH_HD bool takes_own_body_at_rest(const BodyParameters& body) {
 // The body whose rows of cells a particle's density walk leaves out (CellRanges::for_each_range):
 // a rigid or deformable particle's own, whose pairs add nothing to its sum (taken at rest);
 // kNoBody for the others. Inside a large block every row is its own body's, and its particles
-// walk nothing. On an H100 the 1M rigid block's density pass went from 326 to 160 us, the
-// deformable block's from 245 to 161. The force walk leaves out nothing: inside a body it is
-// skipped whole (may_feel_forces), and near another body leaving rows out made the 1M rigid and
-// deformable force passes about 7 % slower (results/performance.md).
+// walk nothing. The force walk leaves out nothing: inside a body it is skipped whole
+// (may_feel_forces), and near another body the cell checks cost more than the rows they save.
 MSSPH_HD std::uint32_t body_left_out(const BodyParameters& body, std::uint32_t body_index) {
   return takes_own_body_at_rest(body) ? body_index : kNoBody;
 }
@@ -92,8 +89,7 @@ MSSPH_HD std::uint32_t cells_left_out(const SortedView& v, std::uint32_t s) {
 // body where it takes that at rest), with its squared distance r2; its term is added when r2 < h^2.
 // The walk is written once for a particle that takes its own body at rest (which also notes its
 // nearest other body) and once for every other particle, so a particle's case is decided once,
-// not at each of its ~200 candidates. Taking the nearest other body in every particle's walk made
-// the 1M fluid block's density pass 28 % slower on an H100 (results/performance.md).
+// not at each of its ~200 candidates, and a fluid particle's walk does not take the nearest.
 template <class Candidates, class Considered>
 MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates,
                                      Considered&& considered) {
@@ -138,8 +134,7 @@ MSSPH_HD DensitySum density_sum_noting_near(const SortedView& v, std::uint32_t s
   v.grid.for_each_segment(x_i, [&](std::uint32_t first, int size) {
     const Vec4* candidate = v.position + first;  // signed offsets, as near_mask's
     // Each candidate's bit enters at the top and the mask moves down one place; the last shift
-    // puts candidate b's at bit b. Set at bit b directly (1 << b), the 1M fluid block's density
-    // pass took 223 us against 212 on an H200, its step 503 against 490 (results/performance.md).
+    // puts candidate b's at bit b. A variable shift per candidate (1 << b) costs more.
     std::uint32_t near = 0;
     for (int b = 0; b < size; ++b) {
       const bool within = add_density_pair(sum, v.step.smoothing, x_i, xyz(candidate[b])) < v.step.smoothing.h2;
@@ -178,8 +173,7 @@ MSSPH_HD bool receives_forces(const BodyParameters& body) { return body.kind != 
 // sum met another body within h (DensitySum::nearest_other_body2 < h^2): a fluid particle's always
 // can; a rigid or deformable particle's take only other bodies' neighbours (add_force_pair), so
 // without one they are zero, and the GPU's force pass skips its walk. Inside a large rigid or
-// deformable block that is nearly every particle. (The host's, tried the same way, showed no
-// difference its 2-core machine could resolve: results/performance.md.)
+// deformable block that is nearly every particle.
 MSSPH_HD bool may_feel_forces(const BodyParameters& body, bool near_other_body) {
   return receives_forces(body) && (body.kind == kFluid || near_other_body);
 }
@@ -216,11 +210,8 @@ MSSPH_HD DensitySum density_sum_listed(const SortedView& v, std::uint32_t s, std
 // recorded within h + skin (list_skin.hpp), copying the entries within h where the particles stand
 // now into its row of `within` as it meets them (RowWriter); the force pass reads those, whose
 // terms it all keeps. A row that overflowed stays overflowed: its density walked the grid, and so
-// will its force pass. (A pass of its own made the copy before, branch-free as the recording is,
-// and the density sum took the copy, whose test on h the host then always predicted; this sum
-// mispredicts that test for about one entry in four of a row with a skin, but loads each row and
-// its positions once. On the 2-core CI machine it took the 30k fluid step 0.85-0.92 of its time,
-// the rigid and deformable ones 0.73-0.98, and the 5k fluid step 1.06-1.13: results/performance.md.)
+// will its force pass. Copying as it sums loads each row and its positions once, at the price of a
+// mispredicted test on h for about one entry in four of a row with a skin.
 MSSPH_HD DensitySum density_sum_keeping_within(const SortedView& v, const NeighbourLists& recorded,
                                                const NeighbourLists& within, std::uint32_t s) {
   RowWriter kept(within, s);
@@ -330,15 +321,12 @@ MSSPH_HD ForceSum zero_force_sum() {
 // Adds candidate t's pressure and viscosity forces on i, and takes t's distance if it is a
 // boundary neighbour. For a fluid particle, t's volume, pressure and velocity are loaded with its
 // position, before its distance is tested, and its body's parameters only where its body is not
-// i's: a candidate then waits for one round of loads, where the loads behind each test made it
-// wait for three (position, its body's kind, the rest). Nearly every candidate a one-lane walk
-// hands over is a neighbour (CellRanges::for_each_candidate_within), a team's list entries three
-// in four. Within i's own body the kind is i's, never a boundary's (boundary particles receive no
-// forces). A rigid or deformable particle's own-body neighbours add nothing, and it loads the rest
-// after the test that leaves them out. On an H200 the 1M fluid step took 574 us against 603 (its
-// force pass 325 against 343), the 30k fluid step 33.9 against 36.3 (one run each), the rigid and
-// deformable steps the same; with the loads ahead for every particle, the 1M fluid step took 600 us
-// and the rigid and deformable force passes 5-6 us longer (results/performance.md).
+// i's: a candidate then waits for one round of loads, not for three behind each test (position,
+// its body's kind, the rest). Nearly every candidate a one-lane walk hands over is a neighbour
+// (CellRanges::for_each_candidate_within), a team's list entries three in four. Within i's own
+// body the kind is i's, never a boundary's (boundary particles receive no forces). A rigid or
+// deformable particle's own-body neighbours add nothing, and it loads the rest after the test
+// that leaves them out, so that its many left-out candidates load nothing more.
 MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const SortedView& v, std::uint32_t t) {
   if (t == i.s) return;
   const bool fluid = i.parameters.kind == kFluid;
@@ -418,11 +406,8 @@ MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& p, std::ui
 // Segments a one-lane force walk holds before it visits them: its 9 rows give at most 9 with a
 // near candidate, unless a row holds more than 32 candidates (near the walls' denser layers) or
 // wraps around the grid; a walk that finds more visits them in two goes, which costs its warp a
-// second loop. On an H100 the 1M fluid block's force pass took 578 us holding 10 against 540 with
-// 12 (1536 threads a multiprocessor), and 439 us holding 16 against 429 with 12 in one run (1024
-// threads), whose shared memory comes out of L1; in blocks of 128 threads it took 424 us holding
-// 10 and 387 holding 11 or 12, though 11 fits the smaller shared-memory configuration
-// (results/performance.md).
+// second loop. Twelve leave room for a few such rows; every segment more lengthens each thread's
+// column in shared memory, which comes out of L1.
 inline constexpr std::uint32_t kHeldSegments = 12;
 
 // The same with the segments in the thread's own array (host tests; the GPU's force probe).
@@ -495,8 +480,8 @@ MSSPH_HD bool wall_check_share(const SortedView& v, const Advance& a, std::uint3
 // around the new position. Every boundary particle that can reject the move was within h of the
 // particle at the step's start (ForceSum::nearest_boundary2), so some lane of the team lists it,
 // and every listed candidate is a real one: the team's decision is keep_out_of_walls'. The lanes
-// of 8 each visit ~6 list entries instead of ~36 candidates, each behind two dependent loads; that
-// walk, in the slowest team, set the length of a small scene's force pass (results/performance.md).
+// of 8 each visit ~6 list entries instead of ~36 candidates, each behind two dependent loads: in
+// the slowest team, that walk would set the length of a small scene's force pass.
 MSSPH_HD bool wall_check_share(const SortedView& v, const Advance& a, std::uint32_t lane, std::uint32_t lanes,
                                const NeighbourLists& lists, std::uint32_t list) {
   return a.may_hit_wall &&

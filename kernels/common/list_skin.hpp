@@ -17,7 +17,7 @@
 namespace mssph::kernels {
 
 // Skin width over h. A wider skin means rarer rebuilds but longer lists, which every step reads:
-// (1 + skin/h)^3 as many entries as neighbours. results/performance.md has the measurements.
+// (1 + skin/h)^3 as many entries as neighbours. results/decisions/ has the measurements.
 inline constexpr float kSkinOverSupport = 0.1f;
 
 // The trigger sits 1 % of the skin inside half of it, so the float rounding of the two distance

@@ -53,8 +53,8 @@ MSSPH_HD NeighbourLists lane_lists(std::uint32_t capacity, std::uint32_t lists, 
 
 // Writes a GPU lane's list as its density pass meets the neighbours. It keeps a pointer to the
 // next entry rather than an index: a warp runs the recording whenever one of its lanes meets a
-// neighbour, nearly every candidate, so each instruction of it counts (a 64-bit multiply there
-// cost the 30k fluid step 2 us on an H100).
+// neighbour, nearly every candidate, so each instruction of it counts, and a pointer needs no
+// 64-bit multiply by the stride.
 class ListRecorder {
  public:
   MSSPH_HD ListRecorder(const NeighbourLists& lists, std::uint32_t list)
@@ -76,10 +76,9 @@ class ListRecorder {
 };
 
 // Writes sorted particle s's row of the host's lists (particle_lists: entries contiguous, which
-// this writer relies on; with the GPU's recorder and its stride the cpu backend's grid phase took
-// 25 % longer) without a branch on whether an entry is kept: every entry offered is written, the
-// count advances only for one kept (the last entry takes every entry once the row is full:
-// overflowed).
+// this writer relies on to index the row without a stride) without a branch on whether an entry
+// is kept: every entry offered is written, the count advances only for one kept (the last entry
+// takes every entry once the row is full: overflowed).
 class RowWriter {
  public:
   MSSPH_HD RowWriter(const NeighbourLists& lists, std::uint32_t s) : row_(lists.first_entry(s)), last_(lists.capacity - 1) {}
@@ -100,9 +99,8 @@ class RowWriter {
 // row of the host's lists, in the walk's order, but those of body `left_out` (s itself, at r = 0,
 // is recorded unless it is of that body): a rigid or deformable particle's own body
 // (body_left_out), whose pairs its sums skip, as the GPU teams' lists leave it out
-// (density_sum_recording). Inside such a block a list is then empty: on the 2-core CI machine,
-// with the cost-balanced split of the host's loops, the 30k rigid block's step took 0.60 of its
-// time before, the deformable one's 0.91 (results/performance.md).
+// (density_sum_recording). Inside such a block a list is then empty, and the sums over it cost
+// nothing.
 MSSPH_HD void record_neighbours(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, float radius2,
                                 std::uint32_t left_out) {
   const Vec3 x_i = xyz(v.position[s]);
@@ -148,8 +146,8 @@ MSSPH_HD auto listed_share(const CellRanges& grid, Vec3 x, std::uint32_t lane, s
 }
 
 // Calls visit(t) for every neighbour t of sorted particle s in the host's lists, in the grid
-// walk's order: for_each_listed for a contiguous row (through for_each_listed and its runtime
-// stride the cpu backend's density and force passes measured 3-10 % slower on the 2-core CI machine).
+// walk's order: for_each_listed for a contiguous row, indexed directly instead of through a
+// runtime stride.
 template <class Visit>
 MSSPH_HD void for_each_neighbour(const SortedView& v, const NeighbourLists& lists, std::uint32_t s, Visit&& visit) {
   const std::uint32_t count = lists.count[s];

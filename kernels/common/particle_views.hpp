@@ -58,9 +58,9 @@ struct alignas(8) VolumePressure {  // aligned: one 8-byte load
 
 // Loads of a sorted array that no thread writes while the pass reading it runs, issued where they
 // are written. nvcc moves a load whose value is used only past a branch into that branch, so a
-// force pair's volume and velocity were loaded after its distance test and its body's kind, each
-// behind the last; on the GPU these read through the read-only data path with inline PTX that the
-// compiler keeps in place (__ldg).
+// force pair's volume and velocity would be loaded after its distance test and its body's kind,
+// each behind the last; on the GPU these read through the read-only data path with inline PTX
+// that the compiler keeps in place (__ldg).
 MSSPH_HD Vec4 load_in_place(const Vec4* array, std::uint32_t k) {
 #if defined(__CUDA_ARCH__)
   const float4 v = __ldg(reinterpret_cast<const float4*>(array + k));

@@ -12,11 +12,6 @@ namespace mssph::kernels {
 // warp runs a pair term whenever one of its 32 lanes meets a neighbour, at nearly every candidate.
 // The host takes the IEEE square root and division. Coincident particles (r <= 1e-12 h, where the
 // spiky gradient has no direction) get r = 0 and 1 / r = 0; a NaN r^2 gives a NaN r on both.
-// (PTX rsqrt.approx.ftz.f32 in place of rsqrtf, without its scaling of subnormal arguments, which
-// an r^2 above coincident2 never is, kept every bit and took the 1M fluid step on an H100 from 623
-// to 611 us, but the deformable one from 838 to 853, its rotation pass 19 us slower; on an H200,
-// with the force pair's loads ahead for every particle, the fluid step from 600 to 603 us and the
-// deformable one from 818 to 830; results/performance.md.)
 struct PairDistance {
   float r;        // [m]
   float inverse;  // 1 / r [1/m], 0 for coincident particles

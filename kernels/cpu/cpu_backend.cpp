@@ -65,9 +65,9 @@ NeighbourLists CpuBackend::neighbour_lists() {
 // The neighbours phase: the particles copied into the cell order of the last rebuild, whose lists
 // are kept until some particle has moved past the trigger (list_skin.hpp); then the grid is
 // rebuilt and the lists recorded again. The density pass copies each list's entries within h for
-// the force pass (density_sum_keeping_within): the force pair's branch on h, which the host
-// mispredicts for about one entry in four of a list with a skin, made the 5k fluid block's step
-// 1.4x as long over the recorded lists themselves on the 2-core CI machine.
+// the force pass (density_sum_keeping_within), so that the force pair's branch on h, which the
+// host mispredicts for about one entry in four of a list with a skin, does not run over the
+// recorded lists themselves.
 void CpuBackend::update_neighbour_lists() {
   if (rebuild_requested_ || lists_expired()) build_grid();
 }

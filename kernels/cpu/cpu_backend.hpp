@@ -6,7 +6,7 @@
 #include "../common/float_scene.hpp"
 #include "../common/neighbour_list.hpp"
 #include "particle_partition.hpp"
-#include "sim/backend.hpp"
+#include "backend/backend.hpp"
 
 #include <array>
 #include <cstdint>

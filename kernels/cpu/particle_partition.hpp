@@ -3,10 +3,9 @@
 // thread, each range holding about the same share of an estimated cost. OpenMP's static schedule
 // gives every thread as many particles, but a particle's sums cost in proportion to its list, and a
 // boundary particle takes no force sum: in cell order the layers of a container above its fluid are
-// walls only, so the thread given them idled through part of the force pass (on the 2-core CI
-// machine the 30k fluid block's force pass ran 1.5-1.6x faster on two threads than on one, its
-// density pass 1.85x). Ranges keep each thread's particles, and their neighbours, together in
-// memory, which a dynamic schedule's interleaved chunks did not (results/performance.md).
+// walls only, and the thread given them would idle through part of the force pass. Ranges keep
+// each thread's particles, and their neighbours, together in memory, which a dynamic schedule's
+// interleaved chunks do not.
 #include <omp.h>
 
 #include <cstdint>

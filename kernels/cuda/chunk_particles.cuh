@@ -15,7 +15,7 @@ static_assert(kChunk % kBlock == 0, "a chunk is a whole number of strides");
 // kChunk / kBlock trips are unrolled without a bound test, a shorter chunk (a body's last, or a
 // rigid body's, rigid_chunk_size) as far with one, so the compiler can issue a thread's loads
 // together instead of one round trip to memory after another: with one block per chunk a small
-// body has few blocks, and those round trips were the whole cost. A visit that stores to global
+// body has few blocks, and those round trips would be the whole cost. A visit that stores to global
 // memory keeps its loads from moving ahead (the results do not depend on it, only the speed).
 template <class Visit>
 __device__ void for_each_chunk_particle(std::uint32_t first, std::uint32_t count, Visit&& visit) {

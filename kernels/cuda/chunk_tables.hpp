@@ -18,8 +18,8 @@ inline constexpr std::uint32_t kChunk = 4096;
 // A movable rigid body's chunks (rigid_bodies.cu) hold a whole number of strides of a block's
 // kBlock threads: as many as leave the body at least kRigidChunksPerBody chunks (one stride when
 // it is smaller), at most kChunk particles. A 30k-particle body is summed by 118 blocks, a thread
-// per particle, where 8 chunks of kChunk took each thread through 16 particles in turn; a
-// 1M-particle body keeps chunks of kChunk, whose fewer partial wrenches are added faster.
+// per particle, rather than by 8 chunks of kChunk that take each thread through 16 particles in
+// turn; a 1M-particle body keeps chunks of kChunk, whose fewer partial wrenches add up faster.
 inline constexpr std::uint32_t kRigidChunksPerBody = 128;
 
 inline std::uint32_t rigid_chunk_size(std::uint32_t particles) {

@@ -1,7 +1,7 @@
 // The `cuda` backend: the step's kernels (neighbour_grid, step_kernels, rigid_bodies) captured in
 // a CUDA graph and replayed each step (a second graph with events between the phases for when
-// phase timing is asked for); the device arrays
-// (device_state) and what the logs and the haptic loop read back (body_readback). A scene small
+// phase timing is asked for); the device arrays (device_state) and what the logs and the haptic
+// loop read back (body_readback). A scene small
 // enough for teams of lanes keeps neighbour lists with a skin and rebuilds the grid only when they
 // expire (list_skin.hpp), a decision the grid kernel takes on the device.
 #include "cuda_backend.hpp"
@@ -83,7 +83,7 @@ class CudaBackend final : public Backend {
   cudaStream_t stream_ = nullptr;
   std::array<cudaEvent_t, kPhaseCount + 1> events_{};  // events_[p], events_[p + 1] enclose phase p
   StepGraph plain_step_;  // the step alone
-  StepGraph timed_step_;  // the step with the phase events: ~10 us more on an H100 (Backend::set_phase_timing)
+  StepGraph timed_step_;  // the step with the phase events, which lengthen it (Backend::set_phase_timing)
   bool phase_timing_ = false;
   bool last_step_timed_ = false;
   double time_ = 0.0;

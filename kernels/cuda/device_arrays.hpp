@@ -79,13 +79,12 @@ struct DeviceArrays {
 // (common/neighbour_list.hpp). A particle has about 30 neighbours at h = 2 dx, 40 within h + skin,
 // split over its lanes, not evenly; a list holds capacity - 1 of them, and a lane with more walks
 // its share of the cells again and has the next step rebuild the grid. The capacities are twice
-// the longest lists of a lattice 13 % denser than at rest (neighbour_list_test): at those longest
-// lists plus one (13, 20, 28 entries), some list of the 30k-particle fluid block overflowed at
-// nearly every rebuild on an H100, so the grid was rebuilt at 100 % of the steps; at twice them, at
-// 7 % (results/performance.md). One lane per particle (large scenes) keeps no lists: at 1M
-// particles their 4-byte entries would more than double the fluid's 113 bytes per particle, and
-// its warps load each candidate once for all 32 lanes, neighbouring particles walking the same
-// cells, where lists would scatter those loads.
+// the longest lists of a lattice 13 % denser than at rest (neighbour_list_test): with only one
+// entry to spare, some list of a block of tens of thousands of particles overflows at nearly
+// every rebuild, and the grid is rebuilt every step. One lane per particle (large scenes) keeps
+// no lists: at 1M particles their 4-byte entries would more than double the fluid's 113 bytes per
+// particle, and its warps load each candidate once for all 32 lanes, neighbouring particles
+// walking the same cells, where lists would scatter those loads.
 constexpr std::uint32_t team_list_capacity(unsigned lanes) {
   return lanes >= 8 ? 26 : lanes == 4 ? 40 : lanes == 2 ? 56 : 0;
 }
@@ -93,8 +92,7 @@ inline std::size_t team_list_count(std::size_t particles, unsigned lanes) { retu
 
 // Calls visit(name, array, contents) for every array of a scene, contents being CopyOf<T>,
 // Filled<T> or Uninitialised. `grid_blocks`: blocks of the grid kernel (grid_kernel_blocks, which
-// needs the CUDA runtime); `team_lanes`: lanes per particle of the
-// neighbour sums (choose_team_lanes).
+// needs the CUDA runtime); `team_lanes`: lanes per particle of the neighbour sums (choose_team_lanes).
 template <template <class> class Array, class Visit>
 void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, const ChunkTables& chunks,
                            std::size_t grid_blocks, unsigned team_lanes, Visit&& visit) {

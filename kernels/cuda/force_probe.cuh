@@ -2,7 +2,7 @@
 // The force probe: the pressure and viscosity sums of every particle written out instead of
 // integrated, so tests and validation compare backends force by force (Backend::evaluate_forces).
 #include "device_state.cuh"
-#include "sim/backend.hpp"
+#include "backend/backend.hpp"
 
 namespace mssph::kernels {
 

@@ -125,14 +125,12 @@ __device__ bool lists_expired(const GridArrays& a, const ListSkin& skin, cg::gri
 //    in the cell's sorted order, so its place in cell order (sorted_id); the first of each cell
 //    also notes where its upper half begins (CellRanges::cell_middle) and whether all of the
 //    cell's particles share its body (CellRanges::cell_body);
-// 5. each place in cell order copies its particle there: the writes in order, the reads gathered.
-//    (Copied by each particle to its place instead, the writes scatter, and a lattice's particle
-//    and its next along x, whose 16-byte entries shared a 32-byte sector when adjacent, land in the
-//    two halves of their cell: on an H100 that took the 1M blocks' grid 30-42 us longer than
-//    whole cells did; results/performance.md.)
+// 5. each place in cell order copies its particle there: the writes in order, the reads gathered
+//    (each particle copying itself to its place would scatter the writes, and a lattice's
+//    particle and its next along x, whose 16-byte entries share a 32-byte sector, land in the two
+//    halves of their cell).
 // With lists (`check`), the kernel first checks them (lists_expired) and, while they hold, ends
-// there: one launch per step. (The check as its own kernel followed by a conditional graph node
-// around the rebuild's five kernels took 6.9 us more per step on an H100; results/performance.md.)
+// there: one launch per step, with no separate check kernel or conditional graph node.
 // A rebuild with lists also records where each particle stands, marks the step as one whose
 // density pass records the lists, and takes back the request that caused it.
 __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check, ListSkin skin) {

@@ -63,8 +63,8 @@ __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBod
 }
 
 // A block per stride of kBlock particles of a chunk (blockIdx.y), a thread per particle: its
-// particles follow the body. (One block per chunk left a 30k-particle body's chunks of 4096
-// particles 8 blocks, each thread 16 particles one after another.)
+// particles follow the body. A small body's few chunks thus spread over many blocks, not over a
+// few threads that each place many particles one after another.
 __global__ void rigid_place_kernel(const RigidChunk* chunks, const RigidBody* bodies, CanonicalState state,
                                    const Vec4* rest_offset) {
   __shared__ RigidBody body;

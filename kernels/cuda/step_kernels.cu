@@ -94,39 +94,23 @@ __global__ void elastic_force_kernel(DeformableView view) {
 
 // Threads per block of the density and force kernels: half of kBlock. A block holds its share of
 // the multiprocessor until its slowest warp is done, and a one-lane walk's length varies from
-// warp to warp, so smaller blocks give their share back sooner (the register caps below, per
-// thread, stay as they were). On an H100, against blocks of kBlock, the 1M fluid, rigid,
-// deformable and mixed steps took 704, 369, 854 and 817 us against 725, 404, 889 and 841, their
-// force passes 386, 113, 121 and 257 us against 405, 140, 152 and 287; the 30k fluid block 37.6
-// against 38.4 us. Blocks of 64 or 96 gave the rigid and deformable 1M steps 3-5 us and cost the
-// mixed one 5-7, the fluid's the same (results/performance.md).
+// warp to warp, so smaller blocks give their share back sooner (the register caps below count
+// threads per multiprocessor, whatever the block size).
 inline constexpr int kSumBlock = 128;
 
 // Threads of the density kernel that must fit on a multiprocessor at once, which caps its
-// registers as for the force kernel (kForceThreadsPerMultiprocessor). One lane's walk over split
-// cells (CellRanges::cell_middle) compiled to 41 registers, so 1280 threads; held to 1536 (40
-// registers, a few bytes spilled), because on an H100 the 1M rigid and deformable blocks' density
-// passes, most of whose particles only check their rows, took 23 us longer at 1280
-// (results/performance.md). With the warp's shared cell checks (cells_left_out_by_warp) it
-// compiles to 48 unbound, 40 and 12 bytes spilled at 1536; at 1280 (48, no spills) the 1M rigid,
-// deformable and mixed steps took 8-10 us longer, the fluid's the same; at 2048 (32, 20 bytes
-// spilled) the fluid's density pass took 10 us longer, the rigid and deformable steps 2-4 us less.
-// Teams (2048 threads, 32 registers) compile to that anyway; under 1536 they took 36. With the
-// walk by segments that takes near notes (walks_by_segments) one lane compiles to 48 registers and
-// 12 bytes spilled at 1280; on an H200 the 1M fluid step took 503 us at 1280 against 516 at 1536
-// and 506 at 1024, the rigid and deformable steps 341 and 812 us at 1280 as at 1536
-// (results/performance.md).
+// registers as for the force kernel (kForceThreadsPerMultiprocessor). One lane's walk (split
+// cells, the warp's shared cell checks, the walk by segments) gets 48 registers at 1280, a few
+// bytes spilled: a lower cap spills more of the walk, a higher one leaves fewer warps to hide its
+// loads. Teams compile to 32 registers, which 2048 threads allow.
 constexpr int density_threads_per_multiprocessor(unsigned lanes) { return lanes == 1 ? 1280 : 2048; }
 
 // Whether particle s's one-lane density walk goes a segment at a time (density_sum_noting_near):
 // a fluid particle's, which notes its near candidates when the pass has notes, and a boundary
 // particle's whose warp holds one, so that the warp's lanes walk together; the walk is the plain
-// one's, candidate for candidate, so either gives the same bits. On an H200 the 1M fluid step took
-// 529 us with every boundary particle walking by segments against 559 with none (which kept the
-// warps near the walls apart), 575 without notes. Boundary particles whose warp holds no fluid one
-// (a container's walls beside a rigid or deformable block) have nothing to note and walk the plain
-// way; against every boundary particle by segments that measured the same (1M fluid 502.6 against
-// 502.7 us, rigid 340 against 341; results/performance.md).
+// one's, candidate for candidate, so either gives the same bits. Boundary particles whose warp
+// holds no fluid one (a container's walls beside a rigid or deformable block) have nothing to note
+// and walk the plain way.
 __device__ bool walks_by_segments(const SortedView& view, std::uint32_t s, const NearNotes& notes) {
   if (!notes.taken()) return false;
   const BodyParameters& body = view.bodies[body_of(view.position[s])];
@@ -178,14 +162,9 @@ __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(
 // Threads of the force kernel that must fit on a multiprocessor at once, which caps its registers
 // at 65536 / threads, rounded down to a multiple of 8. One lane per particle (large scenes) holds
 // its walk's segments in shared memory (SharedHeldSegments, 96 bytes a thread), which the
-// multiprocessor takes from its L1: at 1536 threads (40 registers, spilling) the 1M fluid block's
-// L1 hit rate fell from 85 % to 61 % and its force pass took 540 us against 519 before the
-// segments were held; at 1280 (48 registers) 489 us, at 1024 (64, no spills) 428 us, the 1M fluid
-// step 850 -> 760 us on an H100 (rigid 412 -> 419, deformable 888 -> 896, mixed 876 -> 858;
-// results/performance.md). In blocks of 128, at 1152 (56 registers, 4 bytes spilled) the 1M
-// fluid force pass took 415 us against 386, the rigid one 132 against 113. Teams of lanes (small
-// scenes) are held to 1024 threads, 64 registers, which is what they compile to anyway (62 since
-// 0784025, 63 before); at 1280, the 30k and 100k blocks were no faster.
+// multiprocessor takes from its L1: at 1024 threads the walk has 64 registers and no spills, and
+// L1 keeps room for the candidates' loads; more threads spill registers into a smaller L1. Teams
+// of lanes (small scenes) compile to 64 registers anyway.
 inline constexpr int kForceThreadsPerMultiprocessor = 1024;
 
 // The segments a one-lane force walk holds (HeldSegments) in the block's shared memory, a column
@@ -276,9 +255,7 @@ unsigned most_lanes_within(std::size_t particles, std::size_t threads) {
 // scene then has ~8x the threads in flight; a scene that fills the GPU on its own keeps one lane
 // per particle, which wastes no shuffles. Between them, up to four waves of resident threads,
 // teams of 2 lanes: with them come the lists (list_skin.hpp), whose skipped grid walks pay for the
-// second lane. On an H100 the 30k fluid block (46k particles) steps in 43.0 us with teams of 4
-// against 44.8 with 8 (two waves, the rule before), and 47.5 with 2; the 100k block in 88.2
-// against 95.3 (results/performance.md).
+// second lane.
 unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads) {
   const unsigned lanes = most_lanes_within(particles, resident_threads);
   return lanes == 1 && particles * 2 <= 4 * resident_threads ? 2 : lanes;
@@ -286,9 +263,7 @@ unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads) 
 
 // The bond passes' ~60 registers let half as many threads reside as the GPU could hold, and since
 // their teams hand the serial rest of step 1 to one thread per particle, more lanes pay only while
-// they fit one wave of those: on an H100 the 30k deformable block steps in 77.1 us with 4 lanes
-// against 82.5 with 8, the 1 cm deformable drop (50k deformable particles) runs fastest with 2
-// (results/performance.md).
+// they fit one wave of those.
 unsigned choose_bond_team_lanes(std::size_t deformables, std::size_t resident_threads) {
   return most_lanes_within(deformables, resident_threads / 2);
 }

@@ -9,7 +9,7 @@
 namespace mssph::kernels {
 
 // Lanes per particle of the density and force sums: the most (up to 8) that keep
-// particles * lanes within two waves of resident threads, and 2 while that stays within four.
+// particles * lanes within one wave of resident threads, and 2 while that stays within four.
 unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads);
 // Lanes per deformable particle of the bond sums: the most (up to 8) that keep
 // deformables * lanes within one wave of the bond passes' resident threads, half the GPU's.

@@ -14,9 +14,7 @@ namespace mssph::kernels {
 // whose particles lie in one cell and leave out one body (a team's lanes, and the particles of a
 // cell, ~8 at the default spacing) each check every n-th of the 27 cells' entries, n of them, and
 // join their masks, where each would check all 27 on its own. Inside a large rigid or deformable
-// block that check is all a particle's density walk does: on an H100 the 1M rigid and deformable
-// blocks' density passes took 139 and 138 us against 167 and 165 with a check per lane, their
-// steps 6 % and 3 % less (results/performance.md).
+// block that check is all a particle's density walk does.
 __device__ inline std::uint32_t cells_left_out_by_warp(const SortedView& v, std::uint32_t s) {
   const Vec4 p = v.position[s];
   const std::uint32_t body = body_left_out(v, p);

@@ -3,8 +3,8 @@
 
 Each metric is a plain function of NumPy arrays (what the log stores) returning a float, so that
 sweeps (scripts/sweep/summarize.py), figures and users' notebooks compute the same numbers. The
-thin loader `read_log` takes what the metrics need from a run log (layout: README.md, "The run
-log"); `compute_metrics` applies them.
+thin loader `read_log` takes what the metrics need from a run log (layout: docs/run-log.md);
+`compute_metrics` applies them.
 
 The metrics, all in SI units:
 

@@ -1,13 +1,13 @@
 // `mssph bench`: the benchmark suite (benchmarks/benchmark_suite.hpp) run in-process through
 // Google Benchmark, writing its JSON with the machine context; and `mssph bench compare`: the
 // significance-gated comparison of two such files (src/bench/).
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "bench/bench_comparison.hpp"
 #include "bench/comparison_format.hpp"
 #include "benchmark_suite.hpp"
 #include "commands.hpp"
 #include "guarded.hpp"
-#include "output_path.hpp"
+#include "run/output_path.hpp"
 #include "step_delay.hpp"
 #include "util/errors.hpp"
 
@@ -180,7 +180,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--backend", args->backends,
                   "Backend to time (repeatable): cpu, cuda, reference or auto. Default: the suite on cpu and, "
                   "with a GPU, cuda; a scene on auto. This build has: " + built)
-      ->check(CLI::IsMember({"reference", "cpu", "cuda", "auto"}));
+      ->check(CLI::IsMember(backend_choices()));
   cmd->add_option("--filter", args->filter, "Only benchmarks whose name matches this regular expression, "
                                             "e.g. 'step/cpu/fluid/2000' or 'step/cuda'");
   cmd->add_option("--repetitions", args->repetitions,

@@ -13,6 +13,6 @@ void add_info_command(CLI::App& app, int& exit_code);
 void add_figure_command(CLI::App& app, int& exit_code, const std::string& command_line);
 void add_bench_command(CLI::App& app, int& exit_code);
 void add_sweep_command(CLI::App& app, int& exit_code);
-void add_validate_command(CLI::App& app, int& exit_code);  // validation/framework/validate_command.cpp
+void add_validate_command(CLI::App& app, int& exit_code);  // validate_command.cpp
 
 }  // namespace mssph::cli

@@ -1,13 +1,13 @@
 // `mssph figure 2`: step time against particle count for each medium (Cirio et al. 2011,
 // Figure 2), timed on one backend and written to DIR/figure2.h5; scripts/figures/figure2.py draws
 // it and prints the fitted slopes next to the paper's.
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "figure_command.hpp"
 #include "io/run_log.hpp"
-#include "python_script.hpp"
-#include "scene/block_scene.hpp"
-#include "scene/scene_builder.hpp"
-#include "sim/step_timing.hpp"
+#include "run/python_script.hpp"
+#include "model/block_scene.hpp"
+#include "model/scene_builder.hpp"
+#include "run/step_timing.hpp"
 #include "util/build_info.hpp"
 #include "util/errors.hpp"
 #include "util/host_info.hpp"

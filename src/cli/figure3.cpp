@@ -4,8 +4,8 @@
 // on one graph and checks their shapes against physics.
 #include "config/scene_loader.hpp"
 #include "figure_command.hpp"
-#include "python_script.hpp"
-#include "scene_run.hpp"
+#include "run/python_script.hpp"
+#include "run/scene_run.hpp"
 #include "util/errors.hpp"
 
 #include <cstdio>

@@ -1,5 +1,5 @@
 // Registers `mssph figure 2`, `mssph figure 3` and `mssph figure tss` on the command line.
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "commands.hpp"
 #include "figure_command.hpp"
 #include "guarded.hpp"
@@ -17,7 +17,7 @@ void add_figure2(CLI::App& figure, int& exit_code, const std::string& command_li
   auto o = std::make_shared<Figure2Options>();
   CLI::App* cmd = figure.add_subcommand("2", "Paper Figure 2: time per step against particle count, per medium");
   cmd->add_option("--backend", o->backend, kBackendHelp)
-      ->check(CLI::IsMember({"reference", "cpu", "cuda", "auto"}))
+      ->check(CLI::IsMember(backend_choices()))
       ->capture_default_str();
   cmd->add_option("--media", o->media, "Media to time, comma-separated")
       ->delimiter(',')
@@ -59,7 +59,7 @@ void add_figure3(CLI::App& figure, int& exit_code) {
   o->configs = kShippedConfigs;
   CLI::App* cmd = figure.add_subcommand("3", "Paper Figure 3: force on a sphere dropped on rigid, deformable, fluid");
   cmd->add_option("--backend", o->backend, kBackendHelp)
-      ->check(CLI::IsMember({"reference", "cpu", "cuda", "auto"}))
+      ->check(CLI::IsMember(backend_choices()))
       ->capture_default_str();
   cmd->add_option("--resolution", o->resolution,
                   "coarse (4 cm spacing: minutes on 2 CPU cores), paper (2 cm, the shipped scenes), fine (1 cm, GPU)")
@@ -91,7 +91,7 @@ void add_figure_tss(CLI::App& figure, int& exit_code) {
   CLI::App* cmd = figure.add_subcommand(
       "tss", "One world, three states: tap a bone, squeeze an organ, stir blood, with one proxy");
   cmd->add_option("--backend", o->backend, kBackendHelp)
-      ->check(CLI::IsMember({"reference", "cpu", "cuda", "auto"}))
+      ->check(CLI::IsMember(backend_choices()))
       ->capture_default_str();
   cmd->add_option("--scene", o->scene, "The scene")->capture_default_str();
   cmd->add_option("--out", o->out, "Output folder")->capture_default_str();

@@ -2,8 +2,8 @@
 // proxy driven by a scripted hand taps a rigid bone, squeezes a deformable organ and stirs fluid
 // blood in a basin. An ordinary run; scripts/figures/tss.py draws and checks it from the log.
 #include "figure_command.hpp"
-#include "python_script.hpp"
-#include "scene_run.hpp"
+#include "run/python_script.hpp"
+#include "run/scene_run.hpp"
 #include "util/errors.hpp"
 
 #include <filesystem>

@@ -1,11 +1,8 @@
 // `mssph info`: what this binary is and what it can run on.
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "commands.hpp"
 #include "util/build_info.hpp"
 #include "util/host_info.hpp"
-#ifdef MSSPH_HAVE_CUDA_BACKEND
-#include "cuda/cuda_backend.hpp"
-#endif
 
 #include <iostream>
 
@@ -15,17 +12,17 @@ namespace {
 
 // One line per visible CUDA device, or why there are none.
 void print_gpus() {
-#ifdef MSSPH_HAVE_CUDA_BACKEND
-  const std::vector<kernels::CudaDeviceInfo> devices = kernels::cuda_devices();
+  if (!build_info().cuda_backend) {
+    std::cout << "  GPUs:         not used (built without the CUDA backend)\n";
+    return;
+  }
+  const std::vector<GpuDevice> devices = gpu_devices();
   if (devices.empty()) std::cout << "  GPUs:         none visible (no CUDA driver or device)\n";
-  for (const kernels::CudaDeviceInfo& d : devices) {
+  for (const GpuDevice& d : devices) {
     std::cout << "  GPU " << d.index << ":        " << d.name << ", compute capability " << d.compute_major << "."
               << d.compute_minor << ", " << d.multiprocessors << " multiprocessors, "
               << d.total_memory / (1024 * 1024) << " MiB\n";
   }
-#else
-  std::cout << "  GPUs:         not used (built without the CUDA backend)\n";
-#endif
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 // `mssph run SCENE.json`: simulate a scene and log it to HDF5.
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "commands.hpp"
 #include "guarded.hpp"
-#include "output_path.hpp"
-#include "scene_run.hpp"
+#include "run/output_path.hpp"
+#include "run/scene_run.hpp"
 #include "util/errors.hpp"
 
 #include <iostream>
@@ -27,7 +27,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--backend", args->backend,
                   "reference (float64), cpu (float32 kernels on the host), cuda (GPU), or auto (the fastest "
                   "available); this build has: " + built)
-      ->check(CLI::IsMember({"reference", "cpu", "cuda", "auto"}))
+      ->check(CLI::IsMember(backend_choices()))
       ->capture_default_str();
   cmd->add_option("--out", args->output,
                    "Output HDF5 file (default " + default_output_path("<scene>", "<backend>") +

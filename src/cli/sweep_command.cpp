@@ -1,9 +1,10 @@
 // `mssph sweep SWEEP.json`: run every point of a parameter sweep as an ordinary `mssph run`,
 // locally (--jobs, --gpus), as one shard of several (--shard, Slurm arrays) or through Slurm
 // (--emit-slurm); `mssph sweep merge DIR` and `mssph sweep plot DIR` summarise and plot.
+#include "backend_factory/backend_factory.hpp"
 #include "commands.hpp"
 #include "guarded.hpp"
-#include "python_script.hpp"
+#include "run/python_script.hpp"
 #include "sweep/point_runner.hpp"
 #include "sweep/point_status.hpp"
 #include "sweep/shard.hpp"
@@ -314,7 +315,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", args->out, "Output folder (default results/sweeps/<sweep name>): sweep.json, points/, summary.h5, summary.csv");
   cmd->add_option("--backend", args->backend, "Backend of every point, as for mssph run")
-      ->check(CLI::IsMember({"reference", "cpu", "cuda", "auto"}))
+      ->check(CLI::IsMember(backend_choices()))
       ->capture_default_str();
   cmd->add_option("--set", args->overrides,
                   "Override a scene value at every point, as for mssph run (e.g. simulation/particle_spacing=0.04 "

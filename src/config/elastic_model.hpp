@@ -25,7 +25,7 @@ const char* to_string(ElasticModel model);
 inline constexpr double kNeoHookeanBarrierEnd = 0.1;
 
 // The smallest volume ratio J = det F for which a model is what it claims to be; particles below
-// it are counted and warned about (src/sim/simulation_run.cpp).
+// it are counted and warned about (src/run/simulation_run.cpp).
 //   stvk: 1/sqrt(3). Under confined (uniaxial-strain) compression F = diag(s, 1, 1), the one a
 //     block squeezed against the ground sees under a load, P_xx = (lambda + 2 mu) s (s^2 - 1) / 2
 //     has dP/ds = 0 at s = 1/sqrt(3): beyond it the material pushes back less the more it is

@@ -1,5 +1,5 @@
 #pragma once
-// The haptic device of a scene (paper section 4.1, DESIGN.md section 4): every key of the scene's
+// The haptic device of a scene (paper section 4.1, docs/model.md): every key of the scene's
 // "proxy" section besides "body", typed and validated, SI units. Keys, units and defaults are
 // documented in configs/README.md ("Proxy and haptic device").
 #include "config/device_recording.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Start-up check of the haptic gains against the explicit stability bound of a mass-spring-
-// damper integrated by semi-implicit Euler at step h (DESIGN.md section 4):
+// damper integrated by semi-implicit Euler at step h (docs/model.md):
 //   K h^2 + 2 B h < 4 m   (translation),   Kr h^2 + 2 Br h < 4 I_min   (rotation).
 // For the proxy, h is the longer of dt and the haptic period (the coupling wrench is held from
 // tick to tick), m its mass and I_min its smallest principal inertia. For a handle the hand or

@@ -1,5 +1,5 @@
 #pragma once
-// The handle of a simulated Virtuose 6D (DESIGN.md section 4): what its motors can render, and
+// The handle of a simulated Virtuose 6D (docs/model.md): what its motors can render, and
 // its motion, in the device frame, under the motors, the hand and its own mass and damping.
 #include "config/haptics_config.hpp"
 #include "util/pose.hpp"

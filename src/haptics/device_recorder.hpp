@@ -3,7 +3,7 @@
 // can replay (`mssph run --record-device FILE`, then trajectory source "recorded").
 #include "config/device_recording.hpp"
 #include "haptics/haptic_sample.hpp"
-#include "sim/state_arrays.hpp"
+#include "backend/state_arrays.hpp"
 #include "util/pose_packing.hpp"
 
 namespace mssph {

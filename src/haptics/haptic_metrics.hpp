@@ -2,7 +2,7 @@
 // Run-level figures of the haptic loop, accumulated tick by tick: what the summary attributes of
 // /haptics report.
 #include "haptics/haptic_sample.hpp"
-#include "sim/state_arrays.hpp"
+#include "backend/state_arrays.hpp"
 
 #include <cstddef>
 

@@ -7,7 +7,7 @@
 #include "haptics/haptic_metrics.hpp"
 #include "haptics/haptics_session.hpp"
 #include "io/run_log.hpp"
-#include "scene/particle_setup.hpp"
+#include "model/particle_setup.hpp"
 
 #include <string>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// The haptic loop of a run (paper section 4.1, DESIGN.md section 4): a device handle, moved by
+// The haptic loop of a run (paper section 4.1, docs/model.md): a device handle, moved by
 // the trajectory source, coupled to the proxy through the virtual coupling at the haptic rate,
 // while the simulation advances at its own step.
 //
@@ -18,7 +18,7 @@
 #include "haptics/pose_track.hpp"
 #include "haptics/proxy_predictor.hpp"
 #include "haptics/workspace_transform.hpp"
-#include "sim/state_arrays.hpp"
+#include "backend/state_arrays.hpp"
 
 #include <cstddef>
 #include <optional>

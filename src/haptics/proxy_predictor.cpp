@@ -1,6 +1,6 @@
 #include "haptics/proxy_predictor.hpp"
 
-#include "sim/backend.hpp"
+#include "backend/backend.hpp"
 
 namespace mssph {
 

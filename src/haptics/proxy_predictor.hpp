@@ -1,6 +1,6 @@
 #pragma once
 // How the coupling sees the proxy at a haptic tick that falls between two simulation states
-// (DESIGN.md section 4, multi-rate):
+// (docs/model.md, multi-rate):
 //   hold:       the latest simulated state, unchanged;
 //   linearised: a local model about the latest state: the proxy moves as a free rigid body under
 //               its SPH interaction wrench frozen at that state, gravity, and the coupling wrench

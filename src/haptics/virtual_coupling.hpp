@@ -1,5 +1,5 @@
 #pragma once
-// The 6DoF spring-damper of a virtual coupling (Colgate, Stanley and Brown 1995; DESIGN.md
+// The 6DoF spring-damper of a virtual coupling (Colgate, Stanley and Brown 1995; docs/model.md
 // section 4), pulling a follower towards a target:
 //   F   = Kt (p_d - p) + Bt (v_d - v)
 //   q_e = q_d conj(q), negated when its w < 0 so that the error rotation is the short way (<= pi)

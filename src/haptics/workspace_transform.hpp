@@ -1,5 +1,5 @@
 #pragma once
-// The map between the device's frame and the scene (DESIGN.md section 4): a similarity
+// The map between the device's frame and the scene (docs/model.md): a similarity
 //   p_scene = offset + s R p_device,  q_scene = R q_device,
 //   v_scene = s R v_device,           w_scene = R w_device,
 // and wrenches back to the device frame by R^T (the rendered wrench is scaled separately).

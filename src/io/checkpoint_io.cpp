@@ -119,7 +119,7 @@ void write_checkpoint(hid_t file, const Checkpoint& checkpoint) {
         [&](const auto& v) {
           write_array(file, slot + "/state/" + name, v, "SI, per quantity",
                       "checkpoint array " + name + ": part of the run's state at the slot's step, as the code that "
-                      "saved it laid it out (src/sim/state_arrays.hpp); mssph run --restart restores it bit for bit");
+                      "saved it laid it out (src/backend/state_arrays.hpp); mssph run --restart restores it bit for bit");
         },
         values);
   }

@@ -1,11 +1,11 @@
 #pragma once
 // Checkpoints inside a run log (`mssph run --checkpoint-interval`, `--restart`): two slots,
 // /checkpoint/a and /checkpoint/b, written in turn, so that a run killed while writing one still
-// has the other. A slot holds a whole state (sim/state_arrays.hpp) under state/, one dataset of
+// has the other. A slot holds a whole state (backend/state_arrays.hpp) under state/, one dataset of
 // its own type per array, and the row count of every time series at that step (series_rows,
 // whose `series` attribute names the datasets, one per line). Its `step` attribute is -1 while it
 // is being written and the checkpoint's step once it is whole and flushed.
-#include "sim/state_arrays.hpp"
+#include "backend/state_arrays.hpp"
 #include "util/hdf5_handle.hpp"
 
 #include <map>

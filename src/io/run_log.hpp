@@ -1,5 +1,5 @@
 #pragma once
-// One HDF5 file per run (DESIGN.md section 5). Root attributes say what ran and how it ended
+// One HDF5 file per run (docs/run-log.md). Root attributes say what ran and how it ended
 // (`status`: "running", then "completed", "failed: <reason>" or "interrupted: <reason>"); every
 // dataset has `units` and `description` attributes. Optional particle snapshots get an XDMF
 // sidecar (<file>.xdmf) that ParaView opens.

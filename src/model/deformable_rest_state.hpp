@@ -5,7 +5,7 @@
 // both precisions: the reference directly, the float backends converted (kernels/common/float_scene).
 #include "model/material_law.hpp"
 #include "model/neighbour_search.hpp"
-#include "scene/particle_setup.hpp"
+#include "particle_setup.hpp"
 
 #include <Eigen/Core>
 
@@ -55,7 +55,7 @@ struct DeformableRestState {
 // interface pressure is the gradient of one potential, and the body's elastic compression, whose
 // restoring force is elasticity's, cannot push on its neighbours a second time through pressure
 // (with the own body's neighbours counted live it did, through a force that was no potential's
-// gradient and fed energy into a body pressed against it: results/squeeze-chatter.md). The same
+// gradient and fed energy into a body pressed against it: results/decisions/005-contact-layer-density.md). The same
 // spirit as the frozen number density of boundary particles in Akinci et al. 2012 ("Versatile
 // rigid-fluid coupling for incompressible SPH"). Rigid and boundary bodies need no special case:
 // their own neighbourhoods never change, so their live own-body sum is already their rest share.

@@ -1,6 +1,6 @@
 #include "sweep/point_runner.hpp"
 
-#include "sim/interrupt.hpp"
+#include "run/interrupt.hpp"
 
 #include <fcntl.h>
 #include <sys/prctl.h>

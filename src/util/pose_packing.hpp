@@ -1,6 +1,6 @@
 #pragma once
 // Poses, twists and wrenches packed into one flat array of doubles and read back in the same
-// order: how checkpoints store the haptic loop's state (sim/state_arrays.hpp).
+// order: how checkpoints store the haptic loop's state (backend/state_arrays.hpp).
 #include "util/pose.hpp"
 
 #include <cstddef>

@@ -94,7 +94,7 @@ TEST_P(BackendAgreement, ProxyStateIsTheSameReadAloneOrWithTheLoggedBodies) {
   EXPECT_GT(backend->rigid_body_state(sphere).interaction_force.norm(), 0.0) << "the sphere must be in contact";
 }
 
-INSTANTIATE_TEST_SUITE_P(FloatBackends, BackendAgreement, ::testing::Values("cpu", "cuda"),
+INSTANTIATE_TEST_SUITE_P(FloatBackends, BackendAgreement, ::testing::ValuesIn(float_backend_names()),
                          [](const auto& test_info) { return test_info.param; });
 
 }  // namespace

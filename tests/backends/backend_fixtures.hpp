@@ -1,8 +1,8 @@
 #pragma once
 // Running a float32 backend (cpu, cuda) beside the reference on the same scene.
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "config/scene_loader.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 #include "framework/backends.hpp"
 #include "kernels/sphere_drops/sphere_drops.hpp"
 
@@ -14,7 +14,7 @@
 namespace mssph::testing {
 
 // Whether the named backend can run here; the cuda backend needs both the build and a GPU.
-inline bool backend_runs_here(const std::string& name) { return validation::why_backend_cannot_run(name).empty(); }
+inline bool backend_runs_here(const std::string& name) { return why_backend_cannot_run(name).empty(); }
 
 #define MSSPH_SKIP_WITHOUT(backend_name)                                                              \
   if (!mssph::testing::backend_runs_here(backend_name)) {                                           \

@@ -73,7 +73,7 @@ TEST_P(OneStepAgreement, MixedFarFromTheOrigin) {
   compare(GetParam(), validation::one_step_scene("mixed_far"));
 }
 
-INSTANTIATE_TEST_SUITE_P(FloatBackends, OneStepAgreement, ::testing::Values("cpu", "cuda"),
+INSTANTIATE_TEST_SUITE_P(FloatBackends, OneStepAgreement, ::testing::ValuesIn(float_backend_names()),
                          [](const auto& test_info) { return test_info.param; });
 
 // The scenes above are small enough for the cuda backend to give each particle a team of lanes
@@ -81,8 +81,8 @@ INSTANTIATE_TEST_SUITE_P(FloatBackends, OneStepAgreement, ::testing::Values("cpu
 // whose density and force sums walk the 27 cells every step (step_kernels.cu): the fluid and
 // mixed scenes at a 2 mm spacing (about 1.0M and 0.9M particles with their tanks), same bounds.
 // The mixed scene's jelly is evaluated at rest, not deformed: the bond passes do not walk the
-// cells, and at this spacing their float32 error nears the bound (elastic force 8.9e-5 on an H100,
-// against 7.7e-6 at the usual 2 cm). A backend with one lane per particle keeps no lists, so it
+// cells, and at this spacing their float32 error nears the bound (elastic force 8.9e-5, against
+// 7.7e-6 at the usual 2 cm). A backend with one lane per particle keeps no lists, so it
 // reports no count of grid rebuilds; on a GPU that holds so many threads that it still gives these
 // scenes teams of lanes, the test skips.
 class OneStepAgreementAtOneLanePerParticle : public ::testing::TestWithParam<std::string> {};

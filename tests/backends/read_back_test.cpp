@@ -55,7 +55,7 @@ TEST_P(ReadBack, DensitiesAreZeroBeforeTheFirstStepAndNearRestAfterIt) {
   backend->step();
   backend->synchronize();
   // A fluid block resting on a lattice at rest spacing: densities near rho0 = 1000 kg/m^3
-  // inside (the calibration puts a full lattice at rho0 exactly, DESIGN.md section 1), lower
+  // inside (the calibration puts a full lattice at rho0 exactly, docs/model.md), lower
   // only at the free surface; none zero, none far above rho0.
   const ParticleSnapshot snapshot = backend->snapshot();
   const BodySetup& block = setup.bodies[find_body(setup, "block")];
@@ -65,7 +65,7 @@ TEST_P(ReadBack, DensitiesAreZeroBeforeTheFirstStepAndNearRestAfterIt) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllBackends, ReadBack, ::testing::Values("reference", "cpu", "cuda"),
+INSTANTIATE_TEST_SUITE_P(AllBackends, ReadBack, ::testing::ValuesIn(backend_names()),
                          [](const auto& test_info) { return test_info.param; });
 
 }  // namespace

@@ -108,8 +108,8 @@ TEST_F(BenchCompare, BadInputExitsTwoAndSaysWhy) {
   }
 }
 
-// The CI gate's normalization through the binary: a machine 1.5x slower for the current file
-// (its calibration and the benchmark alike) passes normalized and fails raw; a file without the
+// The CI gate's normalization through the binary: a machine that takes 1.5 times as long for the
+// current file (its calibration and the benchmark alike) passes normalized and fails raw; a file without the
 // calibration benchmark is bad input, named.
 TEST_F(BenchCompare, NormalizedByTheCalibrationAMachineSlowdownPasses) {
   std::vector<double> slow;
@@ -130,7 +130,7 @@ TEST_F(BenchCompare, TooFewRepetitionsAreExplained) {
   const std::string a = file("a.json", benchmark_file({{"x", {100, 101, 99}}}));
   const std::string b = file("b.json", benchmark_file({{"x", {300, 301, 299}}}));
   const ProcessResult r = mssph({"bench", "compare", a, b});
-  EXPECT_EQ(r.exit_code, 0) << r.out;  // 3x slower, yet 3 repetitions cannot show it
+  EXPECT_EQ(r.exit_code, 0) << r.out;  // three times as long, yet 3 repetitions cannot show it
   expect_mentions(r.out, {"too few repetitions", "smallest p-value the test can give is 0.1"});
 }
 

@@ -90,10 +90,10 @@ TEST(BenchComparison, RefusesDifferentMachinesUnlessForced) {
   EXPECT_EQ(report.machine_differences[0].key, "mssph_cpu");
 }
 
-// A machine 1.4x slower for the current file: its calibration benchmark and an unchanged
-// benchmark take 1.4x as long, a benchmark whose code got 30 % slower 1.82x. Raw, both fail the
-// gate; normalized by the calibration, only the real slowdown does, and the calibration itself is
-// not compared.
+// A machine that takes 1.4 times as long for the current file: its calibration benchmark and an
+// unchanged benchmark take 1.4 times as long, a benchmark whose code got 30 % slower 1.82 times.
+// Raw, both fail the gate; normalized by the calibration, only the real slowdown does, and the
+// calibration itself is not compared.
 TEST(BenchComparison, NormalizingDividesOutTheMachinesSpeed) {
   const BenchmarkResults base = results("a.json", {{"calibration", kBase}, {"same_code", kBase}, {"slower_code", kBase}});
   const BenchmarkResults cur = results("b.json", {{"calibration", scaled(kBase, 1.4)},

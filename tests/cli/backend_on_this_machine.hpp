@@ -1,21 +1,12 @@
 #pragma once
 // Whether `mssph run --backend NAME` can run here: every build has the host backends; cuda needs
 // the CUDA backend built in and a device. Tests of the cuda backend skip cleanly otherwise.
-#include <string>
+#include "backend_factory/backend_factory.hpp"
 
-#ifdef MSSPH_HAVE_CUDA_BACKEND
-#include "cuda/cuda_backend.hpp"
-#endif
+#include <string>
 
 namespace mssph::test {
 
-inline bool backend_runs_here(const std::string& backend) {
-  if (backend != "cuda") return true;
-#ifdef MSSPH_HAVE_CUDA_BACKEND
-  return !kernels::cuda_devices().empty();
-#else
-  return false;
-#endif
-}
+inline bool backend_runs_here(const std::string& backend) { return why_backend_cannot_run(backend).empty(); }
 
 }  // namespace mssph::test

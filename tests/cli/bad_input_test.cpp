@@ -1,10 +1,8 @@
 // Bad input to `mssph run`: exit code 2, an error that names the file and the key or argument,
 // and nothing written (the working directory, where the default output would go, stays empty).
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "cli_fixture.hpp"
-#ifdef MSSPH_HAVE_CUDA_BACKEND
-#include "cuda/cuda_backend.hpp"
-#endif
+#include "util/build_info.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -65,7 +63,7 @@ TEST_F(BadInput, UnknownBackend) {
 TEST_F(BadInput, BackendNotBuilt) {
   const std::vector<std::string> built = available_backends();
   bool tried = false;
-  for (const std::string name : {"reference", "cpu", "cuda"}) {
+  for (const std::string& name : backend_names()) {
     if (std::find(built.begin(), built.end(), name) != built.end()) continue;
     SCOPED_TRACE(name);
     expect_rejected({"run", kTinyDrop, "--backend", name}, {"--backend " + std::string(name)});
@@ -77,12 +75,9 @@ TEST_F(BadInput, BackendNotBuilt) {
 // A build with the CUDA backend on a machine without a GPU (as CI): asking for it is bad input
 // that says what to use instead.
 TEST_F(BadInput, CudaWithoutADevice) {
-#ifdef MSSPH_HAVE_CUDA_BACKEND
-  if (!kernels::cuda_devices().empty()) GTEST_SKIP() << "a CUDA device is present";
+  if (!build_info().cuda_backend) GTEST_SKIP() << "built without the CUDA backend (BackendNotBuilt covers this build)";
+  if (!gpu_devices().empty()) GTEST_SKIP() << "a CUDA device is present";
   expect_rejected({"run", kTinyDrop, "--backend", "cuda"}, {"--backend cuda", "no CUDA device", "--backend cpu"});
-#else
-  GTEST_SKIP() << "built without the CUDA backend (BackendNotBuilt covers this build)";
-#endif
 }
 
 TEST_F(BadInput, OutIsADirectory) {

@@ -1,5 +1,5 @@
 // A blow-up names the step, the body, the particle, its position and velocity and the CFL numbers
-// (src/sim/simulation_run.cpp). tests/data/tiny_drop.json with max_speed 1e-4 m/s: the ball's
+// (src/run/simulation_run.cpp). tests/data/tiny_drop.json with max_speed 1e-4 m/s: the ball's
 // particles exceed it after the first steps of free fall.
 #include "cli_fixture.hpp"
 

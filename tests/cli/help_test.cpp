@@ -1,7 +1,7 @@
 // `mssph --help`, `mssph run --help` and `mssph info`: they work and say what the program does.
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "cli_fixture.hpp"
-#include "commands.hpp"
+#include "cli/commands.hpp"
 #include "util/build_info.hpp"
 
 namespace mssph::test {

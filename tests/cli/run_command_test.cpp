@@ -111,7 +111,7 @@ TEST_F(RunCommand, EveryDatasetHasUnitsAndADescription) {
   EXPECT_GT(datasets, 30u) << "body, haptics, timing and snapshot datasets";
 }
 
-// Phase times only when asked for (a GPU times them with events that cost ~10 us per step), with
+// Phase times only when asked for (a GPU times them with events that lengthen its steps), with
 // the phase names every backend shares and one row per step.
 TEST_F(RunCommand, PhaseTimesAreLoggedOnlyWithPhaseTiming) {
   const std::string plain = work("plain.h5");

@@ -52,7 +52,7 @@ TEST_F(RunFailure, SpeedBeyondMaxSpeedIsABlowUp) {
 TEST_F(RunFailure, AnAbsurdTimeStepIsABlowUp) {
   const std::string out = work("absurd_dt.h5");
   // A stiff contact (k = 1e5 m^2/s^2) stepped at over 100 times its acoustic bound
-  // 0.25 h / sqrt(k) = 79 us; the start-up warning says so.
+  // 0.25 h / sqrt(k) = 7.9e-5 s; the start-up warning says so.
   const ProcessResult r = mssph({"run", kTinyDrop, "--out", out, "--set", "materials/contact/pressure_stiffness=1e5",
                                  "--set", "simulation/dt=0.01", "--set", "simulation/duration=1", "--set",
                                  "output/log_interval=0", "-q"});

@@ -61,7 +61,7 @@ TEST_F(Validate, WrongExpectationFailsWithExitCode1) {
 }
 
 TEST_F(Validate, CudaWithoutAGpuIsSkippedWithTheReason) {
-  const std::string why = validation::why_backend_cannot_run("cuda");
+  const std::string why = why_backend_cannot_run("cuda");
   if (why.empty()) GTEST_SKIP() << "this machine runs cuda: nothing is skipped";
   const ProcessResult r =
       mssph({"validate", "--backend", "cuda", "--case", "one_step", "--case", "hydrostatic", "--out", "report"});

@@ -1,6 +1,6 @@
 // Lattice sampling of box, sphere and container. Expected counts come from the geometry (volumes
 // in cells, counts of integer points in a ball), not from re-running the sampling loops.
-#include "scene/lattice.hpp"
+#include "model/lattice.hpp"
 
 #include <gtest/gtest.h>
 

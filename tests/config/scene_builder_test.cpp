@@ -1,10 +1,10 @@
 // build_particles: placement, rotation and jitter of each body, SPH and rigid-body masses, fixed
 // regions, and the scenes it refuses (empty or overlapping bodies).
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include "config/scene_loader.hpp"
 #include "config_test_support.hpp"
-#include "scene/lattice.hpp"
+#include "model/lattice.hpp"
 #include "model/smoothing_kernels.hpp"
 
 #include <gmock/gmock.h>

@@ -1,9 +1,9 @@
-// The run log's account of compression (src/sim/compression_watch.hpp): a soft St Venant-
+// The run log's account of compression (src/run/compression_watch.hpp): a soft St Venant-
 // Kirchhoff cube thrown onto the ground is crushed past its model's valid range; the log records
 // each deformable body's smallest det F and the count past the range at every sample, with units
 // and descriptions, the warning (once, with body, time and value) and the fraction of the run
 // outside. A stiff cube on the same path stays inside.
-#include "cli/scene_run.hpp"
+#include "run/scene_run.hpp"
 #include "h5_read.hpp"
 #include "util/hdf5_handle.hpp"
 #include "temp_dir.hpp"

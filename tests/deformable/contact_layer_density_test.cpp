@@ -2,10 +2,10 @@
 // (model/deformable_rest_state.hpp, reads_contact_layer_density): its own body's neighbours count
 // at rest, the other bodies' live. So the body's own compression, which elasticity answers, does
 // not raise its pressure (with the own body counted live it did, and that pressure pushed on a
-// body held against it through a force no potential gives: results/squeeze-chatter.md), while a
+// body held against it through a force no potential gives: results/decisions/005-contact-layer-density.md), while a
 // body pressed against it still does. Both precisions: the reference, and the float32 cpu and cuda
 // backends (cuda skipped without a CUDA build and a GPU).
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "deformable_fixtures.hpp"
 #include "framework/backends.hpp"
 #include "model/lattice_calibration.hpp"
@@ -41,7 +41,7 @@ std::size_t body_named(const ParticleSetup& setup, const std::string& name) {
 class ContactLayerDensity : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
-    const std::string why = validation::why_backend_cannot_run(GetParam());
+    const std::string why = why_backend_cannot_run(GetParam());
     if (!why.empty()) GTEST_SKIP() << "backend " << GetParam() << " cannot run here: " << why;
   }
 };
@@ -113,7 +113,7 @@ TEST_P(ContactLayerDensity, ABodyPressedOnItRaisesItsSurfaceDensity) {
   EXPECT_EQ(full_lateral, 16u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, ContactLayerDensity, ::testing::Values("reference", "cpu", "cuda"),
+INSTANTIATE_TEST_SUITE_P(Backends, ContactLayerDensity, ::testing::ValuesIn(backend_names()),
                          [](const auto& param_info) { return param_info.param; });
 
 }  // namespace

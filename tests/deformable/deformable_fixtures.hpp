@@ -4,7 +4,7 @@
 #include "config/scene_loader.hpp"
 #include "physics/elastic_bodies.hpp"
 #include "reference_backend.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>

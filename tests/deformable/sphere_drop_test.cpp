@@ -5,9 +5,9 @@
 //
 // Run on the float32 cpu backend, whose path on this very scene follows the reference within 2 %
 // (BackendAgreement.DeformableDropFollowsTheReference): the reference would take minutes here.
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "config/scene_loader.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // blood in that order, each phase's push shows in the body touched (Newton's third law) and not in
 // the others, and the device renders within its limits. The checks' measurements are in
 // scripts/figures/tss.py; with the bone's contact left undamped (viscosity 5 Pa s) its rattle on
-// the ground fails them on an H100 run, so they can fail.
+// the ground fails them, so they can fail.
 #include "cli_fixture.hpp"
 
 namespace mssph::test {

@@ -3,7 +3,7 @@
 // sanitizers this target is built with) is a bug. An accepted scene then goes through the
 // resource estimate and its checks, which run before anything is allocated.
 #include "config/scene_loader.hpp"
-#include "cli/run_estimate.hpp"
+#include "run/run_estimate.hpp"
 #include "util/errors.hpp"
 
 #include <cstddef>

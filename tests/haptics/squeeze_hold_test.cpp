@@ -5,7 +5,7 @@
 //
 // At 4 cm spacing (the CI's), on the float32 cpu backend, 0.8 s: the window 0.65 s to 0.8 s
 // starts once the hand has stopped and the approach transient has passed.
-#include "cli/scene_run.hpp"
+#include "run/scene_run.hpp"
 #include "h5_read.hpp"
 #include "temp_dir.hpp"
 
@@ -79,7 +79,7 @@ TEST(SqueezeHold, TheHeldPressIsSteadyFromTickToTick) {
   // press) is the rendered force's below, so that the steadiness the hand feels does not rest on
   // the coupling and the device filtering a buzz (measured: 1.34 N with the block's pressure read
   // from its contact layer's density; 35 N with its own body's neighbours counted live, the
-  // proxy bouncing off the block, results/squeeze-chatter.md).
+  // proxy bouncing off the block, results/decisions/005-contact-layer-density.md).
   EXPECT_LT(hold.max_contact_jump, 3.0);
   // The proxy stays on the block: never near contact loss (a bouncing proxy drops to 0 N).
   EXPECT_GT(hold.min_contact, 0.5 * hold.mean_contact);

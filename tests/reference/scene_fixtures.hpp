@@ -2,7 +2,7 @@
 // Small scenes for physics tests, built through the same JSON path as user scenes.
 #include "config/scene_loader.hpp"
 #include "reference_backend.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,11 +1,11 @@
 // The start-up time-step checks: each bound warns just above its limit and stays quiet just
-// below it. The limits are worked out by hand below from the bounds' formulas (DESIGN notes:
+// below it. The limits are worked out by hand below from the bounds' formulas (docs/model.md:
 // acoustic 0.25 h / (c + v), viscous 0.125 h^2 rho0 / mu, body force 0.25 sqrt(h / |g|), elastic
 // 0.25 h / c_p), for h = 2 dx = 0.04 m.
-#include "sim/stability.hpp"
+#include "run/stability.hpp"
 
 #include "config/scene_loader.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

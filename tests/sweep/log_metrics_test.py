@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Tests of scripts/analysis/log_metrics.py on synthetic run logs with answers worked out by hand.
 
-Each log is written with h5py in the run log's layout (README.md, "The run log"): a proxy whose
+Each log is written with h5py in the run log's layout (docs/run-log.md): a proxy whose
 centre of mass follows chosen piecewise sines and whose interaction force is a half sine, a
 haptic loop with chosen rendered forces, flags and energies, and chosen step times. Expected
 values come from the formulas of those curves, not from the code under test.

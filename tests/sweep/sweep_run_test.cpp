@@ -1,6 +1,6 @@
 // `mssph sweep` end to end: every point an ordinary `mssph run` with its own log, named by its
 // hash and tagged with its parameters; the summary, the dry run, the Slurm scripts and the plots.
-#include "commands.hpp"
+#include "cli/commands.hpp"
 #include "sweep/sweep_points.hpp"
 #include "sweep_cli_fixture.hpp"
 

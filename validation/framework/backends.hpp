@@ -1,11 +1,10 @@
 #pragma once
-// Which backends can run on this machine, and where the cases' scene files are.
+// Where the cases' scene files are; which backends can run here is the factory's.
+#include "backend_factory/backend_factory.hpp"
+
 #include <string>
 
 namespace mssph::validation {
-
-// "" when the named backend can run here, else why not (no CUDA build, no GPU).
-std::string why_backend_cannot_run(const std::string& name);
 
 // The validation/ folder: $MSSPH_VALIDATION_DIR if set, else the source tree's.
 std::string validation_dir();

@@ -2,7 +2,7 @@
 
 #include "elastic_bodies.hpp"
 #include "framework/backends.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include <Eigen/Geometry>
 

@@ -1,8 +1,8 @@
 #include "fluids.hpp"
 
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "framework/fits.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -12,8 +12,8 @@ namespace {
 // slope's disorder error. Over eight such shifts of one column the quick errors ranged 1.3-7.7 %
 // (3.33 cm), 1.9-4.0 % (2.5 cm) and 1.5-3.3 % (2 cm), and one in eight gave an observed order below
 // zero; with another summation order, -0.7-4.9 %, 2.6-3.8 % and 1.5-2.4 %, whose means are flat in
-// dx (README.md, "Diagnosis (2026-11-28)"). So the lifts' spread is what the order is checked
-// against (convergence_result's standard_error).
+// dx (README.md, the "Diagnosis" of the summation order). So the lifts' spread is what the order
+// is checked against (convergence_result's standard_error).
 constexpr int kColumnShifts = 4;
 constexpr double kColumnShift = 1e-7;  // [m]
 

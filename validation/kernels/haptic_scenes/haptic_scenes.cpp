@@ -2,7 +2,7 @@
 
 #include "framework/fits.hpp"
 #include "framework/run_log_reader.hpp"
-#include "scene_run.hpp"
+#include "run/scene_run.hpp"
 #include "util/errors.hpp"
 
 #include <algorithm>

@@ -1,9 +1,9 @@
 #include "one_step.hpp"
 
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "config/scene_loader.hpp"
 #include "framework/backends.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include <Eigen/Geometry>
 

@@ -2,7 +2,7 @@
 // Many steps: a float32 backend against the reference on paper Figure 3's sphere drops
 // (configs/sphere_drop_{rigid,deformable,fluid}.json): the proxy sphere's interaction force curve
 // and path over 0.5 s. Shared by the kernels suite and tests/backends/backend_agreement_test.cpp.
-#include "scene/particle_setup.hpp"
+#include "model/particle_setup.hpp"
 
 #include <Eigen/Core>
 

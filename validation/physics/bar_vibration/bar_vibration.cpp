@@ -3,7 +3,7 @@
 #include "elastic_forces.hpp"
 #include "framework/backends.hpp"
 #include "physics/elastic_bodies.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include <cmath>
 

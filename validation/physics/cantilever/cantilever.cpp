@@ -1,8 +1,8 @@
 #include "cantilever.hpp"
 
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "framework/backends.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include <cmath>
 #include <map>

@@ -1,8 +1,8 @@
 #include "cantilever_frequency.hpp"
 
-#include "backends/backend_factory.hpp"
+#include "backend_factory/backend_factory.hpp"
 #include "physics/cantilever/cantilever.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // Under a constant wrench over a step it moves exactly (x += v dt + F/(2m) dt^2; a fixed rotation axis turns by the mean angular
 // velocity). An optional penalty floor stands in for the SPH interaction forces of a contact.
 #include "util/pose.hpp"
-#include "sim/backend.hpp"
+#include "backend/backend.hpp"
 
 #include <optional>
 #include <stdexcept>

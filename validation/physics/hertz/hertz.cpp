@@ -1,7 +1,7 @@
 #include "hertz.hpp"
 
 #include "reference_backend.hpp"
-#include "scene/scene_builder.hpp"
+#include "model/scene_builder.hpp"
 
 #include <algorithm>
 #include <cmath>

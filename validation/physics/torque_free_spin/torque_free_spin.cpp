@@ -1,7 +1,7 @@
 #include "torque_free_spin.hpp"
 
-#include "backends/backend_factory.hpp"
-#include "scene/scene_builder.hpp"
+#include "backend_factory/backend_factory.hpp"
+#include "model/scene_builder.hpp"
 
 #include <algorithm>
 #include <cmath>

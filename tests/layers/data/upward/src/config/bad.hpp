@@ -1,3 +1,3 @@
 #pragma once
 // Fixture: a foundation header that includes the run machinery, which check_layers.py must reject.
-#include "sim/progress.hpp"
+#include "run/progress.hpp"

@@ -1,0 +1,184 @@
+// `mssph validate`: runs the validation cases of validation/ and writes the table, report.json,
+// validation.h5 and report.md with plots.
+#include "backend_factory/backend_factory.hpp"
+#include "commands.hpp"
+#include "guarded.hpp"
+#include "framework/backends.hpp"
+#include "framework/report.hpp"
+#include "run/python_script.hpp"
+#include "util/build_info.hpp"
+#include "util/errors.hpp"
+#include "util/host_info.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+#include <random>
+
+namespace mssph::cli {
+namespace {
+
+using namespace mssph::validation;
+
+struct ValidateArgs {
+  bool quick = false;
+  std::string backend = "auto";
+  std::vector<std::string> suites;
+  std::vector<std::string> cases;
+  std::string out = "results/runs/validation";
+  std::uint64_t seed = 0;  // 0: fresh
+};
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  return text;
+}
+
+std::vector<std::string> gpu_names() {
+  std::vector<std::string> names;
+  for (const GpuDevice& d : gpu_devices()) names.push_back(d.name);
+  return names;
+}
+
+// The cases the arguments select, in the registry's order. The self-test suite (cases whose
+// expectation is wrong on purpose) runs only when named.
+std::vector<const ValidationCase*> selected_cases(const ValidateArgs& args) {
+  std::vector<const ValidationCase*> chosen;
+  for (const std::string& name : args.cases) {
+    const auto found = std::find_if(all_cases().begin(), all_cases().end(), [&](const ValidationCase& c) { return c.name == name; });
+    if (found == all_cases().end()) {
+      std::string known;
+      for (const ValidationCase& c : all_cases()) known += (known.empty() ? "" : ", ") + c.name;
+      throw InputError("--case " + name + ": no such case (known: " + known + ")");
+    }
+  }
+  for (const ValidationCase& c : all_cases()) {
+    const bool named = std::find(args.cases.begin(), args.cases.end(), c.name) != args.cases.end();
+    const bool in_suite = std::find(args.suites.begin(), args.suites.end(), c.suite) != args.suites.end();
+    if (!args.cases.empty()) {
+      if (named && (args.suites.empty() || in_suite)) chosen.push_back(&c);
+    } else if (args.suites.empty() ? c.suite != "selftest" : in_suite) {
+      chosen.push_back(&c);
+    }
+  }
+  if (chosen.empty()) throw InputError("--suite/--case: the selection names no case");
+  return chosen;
+}
+
+std::string command_line(const ValidateArgs& args) {
+  std::string line = "mssph validate";
+  if (args.quick) line += " --quick";
+  line += " --backend " + args.backend;
+  for (const std::string& s : args.suites) line += " --suite " + s;
+  for (const std::string& c : args.cases) line += " --case " + c;
+  line += " --out " + args.out;
+  return line;
+}
+
+int run_validate(const ValidateArgs& args) {
+  const std::vector<const ValidationCase*> cases = selected_cases(args);
+
+  CaseContext context;
+  context.quick = args.quick;
+  context.seed = args.seed ? args.seed : std::random_device{}();
+  context.validation_dir = validation_dir();
+  context.work_dir = (std::filesystem::path(args.out) / "runs").string();
+  if (args.backend == "auto") {
+    context.physics_backend = resolve_backend_name("auto");
+  } else {
+    context.physics_backend = args.backend;
+    context.physics_backend_skip = why_backend_cannot_run(args.backend);
+  }
+  // The kernels suite compares the chosen float32 backend with the reference, or every one.
+  const std::vector<std::string> float_backends = float_backend_names();
+  if (std::find(float_backends.begin(), float_backends.end(), args.backend) != float_backends.end()) {
+    context.fast_backends = {args.backend};
+  } else {
+    context.fast_backends = float_backends;
+  }
+
+  RunInfo info;
+  info.mssph_version = build_info().version;
+  info.git_commit = build_info().git_commit;
+  info.date = utc_now();
+  info.command_line = command_line(args);
+  info.mode = args.quick ? "quick" : "full";
+  info.physics_backend = context.physics_backend;
+  info.physics_precision = context.physics_backend == "reference" ? "float64" : "float32";
+  info.host_cpu = host_cpu_name();
+  info.gpus = gpu_names();
+  info.physics_device = context.physics_backend == "cuda" ? (info.gpus.empty() ? "no GPU" : info.gpus.front()) : info.host_cpu;
+  info.fast_backends = context.fast_backends;
+  info.seed = context.seed;
+
+  std::filesystem::create_directories(context.work_dir);
+  std::cerr << "mssph validate: " << cases.size() << " case(s), " << info.mode << ", physics on " << context.physics_backend
+            << ", seed " << context.seed << "\n";
+  std::vector<CaseRun> runs;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const ValidationCase& c = *cases[k];
+    std::cerr << "validate: [" << k + 1 << "/" << cases.size() << "] " << c.suite << "/" << c.name << ": " << c.title << "\n";
+    CaseRun run;
+    run.which = &c;
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      run.result = c.run(context);
+    } catch (const std::exception& e) {
+      run.error = e.what();
+    }
+    run.result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cerr << "validate: " << c.name << ": " << status_name(case_status(run)) << " in " << run.result.wall_seconds << " s"
+              << (run.error.empty() ? "" : " (" + run.error + ")") << "\n";
+    runs.push_back(std::move(run));
+  }
+
+  print_table(info, runs);
+  const std::string json_path = (std::filesystem::path(args.out) / "report.json").string();
+  const std::string h5_path = (std::filesystem::path(args.out) / "validation.h5").string();
+  write_report_json(json_path, info, runs);
+  write_report_hdf5(h5_path, info, runs);
+  const int plotted = run_python_script("validation/report.py", {json_path, h5_path, args.out});
+  if (plotted != 0) {
+    std::cerr << "error: scripts/validation/report.py failed (exit " << plotted << "): " << args.out
+              << "/report.md is missing or incomplete\n";
+    return kExitOther;
+  }
+  std::printf("report: %s/report.md, %s, %s\n", args.out.c_str(), json_path.c_str(), h5_path.c_str());
+  const bool failed = std::any_of(runs.begin(), runs.end(), [](const CaseRun& r) { return case_status(r) == Status::fail; });
+  return failed ? kExitOther : kExitOk;
+}
+
+}  // namespace
+
+void add_validate_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<ValidateArgs>();
+  CLI::App* cmd = app.add_subcommand("validate", "Run the validation cases (validation/) and write a report");
+  cmd->add_flag("--quick", args->quick, "Coarse resolutions: the whole run in minutes on 2 CPU cores (what CI runs)");
+  cmd->add_option("--backend", args->backend,
+                  "Backend of the physics cases (reference, cpu, cuda, auto); the kernels suite compares it (or, for "
+                  "auto and reference, every float32 backend) with the reference")
+      ->check(CLI::IsMember(backend_choices()))
+      ->capture_default_str();
+  cmd->add_option("--suite", args->suites, "Run only this suite: kernels, physics, convergence (repeatable)")
+      ->check(CLI::IsMember({"kernels", "physics", "convergence", "selftest"}));
+  cmd->add_option("--case", args->cases, "Run only the named case (repeatable); names are in the table and validation/");
+  cmd->add_option("--out", args->out, "Output folder for report.md, report.json, validation.h5 and plots")
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the random perturbations (default: fresh, printed)");
+  cmd->footer(
+      "Each case states its expectation (formula and source), tolerance and reason in\n"
+      "validation/<suite>/<case>/README.md. A case that cannot run here (e.g. cuda without a GPU) is\n"
+      "SKIPPED with the reason, never PASS.\n"
+      "\n"
+      "Exit codes: 0 every case passed or was skipped; 1 a case failed (or the report could not be\n"
+      "written); 2 bad arguments.");
+  cmd->callback([args, &exit_code] {
+    guarded(exit_code, [&] { return run_validate(*args); });
+  });
+}
+
+}  // namespace mssph::cli

@@ -1,0 +1,179 @@
+#include "scene_builder.hpp"
+
+#include "lattice.hpp"
+#include "simulation_domain.hpp"
+#include "model/lattice_calibration.hpp"
+#include "util/errors.hpp"
+
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <unordered_map>
+
+namespace mssph {
+namespace {
+
+using Eigen::Vector3d;
+
+// Rigid-body mass properties from equal-mass particles of physical mass m each. Each particle
+// also carries the inertia of its own cube of side dx (m dx^2 / 6 about each axis), so that the
+// sum converges to the continuum inertia and a thin body is never singular.
+void set_rigid_mass_properties(BodySetup& body, const std::vector<Vector3d>& world, double density, double dx) {
+  const double particle_mass = density * dx * dx * dx;
+  Vector3d com = Vector3d::Zero();
+  for (const Vector3d& x : world) com += x;
+  com /= static_cast<double>(world.size());
+  const Eigen::Matrix3d rotation = body.orientation.toRotationMatrix();
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Identity() * (static_cast<double>(world.size()) * particle_mass * dx * dx / 6.0);
+  for (const Vector3d& x : world) {
+    const Vector3d r = rotation.transpose() * (x - com);  // body frame
+    inertia += particle_mass * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
+  }
+  body.mass = particle_mass * static_cast<double>(world.size());
+  body.centre_of_mass = com;
+  body.inertia_body = inertia;
+}
+
+// Each particle stands for the cube of side dx around its lattice site, aligned with its body. A
+// particle of one body inside (or on the boundary of) a cube of another body means their volumes
+// overlap by half a spacing or more, e.g. a ball placed inside a block whatever the offset of
+// their lattices: such a start state would explode at the first step. Tested on the lattice sites
+// before jitter; a hash grid of cell size dx keeps this linear.
+void check_overlaps(const Scene& scene, const ParticleSetup& setup, const std::vector<Vector3d>& site) {
+  const double dx = setup.spacing;
+  const double half = 0.5 * dx * (1.0 + 1e-9);  // boundary included: interleaved lattices overlap
+  struct KeyHash {
+    std::size_t operator()(const Eigen::Vector3i& c) const {
+      return (static_cast<std::size_t>(c.x()) * 73856093u) ^ (static_cast<std::size_t>(c.y()) * 19349663u) ^
+             (static_cast<std::size_t>(c.z()) * 83492791u);
+    }
+  };
+  std::unordered_map<Eigen::Vector3i, std::vector<std::size_t>, KeyHash> cells;
+  const auto cell_of = [&](const Vector3d& x) { return Eigen::Vector3i((x / dx).array().floor().cast<int>()); };
+  for (std::size_t i = 0; i < setup.size(); ++i) cells[cell_of(site[i])].push_back(i);
+  std::vector<Eigen::Matrix3d> to_body_frame;
+  for (const BodySetup& b : setup.bodies) to_body_frame.push_back(b.orientation.toRotationMatrix().transpose());
+  for (std::size_t i = 0; i < setup.size(); ++i) {
+    const Eigen::Vector3i c = cell_of(site[i]);
+    for (int dz = -1; dz <= 1; ++dz) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dxc = -1; dxc <= 1; ++dxc) {
+          const auto it = cells.find(c + Eigen::Vector3i(dxc, dy, dz));
+          if (it == cells.end()) continue;
+          for (std::size_t j : it->second) {
+            if (setup.body[j] == setup.body[i]) continue;
+            const Vector3d offset = to_body_frame[setup.body[j]] * (site[i] - site[j]);
+            if (offset.cwiseAbs().maxCoeff() > half) continue;
+            const std::string& a = setup.bodies[setup.body[std::min(i, j)]].name;
+            const std::string& b = setup.bodies[setup.body[std::max(i, j)]].name;
+            std::ostringstream where;
+            where << "[" << site[i].x() << ", " << site[i].y() << ", " << site[i].z() << "]";
+            throw InputError(scene.source_file + ": /bodies/" + b + "/position: bodies \"" + a + "\" and \"" + b +
+                             "\" overlap near " + where.str() + " m (their particles' cells of side " +
+                             std::to_string(dx) + " m intersect by half a spacing or more); move them apart");
+          }
+        }
+      }
+    }
+  }
+}
+
+// A fluid or deformable particle outside a scene-set domain at the start would be deactivated by
+// the first step: the domain is a mistake, refused as bad input.
+void check_domain_holds_moving_particles(const Scene& scene, const ParticleSetup& setup) {
+  if (!scene.simulation.domain) return;
+  for (std::size_t i = 0; i < setup.size(); ++i) {
+    const BodySetup& body = setup.bodies[setup.body[i]];
+    if (body.kind != BodyKind::fluid && body.kind != BodyKind::deformable) continue;
+    if (setup.domain.contains(setup.position[i])) continue;
+    std::ostringstream message;
+    const Vector3d& x = setup.position[i];
+    message << scene.source_file << ": /simulation/domain: body \"" << body.name << "\" has a particle at [" << x.x()
+            << ", " << x.y() << ", " << x.z()
+            << "] m outside the domain at the start; the domain must hold every fluid and deformable particle";
+    throw InputError(message.str(), "/simulation/domain");
+  }
+}
+
+}  // namespace
+
+ParticleSetup build_particles(const Scene& scene) {
+  const SimulationConfig& sim = scene.simulation;
+  ParticleSetup setup;
+  setup.spacing = sim.particle_spacing;
+  setup.smoothing_length = sim.smoothing_length;
+  setup.rest_number_density = lattice_number_density(sim.particle_spacing, sim.smoothing_length);
+  setup.gradient_consistency = lattice_gradient_consistency(sim.particle_spacing, sim.smoothing_length);
+  setup.gravity = sim.gravity;
+  setup.dt = sim.dt;
+  setup.max_speed = sim.max_speed;
+
+  std::mt19937_64 random(sim.seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double jitter = sim.jitter * sim.particle_spacing;
+  std::vector<Vector3d> lattice_site;  // every particle's position before jitter
+
+  for (const BodyConfig& config : scene.bodies) {
+    const std::vector<Vector3d> local = sample_shape(config.shape, sim.particle_spacing);
+    if (local.empty()) {
+      throw InputError(scene.source_file + ": /bodies/" + config.name +
+                       "/shape: the shape holds no particle at particle_spacing " +
+                       std::to_string(sim.particle_spacing) + " m; make it larger or the spacing smaller");
+    }
+    BodySetup body;
+    body.name = config.name;
+    body.kind = config.kind;
+    body.material = config.material;
+    body.first = setup.size();
+    body.count = local.size();
+    body.orientation = config.orientation;
+    body.velocity = config.velocity;
+    body.angular_velocity = config.angular_velocity;
+    body.fixed = config.fixed;
+
+    const Eigen::Matrix3d rotation = config.orientation.toRotationMatrix();
+    std::vector<Vector3d> world;
+    world.reserve(local.size());
+    for (const Vector3d& p : local) {
+      Vector3d x = config.position + rotation * p;
+      lattice_site.push_back(x);
+      if (jitter > 0.0) x += jitter * Vector3d(unit(random), unit(random), unit(random));
+      world.push_back(x);
+    }
+    if (config.kind == BodyKind::rigid) set_rigid_mass_properties(body, world, config.density, sim.particle_spacing);
+
+    // Each particle stands for its lattice cell: m = rho0 dx^3 (density.hpp reads densities
+    // against the rest lattice, so a rest lattice is at rho0 whatever the kernel).
+    const double sph_mass = config.material.rest_density * sim.particle_spacing * sim.particle_spacing * sim.particle_spacing;
+    const std::uint32_t body_index = static_cast<std::uint32_t>(setup.bodies.size());
+    for (const Vector3d& x : world) {
+      Vector3d v = Vector3d::Zero();
+      if (config.kind == BodyKind::rigid && !config.fixed) {
+        v = config.velocity + config.angular_velocity.cross(x - body.centre_of_mass);
+      } else if (config.kind == BodyKind::fluid || config.kind == BodyKind::deformable) {
+        v = config.velocity;
+      }
+      const bool held = std::any_of(config.fixed_regions.begin(), config.fixed_regions.end(),
+                                    [&](const Region& r) { return r.contains(x); });
+      if (held) {
+        v = Vector3d::Zero();
+        ++body.fixed_count;
+      }
+      setup.position.push_back(x);
+      setup.velocity.push_back(v);
+      setup.mass.push_back(sph_mass);
+      setup.body.push_back(body_index);
+      setup.fixed.push_back(held ? 1 : 0);
+      setup.rest_offset.push_back(config.kind == BodyKind::rigid ? Vector3d(rotation.transpose() * (x - body.centre_of_mass))
+                                                                 : Vector3d::Zero());
+    }
+    setup.bodies.push_back(body);
+  }
+  check_overlaps(scene, setup, lattice_site);
+  setup.domain = sim.domain ? *sim.domain : default_simulation_domain(setup.position, setup.smoothing_length);
+  check_domain_holds_moving_particles(scene, setup);
+  setup.max_lost_mass_fraction = sim.max_lost_mass_fraction;
+  return setup;
+}
+
+}  // namespace mssph
