@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 stage_done() { echo "test.sh: $1 done at $SECONDS s" >&2; }
 scripts/setup.sh
 stage_done "set-up"
-scripts/build.sh
+scripts/build.sh -DMSSPH_BUILD_TESTS=ON -DMSSPH_WARNINGS_AS_ERRORS=ON
 stage_done "build"
 # ctest runs as many tests at once as there are cores: one OpenMP thread each, so that two tests'
 # thread teams do not fight over the same cores (tests that need threads set them themselves).
