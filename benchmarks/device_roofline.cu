@@ -4,7 +4,6 @@
 #include <benchmark/benchmark.h>
 #include <cuda_runtime.h>
 
-
 namespace {
 
 bool cuda_ok(cudaError_t e, benchmark::State& state) {
@@ -14,7 +13,8 @@ bool cuda_ok(cudaError_t e, benchmark::State& state) {
 }
 
 __global__ void copy_kernel(const float4* __restrict__ in, float4* __restrict__ out, std::size_t n) {
-  for (std::size_t i = blockIdx.x * std::size_t{blockDim.x} + threadIdx.x; i < n; i += std::size_t{gridDim.x} * blockDim.x) {
+  for (std::size_t i = blockIdx.x * std::size_t{blockDim.x} + threadIdx.x; i < n;
+       i += std::size_t{gridDim.x} * blockDim.x) {
     out[i] = in[i];
   }
 }

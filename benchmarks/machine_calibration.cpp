@@ -29,7 +29,8 @@ CalibrationSet make_calibration_set() {
     set.z.push_back(coordinate(random));
   }
   std::uniform_int_distribution<std::uint32_t> any(0, CalibrationSet::kPoints - 1);
-  for (std::size_t k = 0; k < CalibrationSet::kPoints * CalibrationSet::kPartners; ++k) set.partner.push_back(any(random));
+  for (std::size_t k = 0; k < CalibrationSet::kPoints * CalibrationSet::kPartners; ++k)
+    set.partner.push_back(any(random));
   return set;
 }
 

@@ -1,10 +1,10 @@
 // The machine and build recorded in every benchmark file's context. `mssph bench compare` refuses
 // files whose mssph_cpu, mssph_gpu or mssph_build_type differ (src/bench/benchmark_results.hpp).
+#include "backend_factory/backend_factory.hpp"
 #include "benchmark_suite.hpp"
 #include "step_delay.hpp"
 #include "util/build_info.hpp"
 #include "util/host_info.hpp"
-#include "backend_factory/backend_factory.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -44,11 +44,13 @@ void add_machine_context() {
   benchmark::AddCustomContext("mssph_cpu", host_cpu_name());
   benchmark::AddCustomContext("mssph_cpu_cores", std::to_string(std::thread::hardware_concurrency()));
   benchmark::AddCustomContext("mssph_gpu", gpu_name());
-  benchmark::AddCustomContext("mssph_cuda_backend", b.cuda_backend ? "built for sm_" + b.cuda_architectures : "not built");
+  benchmark::AddCustomContext("mssph_cuda_backend",
+                              b.cuda_backend ? "built for sm_" + b.cuda_architectures : "not built");
   benchmark::AddCustomContext("mssph_gpu_driver", gpu_driver());
   const double delay = step_delay_seconds();
   if (delay > 0.0) {
-    benchmark::AddCustomContext("mssph_test_step_delay_us", std::to_string(delay * 1e6) + " (test hook: not a real measurement)");
+    benchmark::AddCustomContext("mssph_test_step_delay_us",
+                                std::to_string(delay * 1e6) + " (test hook: not a real measurement)");
   }
 }
 

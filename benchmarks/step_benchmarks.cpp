@@ -26,8 +26,8 @@
 namespace mssph::bench {
 namespace {
 
-constexpr int kBatch = 50;    // steps per timed iteration
-constexpr int kWarmUp = 20;   // steps before timing: graph upload, caches, first grid
+constexpr int kBatch = 50;   // steps per timed iteration
+constexpr int kWarmUp = 20;  // steps before timing: graph upload, caches, first grid
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
@@ -93,7 +93,8 @@ void time_steps(benchmark::State& state, const Scene& scene, const std::string& 
   // in the timed steps.
   if (builds_before) {
     const std::uint64_t builds = *sim.backend().neighbour_grid_builds() - *builds_before;
-    state.counters["grid_builds_per_step"] = static_cast<double>(builds) / (static_cast<double>(state.iterations()) * kBatch);
+    state.counters["grid_builds_per_step"] =
+        static_cast<double>(builds) / (static_cast<double>(state.iterations()) * kBatch);
   }
   // Where a step's time goes, from one further step per iteration with phase timing on (device
   // events on a GPU), outside the timed batches, whose steps the events would lengthen.
@@ -115,8 +116,8 @@ void time_steps(benchmark::State& state, const Scene& scene, const std::string& 
     state.counters["phase_" + phases[p] + "_seconds"] = phase_seconds[p] / static_cast<double>(state.iterations());
   }
   state.counters["particles"] = sim.particles();
-  state.counters["step_seconds"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * kBatch, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["step_seconds"] = benchmark::Counter(static_cast<double>(state.iterations()) * kBatch,
+                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 // One haptic tick as the haptic thread runs it: read the proxy's state back from the backend,
@@ -173,9 +174,12 @@ void register_suite(const std::vector<std::string>& backends) {
     for (const auto& [medium, scene_of] : media) {
       for (long n : sizes_for(backend)) {
         const std::string name = "step/" + backend + "/" + medium + "/" + std::to_string(n);
-        benchmark::RegisterBenchmark(name.c_str(), [backend, scene_of, n](benchmark::State& state) {
-          time_steps(state, scene_of(static_cast<std::size_t>(n)), backend);
-        })->UseManualTime()->Unit(benchmark::kMicrosecond);
+        benchmark::RegisterBenchmark(name.c_str(),
+                                     [backend, scene_of, n](benchmark::State& state) {
+                                       time_steps(state, scene_of(static_cast<std::size_t>(n)), backend);
+                                     })
+            ->UseManualTime()
+            ->Unit(benchmark::kMicrosecond);
       }
     }
     benchmark::RegisterBenchmark(("haptic_tick/" + backend).c_str(), time_haptic_tick, backend)
@@ -188,9 +192,10 @@ void register_scene_benchmark(const std::string& scene_path, const std::vector<s
   const Scene scene = load_scene(scene_path, overrides);
   build_particles(scene);  // a scene that cannot be built fails here, before any benchmark runs
   const std::string name = "scene/" + backend + "/" + scene.name;
-  benchmark::RegisterBenchmark(name.c_str(), [scene, backend](benchmark::State& state) {
-    time_steps(state, scene, backend);
-  })->UseManualTime()->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark(name.c_str(),
+                               [scene, backend](benchmark::State& state) { time_steps(state, scene, backend); })
+      ->UseManualTime()
+      ->Unit(benchmark::kMicrosecond);
 }
 
 }  // namespace mssph::bench

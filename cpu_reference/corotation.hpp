@@ -8,7 +8,8 @@ namespace mssph::reference {
 
 // One neighbour's contribution to the moment matrix A_i = sum_j m_j W(|X_ij|) x_ij X_ij^T, where
 // X_ij = X_j - X_i is the rest offset and x_ij = x_j - x_i the current one.
-inline Eigen::Matrix3d moment_matrix_term(double weight, const Eigen::Vector3d& x_ij, const Eigen::Vector3d& rest_x_ij) {
+inline Eigen::Matrix3d moment_matrix_term(double weight, const Eigen::Vector3d& x_ij,
+                                          const Eigen::Vector3d& rest_x_ij) {
   return weight * x_ij * rest_x_ij.transpose();
 }
 

@@ -10,8 +10,8 @@
 // spinning body; this form damps deformation only and keeps a free body's linear and angular
 // momentum.
 #include "deformable_state.hpp"
-#include "particle_state.hpp"
 #include "model/particle_setup.hpp"
+#include "particle_state.hpp"
 
 #include <Eigen/Core>
 

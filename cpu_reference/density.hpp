@@ -2,8 +2,8 @@
 // Step 2 of the loop (paper 3.2): densities and pressures.
 #include "model/deformable_rest_state.hpp"
 #include "model/neighbour_search.hpp"
-#include "particle_state.hpp"
 #include "model/particle_setup.hpp"
+#include "particle_state.hpp"
 
 #include <algorithm>
 #include <vector>

@@ -2,8 +2,8 @@
 // The loops of corotated SPH elasticity (paper 3.1.2, eq. 4-6) over the deformable particles:
 // step 1 (rotations), the elastic part of step 2 (strain and stress) and of step 3 (forces).
 // The per-particle math is in corotation.hpp and elasticity.hpp.
-#include "model/deformable_rest_state.hpp"
 #include "deformable_state.hpp"
+#include "model/deformable_rest_state.hpp"
 #include "model/particle_setup.hpp"
 
 #include <Eigen/Core>

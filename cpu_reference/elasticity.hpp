@@ -137,9 +137,12 @@ inline ElasticResponse neo_hookean(const Eigen::Matrix3d& grad_u, const LamePara
 
 inline ElasticResponse elastic_response(const Eigen::Matrix3d& grad_u, const LameParameters& lame, ElasticModel model) {
   switch (model) {
-    case ElasticModel::corotated_linear: return corotated_linear(grad_u, lame);
-    case ElasticModel::neo_hookean: return neo_hookean(grad_u, lame);
-    case ElasticModel::saint_venant_kirchhoff: break;
+    case ElasticModel::corotated_linear:
+      return corotated_linear(grad_u, lame);
+    case ElasticModel::neo_hookean:
+      return neo_hookean(grad_u, lame);
+    case ElasticModel::saint_venant_kirchhoff:
+      break;
   }
   return saint_venant_kirchhoff(grad_u, lame);
 }

@@ -26,8 +26,8 @@ void compute_pressure_viscosity_forces(const ParticleSetup& setup, const Neighbo
         const Eigen::Vector3d r_ij = state.position[i] - state.position[j];
         const double v_i = state.volume[i];
         const double v_j = state.volume[j];
-        const Eigen::Vector3d pressure =
-            pressure_force_pair(v_i, state.pressure[i], v_j, state.pressure[j], setup.gradient_consistency, grad_w(r_ij));
+        const Eigen::Vector3d pressure = pressure_force_pair(v_i, state.pressure[i], v_j, state.pressure[j],
+                                                             setup.gradient_consistency, grad_w(r_ij));
         const double mu = same_body ? body_i.material.viscosity
                                     : interface_viscosity(body_i.material.viscosity, body_j.material.viscosity);
         const Eigen::Vector3d viscosity =

@@ -3,8 +3,8 @@
 // between particles of different bodies of any kind (paper eq. 7, the whole coupling between
 // media).
 #include "model/neighbour_search.hpp"
-#include "particle_state.hpp"
 #include "model/particle_setup.hpp"
+#include "particle_state.hpp"
 
 #include <Eigen/Core>
 

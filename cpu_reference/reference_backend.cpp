@@ -6,10 +6,10 @@
 #include "elasticity.hpp"
 #include "fluid_forces.hpp"
 #include "rigid_body_dynamics.hpp"
-#include "wall_exclusion.hpp"
-#include "zero_energy_control.hpp"
 #include "util/host_info.hpp"
 #include "util/phase_timer.hpp"
+#include "wall_exclusion.hpp"
+#include "zero_energy_control.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -53,8 +53,10 @@ void ReferenceBackend::set_external_wrench(std::size_t body, const Eigen::Vector
 
 // The neighbour search and steps 1-3 of paper 3.2, one phase per line with the shared phase names.
 void ReferenceBackend::compute_forces() {
-  timed(phase_seconds_[kNeighbours], [&] { neighbours_ = find_neighbours(particles_.position, setup_.smoothing_length); });
-  timed(phase_seconds_[kRotations], [&] { compute_rotations(setup_, deformable_rest_, particles_.position, deformables_); });
+  timed(phase_seconds_[kNeighbours],
+        [&] { neighbours_ = find_neighbours(particles_.position, setup_.smoothing_length); });
+  timed(phase_seconds_[kRotations],
+        [&] { compute_rotations(setup_, deformable_rest_, particles_.position, deformables_); });
   timed(phase_seconds_[kDensities], [&] {
     compute_densities(setup_, deformable_rest_.own_rest_number_density, neighbours_, particles_);
     compute_elastic_stresses(setup_, deformable_rest_, particles_.position, deformables_);
@@ -85,7 +87,7 @@ void ReferenceBackend::add_deformable_forces() {
 // (3) internal and interaction forces, (4) integration: leap-frog for fluid and deformable
 // particles, rigid-body dynamics for rigid bodies.
 void ReferenceBackend::step() {
-  compute_forces();                                                // neighbours, steps 1-3
+  compute_forces();                                           // neighbours, steps 1-3
   timed(phase_seconds_[kIntegration], [&] { integrate(); });  // step 4
   time_ += setup_.dt;
 }
@@ -109,7 +111,8 @@ void ReferenceBackend::integrate() {
     const Eigen::Vector3d previous = particles_.position[i];
     particles_.velocity[i] += (force / setup_.mass[i] + setup_.gravity) * dt;
     particles_.position[i] += particles_.velocity[i] * dt;
-    keep_out_of_walls(setup_, neighbours_, i, particles_.position, previous, particles_.position[i], particles_.velocity[i]);
+    keep_out_of_walls(setup_, neighbours_, i, particles_.position, previous, particles_.position[i],
+                      particles_.velocity[i]);
     deactivate_outside_domain(i);
   }
   for (RigidBodyState& body : rigid_bodies_) {
@@ -139,7 +142,8 @@ ForceEvaluation ReferenceBackend::evaluate_forces() {
   out.rotation.assign(n, Eigen::Matrix3d::Identity());
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_deformable(setup_, i)) continue;
-    out.elastic_force[i] = deformables_.elastic_force[i] + deformables_.hourglass_force[i] + deformables_.damping_force[i];
+    out.elastic_force[i] =
+        deformables_.elastic_force[i] + deformables_.hourglass_force[i] + deformables_.damping_force[i];
     out.rotation[i] = deformables_.rotation[i];
   }
   return out;
@@ -161,11 +165,13 @@ BodyState ReferenceBackend::rigid_body_state(std::size_t body) {
   s.angular_momentum = rigid->angular_momentum;
   s.orientation = rigid->orientation;
   s.angular_velocity = rigid->angular_velocity();
-  s.kinetic_energy = 0.5 * rigid->mass * rigid->velocity.squaredNorm() + 0.5 * s.angular_velocity.dot(s.angular_momentum);
+  s.kinetic_energy =
+      0.5 * rigid->mass * rigid->velocity.squaredNorm() + 0.5 * s.angular_velocity.dot(s.angular_momentum);
   s.interaction_force = rigid->interaction_force;
   s.interaction_torque = rigid->interaction_torque;
   const BodySetup& b = setup_.bodies[body];
-  for (std::size_t i = b.first; i < b.first + b.count; ++i) s.max_speed = std::max(s.max_speed, particles_.velocity[i].norm());
+  for (std::size_t i = b.first; i < b.first + b.count; ++i)
+    s.max_speed = std::max(s.max_speed, particles_.velocity[i].norm());
   return s;
 }
 
@@ -225,7 +231,6 @@ ParticleSnapshot ReferenceBackend::snapshot() {
   }
   return out;
 }
-
 
 std::vector<double> ReferenceBackend::last_phase_seconds() const {
   return {phase_seconds_.begin(), phase_seconds_.end()};

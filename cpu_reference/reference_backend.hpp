@@ -1,11 +1,11 @@
 #pragma once
 // The double-precision reference backend: the oracle every other backend is checked against.
 // step() is the paper's four-step loop (section 3.2), written for reading.
-#include "model/deformable_rest_state.hpp"
+#include "backend/backend.hpp"
 #include "deformable_state.hpp"
+#include "model/deformable_rest_state.hpp"
 #include "model/neighbour_search.hpp"
 #include "particle_state.hpp"
-#include "backend/backend.hpp"
 
 #include <array>
 #include <chrono>

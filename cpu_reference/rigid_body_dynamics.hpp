@@ -2,8 +2,8 @@
 // Rigid bodies as particle sets (Solenthaler et al. 2007 unified model; paper 3.1.1 and eq. 8,
 // 9): the forces on a body's particles are summed into one wrench, the body is integrated as a
 // rigid body, and its particles are placed back from their body-frame offsets.
-#include "particle_state.hpp"
 #include "model/particle_setup.hpp"
+#include "particle_state.hpp"
 
 namespace mssph::reference {
 
@@ -15,7 +15,9 @@ void sum_interaction_wrench(const ParticleSetup& setup, const ParticleState& par
 
 // Paper eq. 8: F = sum_i f_i^interaction + f_device, the summed interaction force plus the haptic
 // coupling's force. Float twin: kernels::rigid_body_force.
-inline Eigen::Vector3d rigid_body_force(const RigidBodyState& body) { return body.interaction_force + body.external_force; }
+inline Eigen::Vector3d rigid_body_force(const RigidBodyState& body) {
+  return body.interaction_force + body.external_force;
+}
 
 // Paper eq. 9: tau = sum_i tau_i^interaction + tau_device, about the centre of mass. Float twin:
 // kernels::rigid_body_torque.

@@ -5,8 +5,8 @@
 // displaced in opposite directions on a lattice): they change no grad u_i, cost no strain
 // energy and grow unresisted. The control adds a pair force that pulls each pair towards the
 // position its particles' deformation gradients predict. Off when zero_energy_stiffness = 0.
-#include "model/deformable_rest_state.hpp"
 #include "deformable_state.hpp"
+#include "model/deformable_rest_state.hpp"
 #include "model/particle_setup.hpp"
 
 #include <Eigen/Core>
@@ -28,8 +28,7 @@ namespace mssph::reference {
 // stiffness (times alpha) to uniform deformations.
 inline Eigen::Vector3d zero_energy_force_pair(const Eigen::Matrix3d& world_f_i, const Eigen::Matrix3d& world_f_j,
                                               const Eigen::Vector3d& rest_x_ij, const Eigen::Vector3d& x_ij,
-                                              double rest_volumes, double w_rest, double young_modulus,
-                                              double alpha) {
+                                              double rest_volumes, double w_rest, double young_modulus, double alpha) {
   const double r = x_ij.norm();
   if (r <= 0.0) return Eigen::Vector3d::Zero();
   const Eigen::Vector3d n = x_ij / r;

@@ -25,34 +25,34 @@ enum ModelCode : std::uint32_t { kSaintVenantKirchhoff = 0, kCorotatedLinear = 1
 
 // One per deformable body.
 struct ElasticParameters {
-  std::uint32_t first_particle;   // canonical index of the body's first particle
-  std::uint32_t first_deformable; // its index among deformable particles
-  std::uint32_t model;            // ModelCode
-  float lambda;                   // Lame lambda [Pa]
-  float mu;                       // shear modulus [Pa]
-  float young_modulus;            // E [Pa], scales the zero-energy control
-  float zero_energy_stiffness;    // alpha [-], 0 = off
-  float damping;                  // mass-proportional rate [1/s], 0 = off (bodies held by fixed regions)
-  float particle_mass;            // m = rho0 dx^3 [kg]
-  float lowest_valid_volume_ratio; // det F at or below which a particle is counted as past the model's range
+  std::uint32_t first_particle;     // canonical index of the body's first particle
+  std::uint32_t first_deformable;   // its index among deformable particles
+  std::uint32_t model;              // ModelCode
+  float lambda;                     // Lame lambda [Pa]
+  float mu;                         // shear modulus [Pa]
+  float young_modulus;              // E [Pa], scales the zero-energy control
+  float zero_energy_stiffness;      // alpha [-], 0 = off
+  float damping;                    // mass-proportional rate [1/s], 0 = off (bodies held by fixed regions)
+  float particle_mass;              // m = rho0 dx^3 [kg]
+  float lowest_valid_volume_ratio;  // det F at or below which a particle is counted as past the model's range
 };
 
 struct DeformableView {
-  const ElasticParameters* bodies;   // per deformable body
-  const std::uint32_t* body_of;      // per deformable particle: index into bodies
-  const std::uint32_t* bond_count;   // per deformable particle: its number of rest bonds
+  const ElasticParameters* bodies;      // per deformable body
+  const std::uint32_t* body_of;         // per deformable particle: index into bodies
+  const std::uint32_t* bond_count;      // per deformable particle: its number of rest bonds
   const std::uint32_t* bond_neighbour;  // bond-major: the k-th rest neighbour (canonical index) of d at k * count + d
-  const Vec4* rest;                  // per deformable particle: X_i in the kernels' frame [m], w: V0_i [m^3]
-  const Mat3* correction;            // per deformable particle: L_i (model/deformable_rest_state.hpp)
-  SmoothingKernels smoothing;        // poly6 W (moment matrix, zero-energy weight), spiky grad W (d_ij)
-  const Vec4* position;              // canonical positions (read)
-  const Vec4* velocity;              // canonical velocities (read, damping)
-  Quat* rotation;                    // R_i as a quaternion; read as the warm start, then written
-  Mat3* corrected_stress_action;     // K_i L_i, K_i = V0_i R_i P_i (world frame) [N m] (elastic_force says why)
-  Mat3* deformation;                 // world-frame F_i = R_i (I + grad u_i), for the zero-energy control and
-                                     // the logged volume ratio det F_i
-  Vec4* elastic_force;               // canonical order (non-deformable entries stay zero) [N]
-  std::uint32_t count;               // deformable particles
+  const Vec4* rest;                     // per deformable particle: X_i in the kernels' frame [m], w: V0_i [m^3]
+  const Mat3* correction;               // per deformable particle: L_i (model/deformable_rest_state.hpp)
+  SmoothingKernels smoothing;           // poly6 W (moment matrix, zero-energy weight), spiky grad W (d_ij)
+  const Vec4* position;                 // canonical positions (read)
+  const Vec4* velocity;                 // canonical velocities (read, damping)
+  Quat* rotation;                       // R_i as a quaternion; read as the warm start, then written
+  Mat3* corrected_stress_action;        // K_i L_i, K_i = V0_i R_i P_i (world frame) [N m] (elastic_force says why)
+  Mat3* deformation;                    // world-frame F_i = R_i (I + grad u_i), for the zero-energy control and
+                                        // the logged volume ratio det F_i
+  Vec4* elastic_force;                  // canonical order (non-deformable entries stay zero) [N]
+  std::uint32_t count;                  // deformable particles
 };
 
 // Rest neighbour j (deformable index dj) of deformable particle i, derived from their rest positions
@@ -72,7 +72,8 @@ MSSPH_HD RestBond rest_bond(const DeformableView& v, Vec4 rest_i, std::uint32_t 
   const Vec4 rest_j = v.rest[dj];
   const Vec3 offset = xyz(rest_j) - xyz(rest_i);
   const float r2 = squared_norm(offset);
-  return {offset, v.smoothing.poly6(r2), v.smoothing.spiky_gradient(-1.0f * offset, v.smoothing.pair_distance(r2)), rest_j.w};
+  return {offset, v.smoothing.poly6(r2), v.smoothing.spiky_gradient(-1.0f * offset, v.smoothing.pair_distance(r2)),
+          rest_j.w};
 }
 
 // Deformable index of canonical particle j of `body`.
@@ -220,7 +221,8 @@ MSSPH_HD void store_rotation_and_stress(const DeformableView& v, std::uint32_t d
   const Mat3 rotation = rotation_matrix(q);
   const Mat3 grad_u = displacement_gradient(rotation, sums);
   v.rotation[d] = q;
-  v.corrected_stress_action[d] = stress_action(v.rest[d].w, rotation, first_piola_kirchhoff(body, grad_u)) * v.correction[d];
+  v.corrected_stress_action[d] =
+      stress_action(v.rest[d].w, rotation, first_piola_kirchhoff(body, grad_u)) * v.correction[d];
   v.deformation[d] = world_deformation_gradient(rotation, grad_u);
 }
 
@@ -273,7 +275,8 @@ MSSPH_HD Vec3 elastic_force_share(const DeformableView& v, std::uint32_t d, std:
     const std::uint32_t j = v.bond_neighbour[k * v.count + d];  // bond-major: FloatScene::bond_count
     const std::uint32_t dj = deformable_index(body, j);
     const RestBond bond = rest_bond(v, rest_i, dj);
-    force += elastic_force_pair(k_i, bond.volume_j * bond.grad_w, v.corrected_stress_action[dj], -rest_i.w * bond.grad_w);
+    force +=
+        elastic_force_pair(k_i, bond.volume_j * bond.grad_w, v.corrected_stress_action[dj], -rest_i.w * bond.grad_w);
     if (body.zero_energy_stiffness > 0.0f) {
       const Vec3 x_ij = xyz(v.position[j]) - x_i;
       if (norm(x_ij) > 0.0f) {
@@ -295,6 +298,8 @@ MSSPH_HD void store_elastic_force(const DeformableView& v, std::uint32_t d, Vec3
 }
 
 // The same in one lane (the host).
-MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) { store_elastic_force(v, d, elastic_force_share(v, d, 0, 1)); }
+MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) {
+  store_elastic_force(v, d, elastic_force_share(v, d, 0, 1));
+}
 
 }  // namespace mssph::kernels

@@ -18,10 +18,14 @@ Vec4 to_vec4(const Eigen::Vector3d& v) { return make_vec4(to_vec3(v), 0.0f); }
 
 BodyKindCode kind_code(BodyKind kind) {
   switch (kind) {
-    case BodyKind::fluid: return kFluid;
-    case BodyKind::deformable: return kDeformable;
-    case BodyKind::rigid: return kRigid;
-    case BodyKind::boundary: return kBoundary;
+    case BodyKind::fluid:
+      return kFluid;
+    case BodyKind::deformable:
+      return kDeformable;
+    case BodyKind::rigid:
+      return kRigid;
+    case BodyKind::boundary:
+      return kBoundary;
   }
   return kBoundary;
 }
@@ -35,7 +39,8 @@ double body_particle_mass(const ParticleSetup& setup, const BodySetup& body) {
   const double m = setup.mass[body.first];
   for (std::size_t i = body.first; i < body.first + body.count; ++i) {
     if (setup.mass[i] != m) {
-      throw InputError("body \"" + body.name + "\": particles of different SPH masses; the float backends keep one per body");
+      throw InputError("body \"" + body.name +
+                       "\": particles of different SPH masses; the float backends keep one per body");
     }
   }
   return m;
@@ -50,7 +55,8 @@ void add_rest_state(const ParticleSetup& setup, FloatScene& scene) {
   if (!any) return;
   const DeformableRestState rest = build_deformable_rest_state(setup);
   scene.own_rest_number_density.reserve(setup.size());
-  for (const double delta : rest.own_rest_number_density) scene.own_rest_number_density.push_back(static_cast<float>(delta));
+  for (const double delta : rest.own_rest_number_density)
+    scene.own_rest_number_density.push_back(static_cast<float>(delta));
   std::vector<std::vector<std::uint32_t>> neighbours_of;  // per deformable particle
   for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
     const BodySetup& body = setup.bodies[b];
@@ -95,7 +101,8 @@ void add_rest_state(const ParticleSetup& setup, FloatScene& scene) {
   scene.bond_neighbour.assign(longest * deformables, 0u);
   for (std::size_t d = 0; d < deformables; ++d) {
     scene.bond_count.push_back(static_cast<std::uint32_t>(neighbours_of[d].size()));
-    for (std::size_t k = 0; k < neighbours_of[d].size(); ++k) scene.bond_neighbour[k * deformables + d] = neighbours_of[d][k];
+    for (std::size_t k = 0; k < neighbours_of[d].size(); ++k)
+      scene.bond_neighbour[k * deformables + d] = neighbours_of[d][k];
   }
 }
 
@@ -104,8 +111,10 @@ void add_rest_state(const ParticleSetup& setup, FloatScene& scene) {
 GridShape choose_grid_shape(const std::vector<Vec4>& positions, double h) {
   GridShape shape;
   shape.inverse_cell_size = static_cast<float>(1.0 / h);
-  float lo[3] = {std::numeric_limits<float>::max(), std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
-  float hi[3] = {std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest()};
+  float lo[3] = {std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
+                 std::numeric_limits<float>::max()};
+  float hi[3] = {std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest(),
+                 std::numeric_limits<float>::lowest()};
   for (const Vec4& p : positions) {
     const float c[3] = {p.x, p.y, p.z};
     for (int a = 0; a < 3; ++a) {
@@ -214,10 +223,12 @@ BodyState to_body_state(const FloatScene& scene, const BodySums& sums, const Rig
     s.centre_of_mass = scene.to_world(rigid->position);
     s.linear_momentum = rigid->mass * Eigen::Vector3d(rigid->velocity.x, rigid->velocity.y, rigid->velocity.z);
     s.angular_momentum = {rigid->angular_momentum.x, rigid->angular_momentum.y, rigid->angular_momentum.z};
-    s.orientation = Eigen::Quaterniond(rigid->orientation.w, rigid->orientation.x, rigid->orientation.y, rigid->orientation.z);
+    s.orientation =
+        Eigen::Quaterniond(rigid->orientation.w, rigid->orientation.x, rigid->orientation.y, rigid->orientation.z);
     const Vec3 omega = angular_velocity(*rigid);
     s.angular_velocity = {omega.x, omega.y, omega.z};
-    s.kinetic_energy = 0.5 * s.linear_momentum.squaredNorm() / s.mass + 0.5 * s.angular_velocity.dot(s.angular_momentum);
+    s.kinetic_energy =
+        0.5 * s.linear_momentum.squaredNorm() / s.mass + 0.5 * s.angular_velocity.dot(s.angular_momentum);
     s.interaction_force = {rigid->interaction_force.x, rigid->interaction_force.y, rigid->interaction_force.z};
     s.interaction_torque = {rigid->interaction_torque.x, rigid->interaction_torque.y, rigid->interaction_torque.z};
     return s;

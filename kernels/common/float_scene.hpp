@@ -2,13 +2,13 @@
 // The float32 starting state shared by the `cpu` and `cuda` backends: a ParticleSetup converted
 // to the kernels' layout, the neighbour grid's shape, and the conversion of per-body sums back to
 // mssph::BodyState.
+#include "backend/backend.hpp"
 #include "body_sums.hpp"
 #include "cell_grid.hpp"
 #include "elastic_physics.hpp"
+#include "model/particle_setup.hpp"
 #include "particle_views.hpp"
 #include "rigid_physics.hpp"
-#include "model/particle_setup.hpp"
-#include "backend/backend.hpp"
 
 #include <vector>
 
@@ -41,8 +41,8 @@ struct FloatScene {
   // rest_bond).
   std::vector<std::uint32_t> bond_count;
   std::vector<std::uint32_t> bond_neighbour;  // canonical indices
-  std::vector<Vec4> rest;         // per deformable particle: X_i in the kernels' frame [m], w: V0_i [m^3]
-  std::vector<Mat3> correction;   // per deformable particle: L_i, the kernel-gradient correction
+  std::vector<Vec4> rest;                     // per deformable particle: X_i in the kernels' frame [m], w: V0_i [m^3]
+  std::vector<Mat3> correction;               // per deformable particle: L_i, the kernel-gradient correction
   // Canonical order, all n particles: the own-body number density at rest of a rigid or deformable
   // particle (model/deformable_rest_state.hpp; fluid_physics.hpp, takes_own_body_at_rest), 0 for
   // other kinds [1/m^3]; empty without rigid or deformable bodies.

@@ -5,8 +5,8 @@
 // elastic_physics.hpp), the time and step count and, where the backend keeps neighbour lists
 // (`cpu`, and `cuda` with teams of lanes), what makes a restart record the same lists. Everything
 // else a step computes from these before reading it.
-#include "float_scene.hpp"
 #include "backend/state_arrays.hpp"
+#include "float_scene.hpp"
 
 #include <cstdint>
 #include <vector>

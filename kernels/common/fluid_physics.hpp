@@ -188,9 +188,8 @@ MSSPH_HD DensitySum density_sum_recording(const SortedView& v, std::uint32_t s, 
                                           std::uint32_t left_out, const NeighbourLists& lists, std::uint32_t list,
                                           float record_radius2) {
   ListRecorder recorder(lists, list);
-  const DensitySum sum = density_sum_over(
-      v, s, grid_share(v, s, lane, lanes, left_out),
-      [&](std::uint32_t t, float r2) {
+  const DensitySum sum =
+      density_sum_over(v, s, grid_share(v, s, lane, lanes, left_out), [&](std::uint32_t t, float r2) {
         if (r2 < record_radius2) recorder.record(t);
       });
   lists.count[list] = recorder.count();
@@ -216,8 +215,8 @@ MSSPH_HD DensitySum density_sum_keeping_within(const SortedView& v, const Neighb
                                                const NeighbourLists& within, std::uint32_t s) {
   RowWriter kept(within, s);
   const float h2 = v.step.smoothing.h2;
-  const DensitySum sum = density_sum_over(v, s, neighbours_of(v, recorded, s),
-                                          [&](std::uint32_t t, float r2) { kept.offer(t, r2 < h2); });
+  const DensitySum sum =
+      density_sum_over(v, s, neighbours_of(v, recorded, s), [&](std::uint32_t t, float r2) { kept.offer(t, r2 < h2); });
   within.count[s] = recorded.count[s] >= recorded.capacity ? within.capacity : kept.count();
   return sum;
 }
@@ -265,8 +264,7 @@ MSSPH_HD float interface_viscosity(float mu_i, float mu_j) {
 // f_ij = -(1 / g) (V_i^2 P_i + V_j^2 P_j) grad W(x_i - x_j), where eq. 2 as printed has
 // V_i V_j (P_i + P_j) / 2; the reference's pressure_force_pair says why, and what the lattice
 // calibration g is.
-MSSPH_HD Vec3 pressure_force_pair(VolumePressure i, VolumePressure j, float inverse_gradient_consistency,
-                                  Vec3 grad_w) {
+MSSPH_HD Vec3 pressure_force_pair(VolumePressure i, VolumePressure j, float inverse_gradient_consistency, Vec3 grad_w) {
   const float pressure_term = i.volume * i.volume * i.pressure + j.volume * j.volume * j.pressure;
   return (-pressure_term * inverse_gradient_consistency) * grad_w;
 }
@@ -314,9 +312,7 @@ struct ForceSum {
   float nearest_boundary2;
 };
 
-MSSPH_HD ForceSum zero_force_sum() {
-  return {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, std::numeric_limits<float>::infinity()};
-}
+MSSPH_HD ForceSum zero_force_sum() { return {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, std::numeric_limits<float>::infinity()}; }
 
 // Adds candidate t's pressure and viscosity forces on i, and takes t's distance if it is a
 // boundary neighbour. For a fluid particle, t's volume, pressure and velocity are loaded with its
@@ -355,10 +351,10 @@ MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
     u_j = v.velocity[t];
   }
   const PairDistance d = v.step.smoothing.pair_distance(r2);
-  const Vec3 pressure = pressure_force_pair(i.vp, vp_j, v.step.inverse_gradient_consistency,
-                                            v.step.smoothing.spiky_gradient(r_ij, d));
-  const Vec3 viscosity = viscosity_force_pair(mu, i.vp.volume, vp_j.volume,
-                                              v.step.smoothing.viscosity_laplacian(d.r), i.u, xyz(u_j));
+  const Vec3 pressure =
+      pressure_force_pair(i.vp, vp_j, v.step.inverse_gradient_consistency, v.step.smoothing.spiky_gradient(r_ij, d));
+  const Vec3 viscosity =
+      viscosity_force_pair(mu, i.vp.volume, vp_j.volume, v.step.smoothing.viscosity_laplacian(d.r), i.u, xyz(u_j));
   sum.pressure += pressure;
   sum.viscosity += viscosity;
   if (!same_body) sum.interaction += interaction_force(pressure, viscosity);
@@ -380,9 +376,8 @@ MSSPH_HD ForceSum force_sum_over(const SortedView& v, const ForceParticle& i, Ca
 // add_force_pair tests again.
 template <class Held>
 MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, Held& held) {
-  return force_sum_over(v, i, [&](auto&& visit) {
-    v.grid.for_each_candidate_within(i.x, v.step.smoothing.h2, v.position, held, visit);
-  });
+  return force_sum_over(
+      v, i, [&](auto&& visit) { v.grid.for_each_candidate_within(i.x, v.step.smoothing.h2, v.position, held, visit); });
 }
 
 // The same sum, canonical index i, for a particle that took near notes (takes_near_notes): its
@@ -440,14 +435,14 @@ MSSPH_HD void leapfrog(Vec4& position, Vec4& velocity, Vec3 force, float mass, b
 // Step 4 of sorted particle s before its wall check, in registers: nothing is written, so every
 // lane of a GPU team, holding the same force sum, computes the same bits.
 struct Advance {
-  std::uint32_t i;     // canonical index
-  bool integrates;     // fluid or deformable: advanced by the leap-frog; the others only record
-                       // their interaction force
-  bool may_hit_wall;   // integrates, and its move may end within d_wall of a boundary particle
-                       // (ForceSum::nearest_boundary2)
-  Vec3 previous;       // x_n [m]
-  Vec4 position;       // x_{n+1} [m]
-  Vec4 velocity;       // v_{n+1/2} [m/s]
+  std::uint32_t i;    // canonical index
+  bool integrates;    // fluid or deformable: advanced by the leap-frog; the others only record
+                      // their interaction force
+  bool may_hit_wall;  // integrates, and its move may end within d_wall of a boundary particle
+                      // (ForceSum::nearest_boundary2)
+  Vec3 previous;      // x_n [m]
+  Vec4 position;      // x_{n+1} [m]
+  Vec4 velocity;      // v_{n+1/2} [m/s]
 };
 
 // Advances particle p, canonical index i, by the leap-frog under its total force: its pressure and

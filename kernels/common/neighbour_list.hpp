@@ -81,7 +81,8 @@ class ListRecorder {
 // takes every entry once the row is full: overflowed).
 class RowWriter {
  public:
-  MSSPH_HD RowWriter(const NeighbourLists& lists, std::uint32_t s) : row_(lists.first_entry(s)), last_(lists.capacity - 1) {}
+  MSSPH_HD RowWriter(const NeighbourLists& lists, std::uint32_t s)
+      : row_(lists.first_entry(s)), last_(lists.capacity - 1) {}
 
   MSSPH_HD void offer(std::uint32_t t, bool keep) {
     row_[count_ < last_ ? count_ : last_] = t;

@@ -27,8 +27,8 @@ struct BodyParameters {
 
 struct StepParameters {
   SmoothingKernels smoothing;
-  float dt;                     // [s]
-  Vec3 gravity;                 // [m/s^2]
+  float dt;                            // [s]
+  Vec3 gravity;                        // [m/s^2]
   float inverse_rest_number_density;   // 1 / delta0 [m^3]
   float inverse_gradient_consistency;  // 1 / g, see model/lattice_calibration.hpp
   float wall_exclusion_distance;       // d_wall: closest approach to a boundary particle [m], model/wall_exclusion.hpp
@@ -52,8 +52,8 @@ MSSPH_HD std::uint32_t index_from_float_bits(float f) {
 MSSPH_HD std::uint32_t body_of(const Vec4& sorted_position) { return index_from_float_bits(sorted_position.w); }
 
 struct alignas(8) VolumePressure {  // aligned: one 8-byte load
-  float volume;    // V = m / rho [m^3]
-  float pressure;  // P [Pa]
+  float volume;                     // V = m / rho [m^3]
+  float pressure;                   // P [Pa]
 };
 
 // Loads of a sorted array that no thread writes while the pass reading it runs, issued where they
@@ -83,9 +83,9 @@ struct SortedView {
   StepParameters step;
   const BodyParameters* bodies;
   CellRanges grid;
-  const Vec4* position;                  // sorted: xyz [m], w = body index bits
-  const Vec4* velocity;                  // sorted: xyz [m/s]
-  const std::uint32_t* id;               // sorted -> canonical index
+  const Vec4* position;                   // sorted: xyz [m], w = body index bits
+  const Vec4* velocity;                   // sorted: xyz [m/s]
+  const std::uint32_t* id;                // sorted -> canonical index
   const VolumePressure* volume_pressure;  // sorted, written by the density pass
   // Canonical: a rigid or deformable particle's own-body number density at rest [1/m^3], the part
   // of its density its walks do not sum (fluid_physics.hpp, takes_own_body_at_rest); null without
@@ -99,11 +99,11 @@ enum HoldCode : std::uint8_t { kFree = 0, kFixedRegion = 1, kLeftDomain = 2 };
 
 // The evolving canonical state.
 struct CanonicalState {
-  Vec4* position;                 // xyz [m]
-  Vec4* velocity;                 // xyz [m/s]
-  Vec4* interaction_force;        // xyz [N]: from other bodies, eq. 7
-  const Vec4* elastic_force;      // xyz [N]: deformable particles, else zero (may be null)
-  std::uint8_t* fixed;            // HoldCode: held by a fixed region, or since it left the domain
+  Vec4* position;             // xyz [m]
+  Vec4* velocity;             // xyz [m/s]
+  Vec4* interaction_force;    // xyz [N]: from other bodies, eq. 7
+  const Vec4* elastic_force;  // xyz [N]: deformable particles, else zero (may be null)
+  std::uint8_t* fixed;        // HoldCode: held by a fixed region, or since it left the domain
 };
 
 }  // namespace mssph::kernels

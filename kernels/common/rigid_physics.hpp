@@ -11,17 +11,17 @@
 namespace mssph::kernels {
 
 struct RigidBody {
-  std::uint32_t first, count;      // canonical particle range
-  float mass;                      // [kg]
-  Mat3 inverse_inertia_body;       // [1/(kg m^2)]
-  Vec3 position;                   // centre of mass [m]
+  std::uint32_t first, count;  // canonical particle range
+  float mass;                  // [kg]
+  Mat3 inverse_inertia_body;   // [1/(kg m^2)]
+  Vec3 position;               // centre of mass [m]
   Quat orientation;
-  Vec3 velocity;                   // [m/s]
-  Vec3 angular_momentum;           // [kg m^2/s]
-  Vec3 external_force;             // haptic coupling [N]
-  Vec3 external_torque;            // [N m]
-  Vec3 interaction_force;          // last step's sum over the body's particles, eq. 8 [N]
-  Vec3 interaction_torque;         // about the centre of mass, eq. 9 [N m]
+  Vec3 velocity;            // [m/s]
+  Vec3 angular_momentum;    // [kg m^2/s]
+  Vec3 external_force;      // haptic coupling [N]
+  Vec3 external_torque;     // [N m]
+  Vec3 interaction_force;   // last step's sum over the body's particles, eq. 8 [N]
+  Vec3 interaction_torque;  // about the centre of mass, eq. 9 [N m]
 };
 
 // omega = R I_body^-1 R^T L.

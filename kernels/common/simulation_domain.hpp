@@ -7,8 +7,8 @@ namespace mssph::kernels {
 
 // Region::contains in the kernels' frame: inside or on the faces.
 MSSPH_HD bool inside_domain(const StepParameters& step, Vec3 x) {
-  return x.x >= step.domain_min.x && x.y >= step.domain_min.y && x.z >= step.domain_min.z &&
-         x.x <= step.domain_max.x && x.y <= step.domain_max.y && x.z <= step.domain_max.z;
+  return x.x >= step.domain_min.x && x.y >= step.domain_min.y && x.z >= step.domain_min.z && x.x <= step.domain_max.x &&
+         x.y <= step.domain_max.y && x.z <= step.domain_max.z;
 }
 
 // A fluid or deformable particle that has just left the domain is deactivated: held from now on

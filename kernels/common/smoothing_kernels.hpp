@@ -20,19 +20,21 @@ struct PairDistance {
 struct SmoothingKernels {
   float h;
   float h2;
-  float poly6_coefficient;     // 315 / (64 pi h^9)
+  float poly6_coefficient;        // 315 / (64 pi h^9)
   float spiky_value_coefficient;  // 15 / (pi h^6)
-  float spiky_coefficient;     // -45 / (pi h^6)
-  float laplacian_coefficient;  // 45 / (pi h^6)
-  float coincident2;            // (1e-12 h)^2: below it a pair counts as coincident (PairDistance)
+  float spiky_coefficient;        // -45 / (pi h^6)
+  float laplacian_coefficient;    // 45 / (pi h^6)
+  float coincident2;              // (1e-12 h)^2: below it a pair counts as coincident (PairDistance)
 
   static SmoothingKernels for_support(double support) {
     const double pi = 3.14159265358979323846;
     const double h6 = support * support * support * support * support * support;
-    return {static_cast<float>(support), static_cast<float>(support * support),
+    return {static_cast<float>(support),
+            static_cast<float>(support * support),
             static_cast<float>(315.0 / (64.0 * pi * h6 * support * support * support)),
             static_cast<float>(15.0 / (pi * h6)),
-            static_cast<float>(-45.0 / (pi * h6)), static_cast<float>(45.0 / (pi * h6)),
+            static_cast<float>(-45.0 / (pi * h6)),
+            static_cast<float>(45.0 / (pi * h6)),
             static_cast<float>(1e-24 * support * support)};
   }
 

@@ -91,7 +91,9 @@ MSSPH_HD Mat3 operator*(float s, const Mat3& a) {
   for (int k = 0; k < 9; ++k) c.m[k] = s * a.m[k];
   return c;
 }
-MSSPH_HD Mat3 transpose(const Mat3& a) { return Mat3{{a.m[0], a.m[3], a.m[6], a.m[1], a.m[4], a.m[7], a.m[2], a.m[5], a.m[8]}}; }
+MSSPH_HD Mat3 transpose(const Mat3& a) {
+  return Mat3{{a.m[0], a.m[3], a.m[6], a.m[1], a.m[4], a.m[7], a.m[2], a.m[5], a.m[8]}};
+}
 MSSPH_HD float trace(const Mat3& a) { return a.m[0] + a.m[4] + a.m[8]; }
 // a (x) b = a b^T
 MSSPH_HD Mat3 outer(Vec3 a, Vec3 b) {

@@ -47,10 +47,13 @@ void CpuBackend::set_external_wrench(std::size_t body, const Eigen::Vector3d& fo
 }
 
 SortedView CpuBackend::sorted_view() const {
-  return SortedView{scene_.step,           scene_.bodies.data(),
+  return SortedView{scene_.step,
+                    scene_.bodies.data(),
                     CellRanges{scene_.grid, cell_start_.data(), nullptr, cell_middle_.data()},
-                    sorted_position_.data(), sorted_velocity_.data(),
-                    sorted_id_.data(),       volume_pressure_.data(),
+                    sorted_position_.data(),
+                    sorted_velocity_.data(),
+                    sorted_id_.data(),
+                    volume_pressure_.data(),
                     scene_.own_rest_number_density.empty() ? nullptr : scene_.own_rest_number_density.data()};
 }
 
@@ -149,11 +152,20 @@ void CpuBackend::partition_by_list_length() {
 }
 
 DeformableView CpuBackend::deformable_view() {
-  return DeformableView{scene_.elastic_bodies.data(), scene_.deformable_body.data(), scene_.bond_count.data(),
-                        scene_.bond_neighbour.data(), scene_.rest.data(),             scene_.correction.data(),
-                        scene_.step.smoothing,        scene_.position.data(),         scene_.velocity.data(),
-                        rotation_.data(),             corrected_stress_action_.data(),          deformation_.data(),
-                        elastic_force_.data(),        static_cast<std::uint32_t>(scene_.deformable_body.size())};
+  return DeformableView{scene_.elastic_bodies.data(),
+                        scene_.deformable_body.data(),
+                        scene_.bond_count.data(),
+                        scene_.bond_neighbour.data(),
+                        scene_.rest.data(),
+                        scene_.correction.data(),
+                        scene_.step.smoothing,
+                        scene_.position.data(),
+                        scene_.velocity.data(),
+                        rotation_.data(),
+                        corrected_stress_action_.data(),
+                        deformation_.data(),
+                        elastic_force_.data(),
+                        static_cast<std::uint32_t>(scene_.deformable_body.size())};
 }
 
 // Step 1, R_i of deformable particles, with their stresses and elastic forces (step 3 of
@@ -214,9 +226,9 @@ void CpuBackend::advance_rigid_bodies() {
 void CpuBackend::step() {
   timed(phase_seconds_[kNeighbours], [&] { update_neighbour_lists(); });
   timed(phase_seconds_[kRotations], [&] { compute_rotations_and_elastic_forces(); });  // step 1
-  timed(phase_seconds_[kDensities], [&] { compute_densities(); });                       // step 2
-  timed(phase_seconds_[kForces], [&] { compute_forces_and_advance_particles(); });       // step 3 (+ 4: leap-frog)
-  timed(phase_seconds_[kIntegration], [&] { advance_rigid_bodies(); });                  // step 4: rigid bodies
+  timed(phase_seconds_[kDensities], [&] { compute_densities(); });                     // step 2
+  timed(phase_seconds_[kForces], [&] { compute_forces_and_advance_particles(); });     // step 3 (+ 4: leap-frog)
+  timed(phase_seconds_[kIntegration], [&] { advance_rigid_bodies(); });                // step 4: rigid bodies
   time_ += setup_.dt;
 }
 
@@ -232,14 +244,16 @@ ForceEvaluation CpuBackend::evaluate_forces() {
   std::vector<ForceSum> sums(setup_.size());
   const auto n = static_cast<std::uint32_t>(setup_.size());
 #pragma omp parallel for schedule(static)
-  for (std::uint32_t s = 0; s < n; ++s) sums[s] = force_sum_over(view, load_force_particle(view, s), neighbours_of(view, lists, s));
+  for (std::uint32_t s = 0; s < n; ++s)
+    sums[s] = force_sum_over(view, load_force_particle(view, s), neighbours_of(view, lists, s));
   return pack_force_evaluation(scene_, sorted_id_, volume_pressure_, sums, elastic_force_, rotation_);
 }
 
 void CpuBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& positions) {
   for (std::size_t i = 0; i < setup_.size(); ++i) {
     const std::uint32_t kind = scene_.bodies[scene_.body[i]].kind;
-    if (kind == kFluid || kind == kDeformable) scene_.position[i] = make_vec4(scene_.to_kernel_frame(positions[i]), 0.0f);
+    if (kind == kFluid || kind == kDeformable)
+      scene_.position[i] = make_vec4(scene_.to_kernel_frame(positions[i]), 0.0f);
   }
   rebuild_requested_ = true;
 }
@@ -288,7 +302,8 @@ std::vector<BodyState> CpuBackend::body_states() {
     for (const ElasticParameters& elastic : scene_.elastic_bodies) {
       if (elastic.first_particle != body.first || body.kind != BodyKind::deformable) continue;
       for (std::size_t k = 0; k < body.count; ++k) {
-        add_volume_ratio(sums, determinant(deformation_[elastic.first_deformable + k]), elastic.lowest_valid_volume_ratio);
+        add_volume_ratio(sums, determinant(deformation_[elastic.first_deformable + k]),
+                         elastic.lowest_valid_volume_ratio);
       }
     }
     const std::uint32_t rigid = scene_.bodies[b].rigid_index;

@@ -5,8 +5,8 @@
 // only when they expire (list_skin.hpp).
 #include "../common/float_scene.hpp"
 #include "../common/neighbour_list.hpp"
-#include "particle_partition.hpp"
 #include "backend/backend.hpp"
+#include "particle_partition.hpp"
 
 #include <array>
 #include <cstdint>
@@ -51,7 +51,7 @@ class CpuBackend final : public Backend {
   ParticleSetup setup_;
   FloatScene scene_;
   // In the cell order of the last grid rebuild.
-  std::vector<std::uint32_t> cell_start_;  // cell_count() + 1 entries
+  std::vector<std::uint32_t> cell_start_;   // cell_count() + 1 entries
   std::vector<std::uint32_t> cell_middle_;  // CellRanges::cell_middle: where each cell's upper half begins
   std::vector<std::uint32_t> sorted_id_;
   std::vector<Vec4> sorted_position_, sorted_velocity_;  // copied every step

@@ -44,7 +44,7 @@ class ParticlePartition {
   template <class Body>
   void for_each(Body&& body) const {
     const std::uint32_t count = parts();
-#pragma omp parallel num_threads(static_cast<int>(count))
+#pragma omp parallel num_threads(static_cast <int>(count))
     {
       const auto threads = static_cast<std::uint32_t>(omp_get_num_threads());
       for (auto part = static_cast<std::uint32_t>(omp_get_thread_num()); part < count; part += threads) {

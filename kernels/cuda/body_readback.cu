@@ -44,7 +44,8 @@ BodyReadback::BodyReadback(const FloatScene& scene, const std::vector<BodySetup>
       rigid_bodies_(scene.rigid_bodies.size()) {
   for (const RigidBody& r : scene.rigid_bodies) {
     float reach = 0.0f;
-    for (std::uint32_t i = r.first; i < r.first + r.count; ++i) reach = std::max(reach, norm(xyz(scene.rest_offset[i])));
+    for (std::uint32_t i = r.first; i < r.first + r.count; ++i)
+      reach = std::max(reach, norm(xyz(scene.rest_offset[i])));
     rigid_reach_.push_back(reach);
   }
   set_rigid_bodies(scene.rigid_bodies);  // what the device starts from

@@ -29,9 +29,9 @@ class BodyReadback {
  private:
   const FloatScene& scene_;
   const std::vector<BodySetup>& bodies_;
-  std::vector<BodyChunk> chunks_;   // the body chunks, in the order of their partial sums
-  std::vector<float> rigid_reach_;  // per movable rigid body: max |r0| over its particles [m]
-  MappedHostBuffer<BodySums> partial_sums_;  // per body chunk, stored by the body-sums kernel
+  std::vector<BodyChunk> chunks_;             // the body chunks, in the order of their partial sums
+  std::vector<float> rigid_reach_;            // per movable rigid body: max |r0| over its particles [m]
+  MappedHostBuffer<BodySums> partial_sums_;   // per body chunk, stored by the body-sums kernel
   MappedHostBuffer<RigidBody> rigid_bodies_;  // as the last step left them
 };
 

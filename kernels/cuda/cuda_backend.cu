@@ -82,7 +82,7 @@ class CudaBackend final : public Backend {
 
   cudaStream_t stream_ = nullptr;
   std::array<cudaEvent_t, kPhaseCount + 1> events_{};  // events_[p], events_[p + 1] enclose phase p
-  StepGraph plain_step_;  // the step alone
+  StepGraph plain_step_;                               // the step alone
   StepGraph timed_step_;  // the step with the phase events, which lengthen it (Backend::set_phase_timing)
   bool phase_timing_ = false;
   bool last_step_timed_ = false;
@@ -96,8 +96,8 @@ CudaBackend::CudaBackend(ParticleSetup setup)
       scene_(cuda_scene(setup_, team_lanes_)),
       chunks_(make_chunk_tables(scene_, setup_.bodies)),
       deformable_team_lanes_(choose_bond_team_lanes(scene_.deformable_body.size(), resident_threads())),
-      state_(allocate_device_state(scene_, chunks_, grid_kernel_blocks(setup_.size(), scene_.grid.cell_count()), team_lanes_,
-                                   device_name_)),
+      state_(allocate_device_state(scene_, chunks_, grid_kernel_blocks(setup_.size(), scene_.grid.cell_count()),
+                                   team_lanes_, device_name_)),
       readback_(scene_, setup_.bodies, chunks_),
       external_wrench_(scene_.rigid_bodies.size()) {
   cuda_check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "create stream");
@@ -136,7 +136,8 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
   // External event records: the graph's replays record them, so their times can be read after
   // each launch (a plain record during capture only orders the graph's nodes).
   const auto mark = [&](std::size_t event) {
-    if (timed) cuda_check(cudaEventRecordWithFlags(events_[event], stream, cudaEventRecordExternal), "record phase event");
+    if (timed)
+      cuda_check(cudaEventRecordWithFlags(events_[event], stream, cudaEventRecordExternal), "record phase event");
   };
   mark(kNeighbours);
   record_neighbour_grid(stream);
@@ -279,9 +280,10 @@ void CudaBackend::set_external_wrench(std::size_t body, const Eigen::Vector3d& f
   std::array<Vec3, 2>& wrench = external_wrench_[index];
   wrench = {to_vec3(force), to_vec3(torque)};
   static_assert(offsetof(RigidBody, external_torque) == offsetof(RigidBody, external_force) + sizeof(Vec3));
-  cuda_check(cudaMemcpyAsync(reinterpret_cast<char*>(state_.rigid_bodies.data() + index) + offsetof(RigidBody, external_force),
-                             wrench.data(), sizeof wrench, cudaMemcpyHostToDevice, stream_),
-             "upload external wrench");
+  cuda_check(
+      cudaMemcpyAsync(reinterpret_cast<char*>(state_.rigid_bodies.data() + index) + offsetof(RigidBody, external_force),
+                      wrench.data(), sizeof wrench, cudaMemcpyHostToDevice, stream_),
+      "upload external wrench");
 }
 
 ParticleSnapshot CudaBackend::snapshot() {
@@ -323,6 +325,8 @@ std::size_t cuda_backend_bytes(const ParticleSetup& setup) {
       .total_bytes;
 }
 
-std::unique_ptr<Backend> make_cuda_backend(ParticleSetup setup) { return std::make_unique<CudaBackend>(std::move(setup)); }
+std::unique_ptr<Backend> make_cuda_backend(ParticleSetup setup) {
+  return std::make_unique<CudaBackend>(std::move(setup));
+}
 
 }  // namespace mssph::kernels

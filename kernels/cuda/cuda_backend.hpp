@@ -1,8 +1,8 @@
 #pragma once
 // The `cuda` backend: float32 kernels for the whole step on an NVIDIA GPU, captured in one CUDA
 // graph. Declared without CUDA types so code built by the host compiler can create it.
-#include "model/particle_setup.hpp"
 #include "backend/backend.hpp"
+#include "model/particle_setup.hpp"
 
 #include <memory>
 #include <string>

@@ -14,7 +14,8 @@ class CudaError : public std::runtime_error {
 
 inline void cuda_check(cudaError_t status, const char* what) {
   if (status != cudaSuccess) {
-    throw CudaError(std::string("CUDA: ") + what + ": " + cudaGetErrorName(status) + " (" + cudaGetErrorString(status) + ")");
+    throw CudaError(std::string("CUDA: ") + what + ": " + cudaGetErrorName(status) + " (" + cudaGetErrorString(status) +
+                    ")");
   }
 }
 

@@ -47,7 +47,7 @@ struct DeviceArrays {
   Array<Vec4> sorted_position, sorted_velocity;
   Array<VolumePressure> volume_pressure;
   Array<std::uint8_t> near_other_body;  // sorted, from the density pass: may_feel_forces' second argument
-  Array<std::uint32_t> block_total;  // the grid kernel's: each block's share of the cell table
+  Array<std::uint32_t> block_total;     // the grid kernel's: each block's share of the cell table
   // A team's neighbour lists, one per lane, where each sorted particle stood when they were
   // recorded, and when to record them again (list_skin.hpp). Empty for one lane per particle.
   Array<std::uint32_t> list_count, list_index;

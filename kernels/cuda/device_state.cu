@@ -94,11 +94,20 @@ NearNotes step_near_notes(DeviceState& state) {
 }
 
 DeformableView deformable_view(const FloatScene& scene, DeviceState& state) {
-  return DeformableView{state.elastic_bodies.data(), state.deformable_body.data(), state.bond_count.data(),
-                        state.bond_neighbour.data(), state.rest.data(),               state.correction.data(),
-                        scene.step.smoothing,        state.position.data(),           state.velocity.data(),
-                        state.rotation.data(),       state.corrected_stress_action.data(),      state.deformation.data(),
-                        state.elastic_force.data(),  static_cast<std::uint32_t>(state.deformable_body.size())};
+  return DeformableView{state.elastic_bodies.data(),
+                        state.deformable_body.data(),
+                        state.bond_count.data(),
+                        state.bond_neighbour.data(),
+                        state.rest.data(),
+                        state.correction.data(),
+                        scene.step.smoothing,
+                        state.position.data(),
+                        state.velocity.data(),
+                        state.rotation.data(),
+                        state.corrected_stress_action.data(),
+                        state.deformation.data(),
+                        state.elastic_force.data(),
+                        static_cast<std::uint32_t>(state.deformable_body.size())};
 }
 
 }  // namespace mssph::kernels

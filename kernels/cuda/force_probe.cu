@@ -16,7 +16,7 @@ __global__ void force_probe_kernel(SortedView view, const std::uint8_t* near_oth
   const ForceParticle p = load_force_particle(view, s);
   HeldSegments<kHeldSegments> held;
   forces[s] = may_feel_forces(p.parameters, near_other_body[s] != 0) ? force_sum(view, p, view.id[s], notes, held)
-                                                                      : zero_force_sum();
+                                                                     : zero_force_sum();
 }
 
 }  // namespace
@@ -26,7 +26,7 @@ ForceEvaluation probe_forces(const FloatScene& scene, DeviceState& state, const 
   // Outside the scene's device arrays: a probe runs in tests and validation, never in a step.
   DeviceBuffer<ForceSum> forces(n);
   force_probe_kernel<<<blocks_for(n), kBlock, 0, stream>>>(sorted_view(scene, state), state.near_other_body.data(),
-                                                             notes, forces.data());
+                                                           notes, forces.data());
   cuda_check(cudaGetLastError(), "launch force probe");
   cuda_check(cudaStreamSynchronize(stream), "evaluate forces");
   const bool deformable = state.elastic_force.size() > 0;

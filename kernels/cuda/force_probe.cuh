@@ -1,8 +1,8 @@
 #pragma once
 // The force probe: the pressure and viscosity sums of every particle written out instead of
 // integrated, so tests and validation compare backends force by force (Backend::evaluate_forces).
-#include "device_state.cuh"
 #include "backend/backend.hpp"
+#include "device_state.cuh"
 
 namespace mssph::kernels {
 

@@ -23,18 +23,18 @@ struct GridArrays {
   const Vec4* position;
   const Vec4* velocity;
   const std::uint32_t* body;
-  std::uint32_t* keys;         // half keys (GridShape::half_key_of)
+  std::uint32_t* keys;  // half keys (GridShape::half_key_of)
   std::uint32_t* cell_count;
   std::uint32_t* cell_start;
   std::uint32_t* cell_middle;
-  std::uint16_t* cell_body;    // null where no walk leaves rows out (CellRanges)
+  std::uint16_t* cell_body;     // null where no walk leaves rows out (CellRanges)
   std::uint32_t* unordered_id;  // half ids (half_id)
-  std::uint32_t* block_total;  // one per block of the kernel (scan_cell_counts)
+  std::uint32_t* block_total;   // one per block of the kernel (scan_cell_counts)
   std::uint32_t* sorted_id;
   Vec4* sorted_position;
   Vec4* sorted_velocity;
-  Vec4* list_origin;           // where each sorted particle stood at the last rebuild
-  ListRefreshState* refresh;   // whether to rebuild, and whether this step did
+  Vec4* list_origin;          // where each sorted particle stood at the last rebuild
+  ListRefreshState* refresh;  // whether to rebuild, and whether this step did
 
   // Copies the particle of place s in cell order (sorted_id) there; returns its canonical index.
   __device__ std::uint32_t copy_into_cell_order(std::uint32_t s) const {

@@ -24,9 +24,8 @@ __device__ Wrench load_chunk_wrench(const Wrench* partial, std::uint32_t c) {
 // the threads' sums, and integrates the body (eq. 8, 9): which block does it varies, the sums'
 // order does not, so runs repeat bit for bit. The body goes to `host_copy` too.
 __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBody* bodies, RigidBody* host_copy,
-                                              CanonicalState state, Wrench* partial,
-                                              const std::uint32_t* first_chunk, std::uint32_t* tickets,
-                                              StepParameters step) {
+                                              CanonicalState state, Wrench* partial, const std::uint32_t* first_chunk,
+                                              std::uint32_t* tickets, StepParameters step) {
   using BlockReduce = cub::BlockReduce<Wrench, kBlock>;
   __shared__ typename BlockReduce::TempStorage reduce_storage;
   __shared__ bool last;

@@ -77,7 +77,8 @@ __global__ void rotation_stress_kernel(DeformableView view) {
     if (lane == 0) team_sums[threadIdx.x / Lanes] = sums;
     __syncthreads();
     const std::uint32_t particle = blockIdx.x * kTeams + threadIdx.x;
-    if (threadIdx.x < kTeams && particle < view.count) store_rotation_and_stress(view, particle, team_sums[threadIdx.x]);
+    if (threadIdx.x < kTeams && particle < view.count)
+      store_rotation_and_stress(view, particle, team_sums[threadIdx.x]);
   }
 }
 
@@ -139,8 +140,7 @@ __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(
     if constexpr (Lanes > 1) {
       const std::uint32_t list = blockIdx.x * blockDim.x + threadIdx.x;
       if (refresh->recorded) {
-        sum = density_sum_recording(view, s, lane, Lanes, cells_left_out_by_warp(view, s), lists, list,
-                                    record_radius2);
+        sum = density_sum_recording(view, s, lane, Lanes, cells_left_out_by_warp(view, s), lists, list, record_radius2);
         if (lists.count[list] >= lists.capacity) refresh->requested = 1;
       } else {
         sum = density_sum_listed(view, s, lane, Lanes, lists, list);
@@ -235,10 +235,18 @@ __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kS
 template <class Launch>
 void with_team_lanes(unsigned lanes, Launch&& launch) {
   switch (lanes) {
-    case 8: launch(std::integral_constant<unsigned, 8>{}); break;
-    case 4: launch(std::integral_constant<unsigned, 4>{}); break;
-    case 2: launch(std::integral_constant<unsigned, 2>{}); break;
-    default: launch(std::integral_constant<unsigned, 1>{}); break;
+    case 8:
+      launch(std::integral_constant<unsigned, 8>{});
+      break;
+    case 4:
+      launch(std::integral_constant<unsigned, 4>{});
+      break;
+    case 2:
+      launch(std::integral_constant<unsigned, 2>{});
+      break;
+    default:
+      launch(std::integral_constant<unsigned, 1>{});
+      break;
   }
 }
 

@@ -22,12 +22,12 @@ struct BackendInfo {
 
 // Body-level state at the current time, world frame, SI units.
 struct BodyState {
-  double mass = 0.0;                                            // [kg]
+  double mass = 0.0;                                           // [kg]
   Eigen::Vector3d centre_of_mass = Eigen::Vector3d::Zero();    // [m]
   Eigen::Vector3d linear_momentum = Eigen::Vector3d::Zero();   // [kg m/s]
   Eigen::Vector3d angular_momentum = Eigen::Vector3d::Zero();  // about the centre of mass [kg m^2/s]
-  double kinetic_energy = 0.0;                                  // [J]
-  double max_speed = 0.0;                                       // fastest particle [m/s]
+  double kinetic_energy = 0.0;                                 // [J]
+  double max_speed = 0.0;                                      // fastest particle [m/s]
   // Rigid bodies: orientation and angular velocity (identity and zero for other kinds).
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // [rad/s]
@@ -38,8 +38,8 @@ struct BodyState {
   // Deformable bodies: the compression of their particles' neighbourhoods as the volume ratio
   // J = det F = det(I + grad u) of paper eq. 4's displacement gradient (1 at rest, 0 collapsed,
   // negative inverted), from the last step's elastic forces. Other bodies keep 1 and 0.
-  double min_volume_ratio = 1.0;      // smallest J over the body's particles [-]
-  std::size_t compressed_count = 0;   // particles with J <= lowest_valid_volume_ratio(model) (config/elastic_model.hpp)
+  double min_volume_ratio = 1.0;     // smallest J over the body's particles [-]
+  std::size_t compressed_count = 0;  // particles with J <= lowest_valid_volume_ratio(model) (config/elastic_model.hpp)
   // Fluid and deformable bodies: particles deactivated since they left the simulation domain.
   std::size_t left_domain_count = 0;
 };
@@ -59,8 +59,8 @@ struct ForceEvaluation {
   std::vector<double> pressure;                  // [Pa]
   std::vector<Eigen::Vector3d> pressure_force;   // paper eq. 2 and the pressure part of eq. 7 [N]
   std::vector<Eigen::Vector3d> viscosity_force;  // paper eq. 3 and the viscosity part of eq. 7 [N]
-  std::vector<Eigen::Vector3d> elastic_force;    // deformable bodies' own forces: eq. 6, zero-energy control, damping [N]
-  std::vector<Eigen::Matrix3d> rotation;         // R_i of deformable particles, identity elsewhere
+  std::vector<Eigen::Vector3d> elastic_force;  // deformable bodies' own forces: eq. 6, zero-energy control, damping [N]
+  std::vector<Eigen::Matrix3d> rotation;       // R_i of deformable particles, identity elsewhere
 };
 
 class Backend {
@@ -117,7 +117,9 @@ class Backend {
   //                step 4's leap-frog is fused into the force pass);
   //   integration  step 4 (the float backends: rigid bodies only).
   enum Phase : std::size_t { kNeighbours, kRotations, kDensities, kForces, kIntegration, kPhaseCount };
-  static std::vector<std::string> phase_names() { return {"neighbours", "rotations", "densities", "forces", "integration"}; }
+  static std::vector<std::string> phase_names() {
+    return {"neighbours", "rotations", "densities", "forces", "integration"};
+  }
   // Wall-clock seconds of each phase of the last step, in the order of phase_names(), while phase
   // timing is on; NaN for a phase a backend did not time.
   virtual std::vector<double> last_phase_seconds() const = 0;

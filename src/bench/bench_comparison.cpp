@@ -17,8 +17,8 @@ std::string context_value(const BenchmarkResults& results, const std::string& ke
 // machine_ratio: how much slower the current file's machine ran (1 without normalization); the
 // current times are divided by it for the ratio and the test, the medians shown stay as measured.
 BenchmarkComparison compare_one(const std::string& name, const std::vector<double>& baseline,
-                                const std::vector<double>& current, double machine_ratio,
-                                const CompareOptions& options, std::optional<double>& smallest_attainable_p) {
+                                const std::vector<double>& current, double machine_ratio, const CompareOptions& options,
+                                std::optional<double>& smallest_attainable_p) {
   BenchmarkComparison c;
   c.name = name;
   c.baseline_repetitions = baseline.size();
@@ -48,13 +48,16 @@ BenchmarkComparison compare_one(const std::string& name, const std::vector<doubl
   return c;
 }
 
-Normalization normalization(const BenchmarkResults& baseline, const BenchmarkResults& current, const std::string& name) {
+Normalization normalization(const BenchmarkResults& baseline, const BenchmarkResults& current,
+                            const std::string& name) {
   Normalization n{name, 0.0, 0.0};
   for (const BenchmarkResults* file : {&baseline, &current}) {
     const auto it = file->seconds.find(name);
     if (it == file->seconds.end()) {
-      throw InputError(file->path + ": no benchmark \"" + name + "\" to normalize by (--normalize-by); "
-                       "run it with the others, e.g. --filter '...|^" + name + "$'");
+      throw InputError(file->path + ": no benchmark \"" + name +
+                       "\" to normalize by (--normalize-by); "
+                       "run it with the others, e.g. --filter '...|^" +
+                       name + "$'");
     }
     const double m = median(it->second);
     if (!(m > 0.0)) throw InputError(file->path + ": benchmark \"" + name + "\" has no positive time to normalize by");
@@ -67,11 +70,16 @@ Normalization normalization(const BenchmarkResults& baseline, const BenchmarkRes
 
 const char* to_string(Verdict verdict) {
   switch (verdict) {
-    case Verdict::slower: return "SLOWER";
-    case Verdict::faster: return "faster";
-    case Verdict::unchanged: return "unchanged";
-    case Verdict::not_significant: return "not significant";
-    case Verdict::untestable: return "too few repetitions";
+    case Verdict::slower:
+      return "SLOWER";
+    case Verdict::faster:
+      return "faster";
+    case Verdict::unchanged:
+      return "unchanged";
+    case Verdict::not_significant:
+      return "not significant";
+    case Verdict::untestable:
+      return "too few repetitions";
   }
   return "?";
 }
@@ -97,7 +105,8 @@ std::vector<ContextDifference> machine_differences(const BenchmarkResults& basel
   return differences;
 }
 
-ComparisonReport compare(const BenchmarkResults& baseline, const BenchmarkResults& current, const CompareOptions& options) {
+ComparisonReport compare(const BenchmarkResults& baseline, const BenchmarkResults& current,
+                         const CompareOptions& options) {
   ComparisonReport report;
   report.baseline_path = baseline.path;
   report.current_path = current.path;
@@ -115,7 +124,9 @@ ComparisonReport compare(const BenchmarkResults& baseline, const BenchmarkResult
     report.normalization = normalization(baseline, current, *options.normalize_by);
     machine_ratio = report.normalization->machine_ratio();
   }
-  const auto is_yardstick = [&](const std::string& name) { return options.normalize_by && name == *options.normalize_by; };
+  const auto is_yardstick = [&](const std::string& name) {
+    return options.normalize_by && name == *options.normalize_by;
+  };
   for (const std::string& name : baseline.names) {
     if (is_yardstick(name)) continue;
     const auto it = current.seconds.find(name);

@@ -79,7 +79,8 @@ std::vector<ContextDifference> machine_differences(const BenchmarkResults& basel
 // Throws InputError when the files share no benchmark, when a file lacks options.normalize_by or
 // its times are not positive, or, without options.force, when their machine context differs (the
 // message names each differing key and both values).
-ComparisonReport compare(const BenchmarkResults& baseline, const BenchmarkResults& current, const CompareOptions& options);
+ComparisonReport compare(const BenchmarkResults& baseline, const BenchmarkResults& current,
+                         const CompareOptions& options);
 
 double median(std::vector<double> values);
 

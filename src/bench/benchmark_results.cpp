@@ -66,9 +66,10 @@ BenchmarkResults read_benchmark_results(const std::string& path) {
       throw InputError(where + "/time_unit: expected a string");
     }
     // Step benchmarks time batches of steps; their step_seconds counter is the same time per step.
-    const double seconds = entry.contains("step_seconds") && entry["step_seconds"].is_number()
-                               ? entry["step_seconds"].get<double>()
-                               : entry["real_time"].get<double>() * seconds_per(entry["time_unit"].get<std::string>(), where);
+    const double seconds =
+        entry.contains("step_seconds") && entry["step_seconds"].is_number()
+            ? entry["step_seconds"].get<double>()
+            : entry["real_time"].get<double>() * seconds_per(entry["time_unit"].get<std::string>(), where);
     auto [it, inserted] = results.seconds.try_emplace(name);
     if (inserted) results.names.push_back(name);
     it->second.push_back(seconds);

@@ -53,24 +53,31 @@ std::vector<std::string> notes_of(const ComparisonReport& report) {
   const CompareOptions& o = report.options;
   std::vector<std::string> notes;
   notes.push_back("baseline " + report.baseline_path + ", current " + report.current_path +
-                  "; times are medians over repetitions (per step where the benchmark reports step_seconds), ratio = current / baseline.");
-  notes.push_back("p: two-sided Mann-Whitney U test over the repetitions (exact without ties and with at most 20 "
-                  "per side, else normal approximation with tie and continuity correction); significant when p < " +
-                  format_number("%g", o.alpha) + ".");
+                  "; times are medians over repetitions (per step where the benchmark reports step_seconds), ratio = "
+                  "current / baseline.");
+  notes.push_back(
+      "p: two-sided Mann-Whitney U test over the repetitions (exact without ties and with at most 20 "
+      "per side, else normal approximation with tie and continuity correction); significant when p < " +
+      format_number("%g", o.alpha) + ".");
   if (report.normalization) {
     const Normalization& n = *report.normalization;
-    notes.push_back("Normalized by " + n.name + " (a fixed workload that times the machine): the current file's machine ran it in " +
-                    format_time(n.current_median) + " against the baseline's " + format_time(n.baseline_median) + " (" +
-                    format_number("%.3f", n.machine_ratio()) +
-                    "x); each ratio and test is of the current times divided by that factor, the medians shown are as measured.");
+    notes.push_back(
+        "Normalized by " + n.name +
+        " (a fixed workload that times the machine): the current file's machine ran it in " +
+        format_time(n.current_median) + " against the baseline's " + format_time(n.baseline_median) + " (" +
+        format_number("%.3f", n.machine_ratio()) +
+        "x); each ratio and test is of the current times divided by that factor, the medians shown are as measured.");
   }
-  notes.push_back("The gate fails (exit 1) on a benchmark whose ratio exceeds " + format_number("%.3f", 1.0 + o.threshold) +
-                  " (threshold " + percent(o.threshold) + ") with a significant difference.");
+  notes.push_back("The gate fails (exit 1) on a benchmark whose ratio exceeds " +
+                  format_number("%.3f", 1.0 + o.threshold) + " (threshold " + percent(o.threshold) +
+                  ") with a significant difference.");
   if (report.smallest_attainable_p) {
-    notes.push_back("Too few repetitions for some benchmarks: with their counts the smallest p-value the test can give "
-                    "is " + format_number("%.3g", *report.smallest_attainable_p) +
-                    ", not below alpha, so no difference there can be significant; run more repetitions "
-                    "(at least 4 per side for alpha 0.05).");
+    notes.push_back(
+        "Too few repetitions for some benchmarks: with their counts the smallest p-value the test can give "
+        "is " +
+        format_number("%.3g", *report.smallest_attainable_p) +
+        ", not below alpha, so no difference there can be significant; run more repetitions "
+        "(at least 4 per side for alpha 0.05).");
   }
   for (const ContextDifference& d : report.machine_differences) {
     notes.push_back("forced: " + d.key + " differs (baseline \"" + d.baseline + "\", current \"" + d.current + "\").");
@@ -78,8 +85,8 @@ std::vector<std::string> notes_of(const ComparisonReport& report) {
   for (const std::string& name : report.only_in_baseline) notes.push_back("only in the baseline: " + name);
   for (const std::string& name : report.only_in_current) notes.push_back("only in the current file: " + name);
   for (const std::string& e : report.errors) notes.push_back("error reported by the benchmark: " + e);
-  notes.push_back(std::string("Result: ") + (report.failed() ? "FAIL, significantly slower beyond the threshold."
-                                                              : "pass."));
+  notes.push_back(std::string("Result: ") +
+                  (report.failed() ? "FAIL, significantly slower beyond the threshold." : "pass."));
   return notes;
 }
 
@@ -113,13 +120,17 @@ std::string as_markdown(const ComparisonReport& report) {
     out << "|";
     for (std::size_t c = 0; c < rows[r].size(); ++c) {
       const bool highlight = r > 0 && report.benchmarks[r - 1].verdict == Verdict::slower && c + 1 == rows[r].size();
-      out << " " << (c == 0 && r > 0 ? "`" + rows[r][c] + "`" : highlight ? "**" + rows[r][c] + "**" : rows[r][c])
+      out << " "
+          << (c == 0 && r > 0 ? "`" + rows[r][c] + "`"
+              : highlight     ? "**" + rows[r][c] + "**"
+                              : rows[r][c])
           << " |";
     }
     out << "\n";
     if (r == 0) {
       out << "|";
-      for (std::size_t c = 0; c < rows[r].size(); ++c) out << (c == 0 || c + 1 == rows[r].size() ? " --- |" : " ---: |");
+      for (std::size_t c = 0; c < rows[r].size(); ++c)
+        out << (c == 0 || c + 1 == rows[r].size() ? " --- |" : " ---: |");
       out << "\n";
     }
   }
@@ -174,9 +185,12 @@ std::string as_json(const ComparisonReport& report) {
 
 std::string format_report(const ComparisonReport& report, ReportFormat format) {
   switch (format) {
-    case ReportFormat::table: return as_table(report);
-    case ReportFormat::markdown: return as_markdown(report);
-    case ReportFormat::json: return as_json(report);
+    case ReportFormat::table:
+      return as_table(report);
+    case ReportFormat::markdown:
+      return as_markdown(report);
+    case ReportFormat::json:
+      return as_json(report);
   }
   return {};
 }

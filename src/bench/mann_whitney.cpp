@@ -9,8 +9,8 @@ namespace mssph::bench {
 namespace {
 
 struct Ranking {
-  double rank_sum_x = 0.0;       // sum of the mid-ranks of the first sample
-  double tie_term = 0.0;         // sum over tie groups of t^3 - t
+  double rank_sum_x = 0.0;  // sum of the mid-ranks of the first sample
+  double tie_term = 0.0;    // sum over tie groups of t^3 - t
   bool has_ties = false;
 };
 
@@ -88,7 +88,7 @@ MannWhitneyResult mann_whitney_u(const std::vector<double>& x, const std::vector
     result.p_value = 1.0;
     return result;
   }
-  const double deviation = std::max(0.0, std::abs(result.u - mean) - 0.5);  // continuity correction
+  const double deviation = std::max(0.0, std::abs(result.u - mean) - 0.5);           // continuity correction
   result.p_value = std::min(1.0, std::erfc(deviation / std::sqrt(2.0 * variance)));  // 2 (1 - Phi(z))
   return result;
 }

@@ -80,7 +80,8 @@ std::vector<std::string> benchmark_flags(const BenchArgs& a) {
 
 int run_bench(const BenchArgs& a) {
   bench::step_delay_seconds();  // a malformed test hook is bad input before anything runs
-  if (a.scene.empty() && !a.overrides.empty()) throw InputError("--set applies to a scene file: mssph bench SCENE.json --set ...");
+  if (a.scene.empty() && !a.overrides.empty())
+    throw InputError("--set applies to a scene file: mssph bench SCENE.json --set ...");
   if (!a.scene.empty()) {
     for (const std::string& backend : a.backends.empty() ? std::vector<std::string>{"auto"} : a.backends) {
       bench::register_scene_benchmark(a.scene, a.overrides, resolve_backend_name(backend));
@@ -126,7 +127,6 @@ int run_compare(const CompareArgs& a) {
   return report.failed() ? kExitOther : kExitOk;
 }
 
-
 void add_compare_command(CLI::App& bench, int& exit_code) {
   auto args = std::make_shared<CompareArgs>();
   CLI::App* cmd = bench.add_subcommand("compare", "Compare two benchmark files: median ratios, significance, verdicts");
@@ -170,7 +170,8 @@ void add_compare_command(CLI::App& bench, int& exit_code) {
 
 void add_bench_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<BenchArgs>();
-  CLI::App* cmd = app.add_subcommand("bench", "Time the simulation step per backend, medium and size (Google Benchmark)");
+  CLI::App* cmd =
+      app.add_subcommand("bench", "Time the simulation step per backend, medium and size (Google Benchmark)");
   cmd->require_subcommand(0, 1);
   cmd->add_option("scene", args->scene,
                   "Time one step of this scene file instead of the suite (scene/<backend>/<name>)")
@@ -179,17 +180,20 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   for (const std::string& name : available_backends()) built += (built.empty() ? "" : ", ") + name;
   cmd->add_option("--backend", args->backends,
                   "Backend to time (repeatable): cpu, cuda, reference or auto. Default: the suite on cpu and, "
-                  "with a GPU, cuda; a scene on auto. This build has: " + built)
+                  "with a GPU, cuda; a scene on auto. This build has: " +
+                      built)
       ->check(CLI::IsMember(backend_choices()));
-  cmd->add_option("--filter", args->filter, "Only benchmarks whose name matches this regular expression, "
-                                            "e.g. 'step/cpu/fluid/2000' or 'step/cuda'");
+  cmd->add_option("--filter", args->filter,
+                  "Only benchmarks whose name matches this regular expression, "
+                  "e.g. 'step/cpu/fluid/2000' or 'step/cuda'");
   cmd->add_option("--repetitions", args->repetitions,
                   "Repetitions of each benchmark (compare needs at least 4 per side to find anything significant)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   cmd->add_option("--min-time", args->min_time, "Minimum seconds of each repetition (default Google Benchmark's 0.5)")
       ->check(CLI::Range(0.0, 3600.0));
-  cmd->add_option("--out", args->out, "Write the results as Google Benchmark JSON with the machine context to FILE.json");
+  cmd->add_option("--out", args->out,
+                  "Write the results as Google Benchmark JSON with the machine context to FILE.json");
   cmd->add_option("--set", args->overrides, "With a scene: override a scene value, PATH=VALUE (as mssph run)")
       ->allow_extra_args(false);
   cmd->add_flag("--list", args->list, "List the benchmark names (after --filter) without running them");

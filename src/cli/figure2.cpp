@@ -4,9 +4,9 @@
 #include "backend_factory/backend_factory.hpp"
 #include "figure_command.hpp"
 #include "io/run_log.hpp"
-#include "run/python_script.hpp"
 #include "model/block_scene.hpp"
 #include "model/scene_builder.hpp"
+#include "run/python_script.hpp"
 #include "run/step_timing.hpp"
 #include "util/build_info.hpp"
 #include "util/errors.hpp"
@@ -57,7 +57,8 @@ std::vector<long long> sizes_to_time(const Figure2Options& options, BlockGeometr
   return sizes;
 }
 
-RunMetadata figure_metadata(const BackendInfo& info, const nlohmann::json& parameters, const std::string& command_line) {
+RunMetadata figure_metadata(const BackendInfo& info, const nlohmann::json& parameters,
+                            const std::string& command_line) {
   RunMetadata m;
   m.version = build_info().version;
   m.git_commit = build_info().git_commit;
@@ -134,13 +135,15 @@ void time_all_sizes(RunLog& log, const Figure2Options& options, const std::vecto
         log.append(series->step_time, spread);
         append(log, series->steps, static_cast<double>(t.steps));
         log.append(series->phase_time, t.phase_seconds);
-        const std::size_t samples = log.add_series("/figure2/" + options.media[m] + "/batches/" + std::to_string(n), 1,
-                                                   "s", "per-step time of each timed batch of " +
-                                                            std::to_string(t.batch_steps) + " steps");
+        const std::size_t samples =
+            log.add_series("/figure2/" + options.media[m] + "/batches/" + std::to_string(n), 1, "s",
+                           "per-step time of each timed batch of " + std::to_string(t.batch_steps) + " steps");
         for (double s : t.per_step_seconds) append(log, samples, s);
         log.flush();
-        std::fprintf(stderr, "figure 2: %-10s %8zu particles (%zu with container): %.4g ms/step (min %.4g, max %.4g; %zu steps)\n",
-                     options.media[m].c_str(), block, total, 1e3 * t.median(), 1e3 * t.min(), 1e3 * t.max(), t.steps);
+        std::fprintf(
+            stderr,
+            "figure 2: %-10s %8zu particles (%zu with container): %.4g ms/step (min %.4g, max %.4g; %zu steps)\n",
+            options.media[m].c_str(), block, total, 1e3 * t.median(), 1e3 * t.min(), 1e3 * t.max(), t.steps);
       }
     }
   } catch (const std::exception& e) {
@@ -166,8 +169,11 @@ int make_figure2(const Figure2Options& options, const std::string& command_line)
   // scene once to ask it.
   const BackendInfo info =
       make_backend(backend_name, build_particles(block_scene(media.front(), sizes.front(), geometry)))->info();
-  const nlohmann::json parameters = {{"media", options.media}, {"sizes", sizes},        {"geometry", options.geometry},
-                                     {"backend", backend_name}, {"min_time", options.min_seconds}};
+  const nlohmann::json parameters = {{"media", options.media},
+                                     {"sizes", sizes},
+                                     {"geometry", options.geometry},
+                                     {"backend", backend_name},
+                                     {"min_time", options.min_seconds}};
   StepTimingOptions timing;
   timing.min_total_seconds = options.min_seconds;
   {

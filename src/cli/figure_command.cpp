@@ -1,7 +1,7 @@
 // Registers `mssph figure 2`, `mssph figure 3` and `mssph figure tss` on the command line.
+#include "figure_command.hpp"
 #include "backend_factory/backend_factory.hpp"
 #include "commands.hpp"
-#include "figure_command.hpp"
 #include "guarded.hpp"
 #include "util/errors.hpp"
 
@@ -11,7 +11,6 @@ namespace mssph::cli {
 namespace {
 
 const char* kBackendHelp = "reference, cpu, cuda or auto (cuda when a GPU is present, else cpu)";
-
 
 void add_figure2(CLI::App& figure, int& exit_code, const std::string& command_line) {
   auto o = std::make_shared<Figure2Options>();
@@ -46,9 +45,7 @@ void add_figure2(CLI::App& figure, int& exit_code, const std::string& command_li
       "Only the step is timed: after a warm-up, batches of steps each closed by one synchronisation,\n"
       "the median per-step time with its min and max. Redraw with: python3 scripts/figures/figure2.py\n"
       "DIR/figure2.h5 --out DIR.");
-  cmd->callback([o, &exit_code, command_line] {
-    guarded(exit_code, [&] { return make_figure2(*o, command_line); });
-  });
+  cmd->callback([o, &exit_code, command_line] { guarded(exit_code, [&] { return make_figure2(*o, command_line); }); });
 }
 
 // The shipped scenes, wherever mssph is run from.
@@ -88,8 +85,8 @@ void add_figure3(CLI::App& figure, int& exit_code) {
 void add_figure_tss(CLI::App& figure, int& exit_code) {
   auto o = std::make_shared<FigureTssOptions>();
   o->scene = kShippedConfigs + "/tap_squeeze_stir.json";
-  CLI::App* cmd = figure.add_subcommand(
-      "tss", "One world, three states: tap a bone, squeeze an organ, stir blood, with one proxy");
+  CLI::App* cmd =
+      figure.add_subcommand("tss", "One world, three states: tap a bone, squeeze an organ, stir blood, with one proxy");
   cmd->add_option("--backend", o->backend, kBackendHelp)
       ->check(CLI::IsMember(backend_choices()))
       ->capture_default_str();
@@ -113,7 +110,8 @@ void add_figure_tss(CLI::App& figure, int& exit_code) {
 }  // namespace
 
 void add_figure_command(CLI::App& app, int& exit_code, const std::string& command_line) {
-  CLI::App* figure = app.add_subcommand("figure", "Reproduce the paper's figures: 2 (step time), 3 (sphere drops), tss");
+  CLI::App* figure =
+      app.add_subcommand("figure", "Reproduce the paper's figures: 2 (step time), 3 (sphere drops), tss");
   figure->require_subcommand(1);
   add_figure2(*figure, exit_code, command_line);
   add_figure3(*figure, exit_code);

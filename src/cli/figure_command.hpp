@@ -13,9 +13,9 @@ struct Figure2Options {
   std::vector<long long> sizes{2000, 5000, 10000, 15000, 20000, 25000, 30000};  // the paper's range
   long long max_particles = 0;  // > the largest size: extend on a 1-2-5 log scale up to it
   std::string geometry = "paper";
-  double min_seconds = 0.5;     // timed steps per size, at least [s]
+  double min_seconds = 0.5;  // timed steps per size, at least [s]
   std::string out = "results/runs/figure2";
-  bool force = false;           // replace an earlier figure2.h5
+  bool force = false;  // replace an earlier figure2.h5
 };
 
 struct Figure3Options {

@@ -20,8 +20,8 @@ void print_gpus() {
   if (devices.empty()) std::cout << "  GPUs:         none visible (no CUDA driver or device)\n";
   for (const GpuDevice& d : devices) {
     std::cout << "  GPU " << d.index << ":        " << d.name << ", compute capability " << d.compute_major << "."
-              << d.compute_minor << ", " << d.multiprocessors << " multiprocessors, "
-              << d.total_memory / (1024 * 1024) << " MiB\n";
+              << d.compute_minor << ", " << d.multiprocessors << " multiprocessors, " << d.total_memory / (1024 * 1024)
+              << " MiB\n";
   }
 }
 

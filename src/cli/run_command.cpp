@@ -13,7 +13,8 @@ namespace mssph::cli {
 void add_run_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<SceneRunRequest>();
   CLI::App* cmd = app.add_subcommand("run", "Simulate a scene and write its HDF5 run log");
-  cmd->add_option("scene", args->scene_path, "Scene file (JSON; keys and units in configs/README.md); none with --restart")
+  cmd->add_option("scene", args->scene_path,
+                  "Scene file (JSON; keys and units in configs/README.md); none with --restart")
       ->check(CLI::ExistingFile);
   cmd->add_option("--restart", args->restart,
                   "Continue the unfinished run whose log is LOG (<out>.partial, or <out>) from its latest checkpoint, "
@@ -26,12 +27,13 @@ void add_run_command(CLI::App& app, int& exit_code) {
   for (const std::string& name : available_backends()) built += (built.empty() ? "" : ", ") + name;
   cmd->add_option("--backend", args->backend,
                   "reference (float64), cpu (float32 kernels on the host), cuda (GPU), or auto (the fastest "
-                  "available); this build has: " + built)
+                  "available); this build has: " +
+                      built)
       ->check(CLI::IsMember(backend_choices()))
       ->capture_default_str();
   cmd->add_option("--out", args->output,
-                   "Output HDF5 file (default " + default_output_path("<scene>", "<backend>") +
-                       "); missing directories are created; an existing file is refused without --force");
+                  "Output HDF5 file (default " + default_output_path("<scene>", "<backend>") +
+                      "); missing directories are created; an existing file is refused without --force");
   cmd->add_flag("--force", args->force,
                 "Replace existing output files (--out, its sidecar, --record-device): regular files only, never "
                 "an input of the run, a device, directory or symbolic link");

@@ -107,7 +107,8 @@ std::vector<std::string> split_gpus(const std::string& text) {
 std::vector<RunSlot> make_slots(const SweepArgs& args) {
   std::vector<RunSlot> slots;
   if (!args.gpus.empty()) {
-    for (const std::string& gpu : split_gpus(args.gpus)) slots.push_back({"GPU " + gpu, {"CUDA_VISIBLE_DEVICES=" + gpu}});
+    for (const std::string& gpu : split_gpus(args.gpus))
+      slots.push_back({"GPU " + gpu, {"CUDA_VISIBLE_DEVICES=" + gpu}});
     return slots;
   }
   std::vector<std::string> environment;
@@ -131,8 +132,9 @@ void check_arguments(const SweepArgs& args) {
   }
   if (!args.emit_slurm && (args.shards || args.max_parallel || !args.partition.empty() || args.gpus_per_task ||
                            args.cpus_per_task || !args.time_limit.empty() || !args.sbatch_options.empty())) {
-    throw InputError("--shards, --max-parallel, --partition, --gpus-per-task, --cpus-per-task, --time and "
-                     "--sbatch-option only shape the scripts of --emit-slurm");
+    throw InputError(
+        "--shards, --max-parallel, --partition, --gpus-per-task, --cpus-per-task, --time and "
+        "--sbatch-option only shape the scripts of --emit-slurm");
   }
   for (const std::string& text : {args.partition, args.time_limit}) {
     if (text.find_first_of("\n\r") != std::string::npos) throw InputError("Slurm options must be one line each");
@@ -168,8 +170,9 @@ PointTask make_task(const SweepPoint& point, std::size_t total, const SweepFile&
   }
   // --force: a point runs only when it is not completed, and then replaces what an earlier try
   // left (a failed or interrupted run's <log>.partial).
-  task.argv = {program, "run", fs::absolute(sweep.scene_path).lexically_normal().string(), "--backend", args.backend,
-               "--out", task.log_path, "--force"};
+  task.argv = {program,       "run",        fs::absolute(sweep.scene_path).lexically_normal().string(),
+               "--backend",   args.backend, "--out",
+               task.log_path, "--force"};
   for (const std::string& o : point.overrides) {
     task.argv.push_back("--set");
     task.argv.push_back(o);
@@ -214,11 +217,13 @@ int emit_slurm(const SweepArgs& args, const SweepFile& sweep, const std::vector<
 int print_dry_run(const SweepFile& sweep, const std::vector<SweepPoint>& points, const std::optional<Shard>& shard,
                   const std::string& directory) {
   std::cout << "sweep " << sweep.name << ": " << points.size() << " points of " << sweep.scene_path
-            << ", every one accepted by the scene loader; logs would go to " << directory << "/" << kPointsFolder << "/\n";
+            << ", every one accepted by the scene loader; logs would go to " << directory << "/" << kPointsFolder
+            << "/\n";
   for (const SweepPoint& p : points) {
     if (shard && !shard->contains(p.index)) continue;
     const PointStatus status = read_point_status(directory + "/" + kPointsFolder + "/" + p.log_name());
-    std::cout << "  " << p.index << "  " << p.log_name() << "  " << to_string(status.state) << "  " << p.describe() << "\n";
+    std::cout << "  " << p.index << "  " << p.log_name() << "  " << to_string(status.state) << "  " << p.describe()
+              << "\n";
   }
   return kExitOk;
 }
@@ -228,10 +233,13 @@ int run_sweep(const SweepArgs& args) {
   const SweepFile sweep = load_sweep_file(args.sweep_file, known_metrics());
   std::vector<SweepPoint> points = expand_points(sweep, args.overrides);
   validate_points(sweep, args.overrides, points);
-  const std::string directory = fs::absolute(args.out.empty() ? default_directory(sweep) : args.out).lexically_normal().string();
-  if (fs::exists(directory) && !fs::is_directory(directory)) throw InputError("--out " + directory + ": not a directory");
+  const std::string directory =
+      fs::absolute(args.out.empty() ? default_directory(sweep) : args.out).lexically_normal().string();
+  if (fs::exists(directory) && !fs::is_directory(directory))
+    throw InputError("--out " + directory + ": not a directory");
 
-  std::optional<Shard> shard = args.shard.empty() ? shard_from_slurm(slurm_array_environment()) : parse_shard(args.shard);
+  std::optional<Shard> shard =
+      args.shard.empty() ? shard_from_slurm(slurm_array_environment()) : parse_shard(args.shard);
   if (args.dry_run) return print_dry_run(sweep, points, shard, directory);
   write_manifest(directory, make_manifest(sweep, points, {args.overrides, args.backend}));
   if (args.emit_slurm) return emit_slurm(args, sweep, points, directory);
@@ -296,7 +304,6 @@ int run_sweep(const SweepArgs& args) {
   return final_counts.failed > 0 ? kExitSimulationFailure : kExitOk;
 }
 
-
 int run_script_on_directory(const char* script, const std::string& directory, std::vector<std::string> extra) {
   if (!fs::is_regular_file(fs::path(directory) / kManifestName)) {
     throw InputError(directory + ": no " + std::string(kManifestName) + " here: not the --out folder of a sweep");
@@ -311,9 +318,11 @@ int run_script_on_directory(const char* script, const std::string& directory, st
 void add_sweep_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<SweepArgs>();
   CLI::App* cmd = app.add_subcommand("sweep", "Run a parameter sweep (one `mssph run` per point), merge and plot it");
-  cmd->add_option("sweep_file", args->sweep_file, "Sweep file (JSON; keys in configs/README.md, schema configs/sweep.schema.json)")
+  cmd->add_option("sweep_file", args->sweep_file,
+                  "Sweep file (JSON; keys in configs/README.md, schema configs/sweep.schema.json)")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--out", args->out, "Output folder (default results/sweeps/<sweep name>): sweep.json, points/, summary.h5, summary.csv");
+  cmd->add_option("--out", args->out,
+                  "Output folder (default results/sweeps/<sweep name>): sweep.json, points/, summary.h5, summary.csv");
   cmd->add_option("--backend", args->backend, "Backend of every point, as for mssph run")
       ->check(CLI::IsMember(backend_choices()))
       ->capture_default_str();
@@ -330,24 +339,30 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--shard", args->shard,
                   "Run only shard K of N (points whose index i has i % N == K); inside a Slurm array job the shard "
                   "comes from SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT (or _MIN/_MAX)");
-  cmd->add_flag("--retry-failed", args->retry_failed, "Rerun points whose log says \"failed: ...\" (skipped by default)");
-  cmd->add_option("--checkpoint-interval", args->checkpoint_interval,
-                  "Each point's run writes a checkpoint every SECONDS of wall-clock time (as mssph run; a signal writes "
-                  "one anyway), so a point killed with its node loses at most that much")
+  cmd->add_flag("--retry-failed", args->retry_failed,
+                "Rerun points whose log says \"failed: ...\" (skipped by default)");
+  cmd->add_option(
+         "--checkpoint-interval", args->checkpoint_interval,
+         "Each point's run writes a checkpoint every SECONDS of wall-clock time (as mssph run; a signal writes "
+         "one anyway), so a point killed with its node loses at most that much")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--dry-run", args->dry_run, "Validate every point and list them with their logs' state; run nothing");
-  cmd->add_flag("--emit-slurm", args->emit_slurm,
-                "Write Slurm scripts to DIR/slurm (an sbatch --array job and a dependent merge job) instead of running");
+  cmd->add_flag(
+      "--emit-slurm", args->emit_slurm,
+      "Write Slurm scripts to DIR/slurm (an sbatch --array job and a dependent merge job) instead of running");
   cmd->add_option("--shards", args->shards, "With --emit-slurm: array tasks (default one per point, at most 1000)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--max-parallel", args->max_parallel, "With --emit-slurm: array tasks running at once (sbatch %N)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--partition", args->partition, "With --emit-slurm: sbatch --partition");
-  cmd->add_option("--gpus-per-task", args->gpus_per_task, "With --emit-slurm: sbatch --gpus-per-task")->check(CLI::Range(1, 64));
-  cmd->add_option("--cpus-per-task", args->cpus_per_task, "With --emit-slurm: sbatch --cpus-per-task")->check(CLI::Range(1, 4096));
+  cmd->add_option("--gpus-per-task", args->gpus_per_task, "With --emit-slurm: sbatch --gpus-per-task")
+      ->check(CLI::Range(1, 64));
+  cmd->add_option("--cpus-per-task", args->cpus_per_task, "With --emit-slurm: sbatch --cpus-per-task")
+      ->check(CLI::Range(1, 4096));
   cmd->add_option("--time", args->time_limit, "With --emit-slurm: sbatch --time of each array task, e.g. 02:00:00");
-  cmd->add_option("--sbatch-option", args->sbatch_options,
-                  "With --emit-slurm: an extra #SBATCH line for both jobs, e.g. --sbatch-option=--account=lab (repeatable)")
+  cmd->add_option(
+         "--sbatch-option", args->sbatch_options,
+         "With --emit-slurm: an extra #SBATCH line for both jobs, e.g. --sbatch-option=--account=lab (repeatable)")
       ->allow_extra_args(false);
   cmd->footer(
       "Every point is checked by the scene loader before any runs; a point it rejects stops the sweep\n"
@@ -370,7 +385,8 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
 
   auto merge_dir = std::make_shared<std::string>();
   CLI::App* merge = cmd->add_subcommand(
-      "merge", "Summarise a sweep's folder: DIR/summary.h5 and DIR/summary.csv from the finished points; lists the missing");
+      "merge",
+      "Summarise a sweep's folder: DIR/summary.h5 and DIR/summary.csv from the finished points; lists the missing");
   merge->add_option("dir", *merge_dir, "The sweep's --out folder")->required();
   merge->callback([merge_dir, &exit_code] {
     guarded(exit_code, [&] { return run_script_on_directory(kSummaryScript, *merge_dir, {}); });
@@ -379,15 +395,16 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   auto plot_dir = std::make_shared<std::string>();
   auto plot_metric = std::make_shared<std::string>();
   CLI::App* plot = cmd->add_subcommand(
-      "plot", "Plot a merged sweep: a metric against the first parameter, one line per value of the second, and a "
-              "heat map for two parameters (PNG and SVG in DIR/plots)");
+      "plot",
+      "Plot a merged sweep: a metric against the first parameter, one line per value of the second, and a "
+      "heat map for two parameters (PNG and SVG in DIR/plots)");
   plot->add_option("dir", *plot_dir, "The sweep's --out folder (merged)")->required();
   plot->add_option("--metric", *plot_metric, "The metric to plot (default: every numeric metric of the summary)");
   plot->callback([plot_dir, plot_metric, &exit_code] {
     guarded(exit_code, [&] {
-      return run_script_on_directory(kPlotScript, *plot_dir,
-                                     plot_metric->empty() ? std::vector<std::string>{}
-                                                          : std::vector<std::string>{"--metric", *plot_metric});
+      return run_script_on_directory(
+          kPlotScript, *plot_dir,
+          plot_metric->empty() ? std::vector<std::string>{} : std::vector<std::string>{"--metric", *plot_metric});
     });
   });
 

@@ -2,9 +2,9 @@
 // validation.h5 and report.md with plots.
 #include "backend_factory/backend_factory.hpp"
 #include "commands.hpp"
-#include "guarded.hpp"
 #include "framework/backends.hpp"
 #include "framework/report.hpp"
+#include "guarded.hpp"
 #include "run/python_script.hpp"
 #include "util/build_info.hpp"
 #include "util/errors.hpp"
@@ -49,7 +49,8 @@ std::vector<std::string> gpu_names() {
 std::vector<const ValidationCase*> selected_cases(const ValidateArgs& args) {
   std::vector<const ValidationCase*> chosen;
   for (const std::string& name : args.cases) {
-    const auto found = std::find_if(all_cases().begin(), all_cases().end(), [&](const ValidationCase& c) { return c.name == name; });
+    const auto found =
+        std::find_if(all_cases().begin(), all_cases().end(), [&](const ValidationCase& c) { return c.name == name; });
     if (found == all_cases().end()) {
       std::string known;
       for (const ValidationCase& c : all_cases()) known += (known.empty() ? "" : ", ") + c.name;
@@ -111,17 +112,19 @@ int run_validate(const ValidateArgs& args) {
   info.physics_precision = context.physics_backend == "reference" ? "float64" : "float32";
   info.host_cpu = host_cpu_name();
   info.gpus = gpu_names();
-  info.physics_device = context.physics_backend == "cuda" ? (info.gpus.empty() ? "no GPU" : info.gpus.front()) : info.host_cpu;
+  info.physics_device =
+      context.physics_backend == "cuda" ? (info.gpus.empty() ? "no GPU" : info.gpus.front()) : info.host_cpu;
   info.fast_backends = context.fast_backends;
   info.seed = context.seed;
 
   std::filesystem::create_directories(context.work_dir);
-  std::cerr << "mssph validate: " << cases.size() << " case(s), " << info.mode << ", physics on " << context.physics_backend
-            << ", seed " << context.seed << "\n";
+  std::cerr << "mssph validate: " << cases.size() << " case(s), " << info.mode << ", physics on "
+            << context.physics_backend << ", seed " << context.seed << "\n";
   std::vector<CaseRun> runs;
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const ValidationCase& c = *cases[k];
-    std::cerr << "validate: [" << k + 1 << "/" << cases.size() << "] " << c.suite << "/" << c.name << ": " << c.title << "\n";
+    std::cerr << "validate: [" << k + 1 << "/" << cases.size() << "] " << c.suite << "/" << c.name << ": " << c.title
+              << "\n";
     CaseRun run;
     run.which = &c;
     const auto start = std::chrono::steady_clock::now();
@@ -131,8 +134,8 @@ int run_validate(const ValidateArgs& args) {
       run.error = e.what();
     }
     run.result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cerr << "validate: " << c.name << ": " << status_name(case_status(run)) << " in " << run.result.wall_seconds << " s"
-              << (run.error.empty() ? "" : " (" + run.error + ")") << "\n";
+    std::cerr << "validate: " << c.name << ": " << status_name(case_status(run)) << " in " << run.result.wall_seconds
+              << " s" << (run.error.empty() ? "" : " (" + run.error + ")") << "\n";
     runs.push_back(std::move(run));
   }
 
@@ -148,7 +151,8 @@ int run_validate(const ValidateArgs& args) {
     return kExitOther;
   }
   std::printf("report: %s/report.md, %s, %s\n", args.out.c_str(), json_path.c_str(), h5_path.c_str());
-  const bool failed = std::any_of(runs.begin(), runs.end(), [](const CaseRun& r) { return case_status(r) == Status::fail; });
+  const bool failed =
+      std::any_of(runs.begin(), runs.end(), [](const CaseRun& r) { return case_status(r) == Status::fail; });
   return failed ? kExitOther : kExitOk;
 }
 
@@ -165,7 +169,8 @@ void add_validate_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--suite", args->suites, "Run only this suite: kernels, physics, convergence (repeatable)")
       ->check(CLI::IsMember({"kernels", "physics", "convergence", "selftest"}));
-  cmd->add_option("--case", args->cases, "Run only the named case (repeatable); names are in the table and validation/");
+  cmd->add_option("--case", args->cases,
+                  "Run only the named case (repeatable); names are in the table and validation/");
   cmd->add_option("--out", args->out, "Output folder for report.md, report.json, validation.h5 and plots")
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Seed of the random perturbations (default: fresh, printed)");
@@ -176,9 +181,7 @@ void add_validate_command(CLI::App& app, int& exit_code) {
       "\n"
       "Exit codes: 0 every case passed or was skipped; 1 a case failed (or the report could not be\n"
       "written); 2 bad arguments.");
-  cmd->callback([args, &exit_code] {
-    guarded(exit_code, [&] { return run_validate(*args); });
-  });
+  cmd->callback([args, &exit_code] { guarded(exit_code, [&] { return run_validate(*args); }); });
 }
 
 }  // namespace mssph::cli

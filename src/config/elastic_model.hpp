@@ -35,9 +35,12 @@ inline constexpr double kNeoHookeanBarrierEnd = 0.1;
 //   neo_hookean: kNeoHookeanBarrierEnd, where its energy stops being the Neo-Hookean one.
 inline constexpr double lowest_valid_volume_ratio(ElasticModel model) {
   switch (model) {
-    case ElasticModel::saint_venant_kirchhoff: return 0.57735026918962576;  // 1 / sqrt(3)
-    case ElasticModel::corotated_linear: return 0.0;
-    case ElasticModel::neo_hookean: return kNeoHookeanBarrierEnd;
+    case ElasticModel::saint_venant_kirchhoff:
+      return 0.57735026918962576;  // 1 / sqrt(3)
+    case ElasticModel::corotated_linear:
+      return 0.0;
+    case ElasticModel::neo_hookean:
+      return kNeoHookeanBarrierEnd;
   }
   return 0.0;
 }

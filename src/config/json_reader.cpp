@@ -73,8 +73,7 @@ nlohmann::json read_json_file(const std::string& path, const std::string& what) 
         ++column;
       }
     }
-    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: " +
-                     e.what());
+    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: " + e.what());
   }
 }
 
@@ -101,9 +100,7 @@ std::string describe_json(const nlohmann::json& value) {
 JsonReader::JsonReader(const nlohmann::json& value, std::string file, std::string pointer)
     : value_(&value), file_(std::move(file)), pointer_(std::move(pointer)) {}
 
-std::string JsonReader::key_pointer(const std::string& key) const {
-  return pointer_ + "/" + escape_pointer_token(key);
-}
+std::string JsonReader::key_pointer(const std::string& key) const { return pointer_ + "/" + escape_pointer_token(key); }
 
 void JsonReader::fail(const std::string& key, const std::string& message) const {
   throw InputError(file_ + ": " + key_pointer(key) + ": " + message, key_pointer(key));
@@ -139,9 +136,7 @@ void JsonReader::allow_only(std::initializer_list<const char*> allowed) const {
   }
 }
 
-bool JsonReader::has(const std::string& key) const {
-  return value_->is_object() && value_->contains(key);
-}
+bool JsonReader::has(const std::string& key) const { return value_->is_object() && value_->contains(key); }
 
 const nlohmann::json& JsonReader::at(const std::string& key) const {
   if (!value_->is_object()) fail_here("expected an object, got " + describe_json(*value_));
@@ -150,9 +145,7 @@ const nlohmann::json& JsonReader::at(const std::string& key) const {
   return *it;
 }
 
-JsonReader JsonReader::child(const std::string& key) const {
-  return JsonReader(at(key), file_, key_pointer(key));
-}
+JsonReader JsonReader::child(const std::string& key) const { return JsonReader(at(key), file_, key_pointer(key)); }
 
 std::optional<JsonReader> JsonReader::optional_child(const std::string& key) const {
   if (!has(key)) return std::nullopt;
@@ -257,8 +250,8 @@ Eigen::Vector3d JsonReader::vec3(const std::string& key, Interval range) const {
   for (int i = 0; i < 3; ++i) {
     out[i] = v[static_cast<std::size_t>(i)].get<double>();
     if (!range.contains(out[i])) {
-      fail(key, "expected each component " + range.describe() + ", got " + format_number(out[i]) +
-                    " at index " + std::to_string(i));
+      fail(key, "expected each component " + range.describe() + ", got " + format_number(out[i]) + " at index " +
+                    std::to_string(i));
     }
   }
   return out;

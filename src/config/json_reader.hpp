@@ -43,10 +43,10 @@ class JsonReader {
   void allow_only(std::initializer_list<const char*> allowed) const;
   bool has(const std::string& key) const;
 
-  JsonReader child(const std::string& key) const;                  // required
+  JsonReader child(const std::string& key) const;  // required
   std::optional<JsonReader> optional_child(const std::string& key) const;
   std::vector<std::pair<std::string, JsonReader>> members() const;  // an object's members in order
-  std::vector<JsonReader> elements() const;                          // an array's elements
+  std::vector<JsonReader> elements() const;                         // an array's elements
 
   double number(const std::string& key, Interval range = Interval::any()) const;
   double number_or(const std::string& key, double fallback, Interval range = Interval::any()) const;

@@ -2,8 +2,8 @@
 // qz, qw), the layout a run log's readers already know.
 #include "config/recording_formats.hpp"
 
-#include "util/hdf5_handle.hpp"
 #include "util/errors.hpp"
+#include "util/hdf5_handle.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>

@@ -33,11 +33,11 @@ struct Material {
   double pressure_stiffness = 0.0;  // k [m^2/s^2] in P = k (rho - rho0); sound speed c = sqrt(k)
   double viscosity = 0.0;           // mu [Pa s], paper eq. 3 (and eq. 7 between bodies)
   // Deformable bodies only (paper eq. 4-6):
-  double young_modulus = 0.0;       // E [Pa]
-  double poisson_ratio = 0.0;       // nu [-], in (-1, 0.5)
+  double young_modulus = 0.0;                                 // E [Pa]
+  double poisson_ratio = 0.0;                                 // nu [-], in (-1, 0.5)
   ElasticModel model = ElasticModel::saint_venant_kirchhoff;  // stress response to F (config/elastic_model.hpp)
-  double damping = 0.0;                   // mass-proportional damping rate [1/s], 0 = off
-  double zero_energy_stiffness = 0.0;     // hourglass control coefficient [-], 0 = off
+  double damping = 0.0;                                       // mass-proportional damping rate [1/s], 0 = off
+  double zero_energy_stiffness = 0.0;                         // hourglass control coefficient [-], 0 = off
   bool kernel_gradient_correction = false;
 };
 
@@ -60,20 +60,20 @@ struct BodyConfig {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // [m/s]
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rigid bodies [rad/s]
   Material material;
-  double density = 0.0;  // rigid bodies: physical density for mass and inertia [kg/m^3]
-  bool fixed = false;    // rigid bodies: immovable (then it acts as a boundary)
+  double density = 0.0;               // rigid bodies: physical density for mass and inertia [kg/m^3]
+  bool fixed = false;                 // rigid bodies: immovable (then it acts as a boundary)
   std::vector<Region> fixed_regions;  // deformable bodies
 };
 
 struct SimulationConfig {
-  double dt = 0.0;                 // [s]
-  double duration = 0.0;           // [s]
+  double dt = 0.0;                           // [s]
+  double duration = 0.0;                     // [s]
   Eigen::Vector3d gravity{0.0, 0.0, -9.81};  // [m/s^2]
-  double particle_spacing = 0.0;   // lattice spacing dx [m]
-  double smoothing_length = 0.0;   // kernel support radius h [m]
-  std::uint64_t seed = 0;          // for the lattice jitter
-  double jitter = 0.0;             // random lattice perturbation, fraction of dx
-  double max_speed = 0.0;          // blow-up bound on any particle's speed [m/s]
+  double particle_spacing = 0.0;             // lattice spacing dx [m]
+  double smoothing_length = 0.0;             // kernel support radius h [m]
+  std::uint64_t seed = 0;                    // for the lattice jitter
+  double jitter = 0.0;                       // random lattice perturbation, fraction of dx
+  double max_speed = 0.0;                    // blow-up bound on any particle's speed [m/s]
   // The simulation domain: a particle that leaves it is deactivated (sim/lost_mass_watch.hpp).
   // Absent: the bounding box of all bodies' particles at the start plus a margin
   // (scene/simulation_domain.hpp).
@@ -95,8 +95,8 @@ struct OutputConfig {
 struct Scene {
   std::string name;
   std::string description;
-  std::string source_file;    // the file it was read from
-  nlohmann::json document;    // the document after --set overrides, recorded verbatim in the log
+  std::string source_file;  // the file it was read from
+  nlohmann::json document;  // the document after --set overrides, recorded verbatim in the log
   SimulationConfig simulation;
   std::vector<BodyConfig> bodies;
   std::optional<ProxyConfig> proxy;

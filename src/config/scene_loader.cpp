@@ -1,13 +1,13 @@
 #include "config/scene_loader.hpp"
 
-#include "config/json_reader.hpp"
 #include "config/haptics_config.hpp"
+#include "config/json_reader.hpp"
 #include "util/errors.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -24,8 +24,13 @@ constexpr double kMaxSteps = 1e9;
 constexpr double kMaxTicksPerStep = 1e4;
 
 // Material keys that only deformable bodies may carry inline.
-constexpr const char* kElasticKeys[] = {"young_modulus", "poisson_ratio", "model", "strain", "damping",
-                                        "zero_energy_stiffness", "kernel_gradient_correction"};
+constexpr const char* kElasticKeys[] = {"young_modulus",
+                                        "poisson_ratio",
+                                        "model",
+                                        "strain",
+                                        "damping",
+                                        "zero_energy_stiffness",
+                                        "kernel_gradient_correction"};
 
 bool is_elastic_key(const std::string& key) {
   for (const char* k : kElasticKeys) {
@@ -38,12 +43,13 @@ bool is_elastic_key(const std::string& key) {
 // green_saint_venant is stvk, cauchy in the rotated frame is corotated linear elasticity).
 ElasticModel read_elastic_model(const JsonReader& reader, ElasticModel fallback) {
   if (reader.has("model") && reader.has("strain")) {
-    reader.fail("strain", "give either model or strain (its older spelling: green_saint_venant = stvk, cauchy = "
-                          "corotated), not both");
+    reader.fail("strain",
+                "give either model or strain (its older spelling: green_saint_venant = stvk, cauchy = "
+                "corotated), not both");
   }
   if (reader.has("strain")) {
     return reader.choice("strain", {"green_saint_venant", "cauchy"}) == "cauchy" ? ElasticModel::corotated_linear
-                                                                               : ElasticModel::saint_venant_kirchhoff;
+                                                                                 : ElasticModel::saint_venant_kirchhoff;
   }
   if (!reader.has("model")) return fallback;
   const std::string model = reader.choice("model", {"stvk", "corotated", "neo_hookean"});
@@ -79,9 +85,8 @@ std::map<std::string, MaterialEntry> read_materials(const JsonReader& root) {
   const auto section = root.optional_child("materials");
   if (!section) return materials;
   for (const auto& [name, reader] : section->members()) {
-    reader.allow_only({"rest_density", "pressure_stiffness", "viscosity", "young_modulus", "poisson_ratio",
-                       "model", "strain", "damping", "zero_energy_stiffness", "kernel_gradient_correction",
-                       "description"});
+    reader.allow_only({"rest_density", "pressure_stiffness", "viscosity", "young_modulus", "poisson_ratio", "model",
+                       "strain", "damping", "zero_energy_stiffness", "kernel_gradient_correction", "description"});
     reader.string_or("description", "");  // documentation only, but a string like everywhere else
     MaterialEntry entry;
     read_material_keys(reader, entry.material);
@@ -94,8 +99,8 @@ std::map<std::string, MaterialEntry> read_materials(const JsonReader& root) {
 
 SimulationConfig read_simulation(const JsonReader& root) {
   const JsonReader s = root.child("simulation");
-  s.allow_only({"dt", "duration", "gravity", "particle_spacing", "smoothing_length", "seed", "jitter",
-                "max_speed", "domain", "max_lost_mass_fraction"});
+  s.allow_only({"dt", "duration", "gravity", "particle_spacing", "smoothing_length", "seed", "jitter", "max_speed",
+                "domain", "max_lost_mass_fraction"});
   SimulationConfig sim;
   sim.dt = s.number("dt", Interval::positive());
   sim.duration = s.number("duration", Interval::positive());
@@ -162,10 +167,27 @@ BodyKind read_kind(const JsonReader& body) {
 
 BodyConfig read_body(const std::string& name, const JsonReader& reader,
                      const std::map<std::string, MaterialEntry>& materials, const SimulationConfig& sim) {
-  reader.allow_only({"kind", "shape", "position", "orientation", "velocity", "angular_velocity", "material",
-                     "rest_density", "pressure_stiffness", "viscosity", "young_modulus", "poisson_ratio",
-                     "model", "strain", "damping", "zero_energy_stiffness", "kernel_gradient_correction", "density",
-                     "fixed", "fixed_regions", "description"});
+  reader.allow_only({"kind",
+                     "shape",
+                     "position",
+                     "orientation",
+                     "velocity",
+                     "angular_velocity",
+                     "material",
+                     "rest_density",
+                     "pressure_stiffness",
+                     "viscosity",
+                     "young_modulus",
+                     "poisson_ratio",
+                     "model",
+                     "strain",
+                     "damping",
+                     "zero_energy_stiffness",
+                     "kernel_gradient_correction",
+                     "density",
+                     "fixed",
+                     "fixed_regions",
+                     "description"});
   // The name becomes the run log's HDF5 group /bodies/<name>, where '/' would nest groups.
   if (name.empty() || name.find('/') != std::string::npos) {
     reader.fail_here("expected a body name that is non-empty and has no '/' (it names the HDF5 group /bodies/<name>)");
@@ -308,8 +330,12 @@ class DuplicateKeyCheck {
   bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
     using Event = nlohmann::json::parse_event_t;
     switch (event) {
-      case Event::object_start: frames_.push_back({true, {}, "", 0}); break;
-      case Event::array_start: frames_.push_back({false, {}, "", 0}); break;
+      case Event::object_start:
+        frames_.push_back({true, {}, "", 0});
+        break;
+      case Event::array_start:
+        frames_.push_back({false, {}, "", 0});
+        break;
       case Event::key: {
         Frame& top = frames_.back();
         top.key = parsed.get<std::string>();
@@ -326,7 +352,9 @@ class DuplicateKeyCheck {
         frames_.pop_back();
         element_done();
         break;
-      case Event::value: element_done(); break;
+      case Event::value:
+        element_done();
+        break;
     }
     return true;
   }
@@ -335,8 +363,8 @@ class DuplicateKeyCheck {
   struct Frame {
     bool object;
     std::set<std::string> keys;
-    std::string key;      // objects: the member being read
-    std::size_t index;    // arrays: the element being read
+    std::string key;    // objects: the member being read
+    std::size_t index;  // arrays: the element being read
   };
   void element_done() {
     if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
@@ -392,19 +420,26 @@ bool is_valid_utf8(const std::string& text) {
 
 const char* to_string(BodyKind kind) {
   switch (kind) {
-    case BodyKind::fluid: return "fluid";
-    case BodyKind::deformable: return "deformable";
-    case BodyKind::rigid: return "rigid";
-    case BodyKind::boundary: return "boundary";
+    case BodyKind::fluid:
+      return "fluid";
+    case BodyKind::deformable:
+      return "deformable";
+    case BodyKind::rigid:
+      return "rigid";
+    case BodyKind::boundary:
+      return "boundary";
   }
   return "?";
 }
 
 const char* to_string(ElasticModel model) {
   switch (model) {
-    case ElasticModel::saint_venant_kirchhoff: return "stvk";
-    case ElasticModel::corotated_linear: return "corotated";
-    case ElasticModel::neo_hookean: return "neo_hookean";
+    case ElasticModel::saint_venant_kirchhoff:
+      return "stvk";
+    case ElasticModel::corotated_linear:
+      return "corotated";
+    case ElasticModel::neo_hookean:
+      return "neo_hookean";
   }
   return "?";
 }
@@ -508,8 +543,8 @@ InputError noting_override(const InputError& e, const std::vector<std::string>& 
     std::string set_path = o->substr(0, o->find('='));
     if (set_path.empty() || set_path.front() != '/') set_path = "/" + set_path;
     // The value itself, inside it, or the object holding it (a rule over several keys).
-    const bool inside = rejected == set_path || rejected.rfind(set_path + "/", 0) == 0 ||
-                        set_path.rfind(rejected + "/", 0) == 0;
+    const bool inside =
+        rejected == set_path || rejected.rfind(set_path + "/", 0) == 0 || set_path.rfind(rejected + "/", 0) == 0;
     if (inside) return InputError(std::string(e.what()) + " (this value comes from --set " + *o + ")", rejected);
   }
   return e;

@@ -2,8 +2,8 @@
 // The handle of a simulated Virtuose 6D (docs/model.md): what its motors can render, and
 // its motion, in the device frame, under the motors, the hand and its own mass and damping.
 #include "config/haptics_config.hpp"
-#include "util/pose.hpp"
 #include "haptics/workspace_transform.hpp"
+#include "util/pose.hpp"
 
 namespace mssph {
 

@@ -1,9 +1,9 @@
 #pragma once
 // Collects the handle's pose at every tick, to write it as a device recording that a later run
 // can replay (`mssph run --record-device FILE`, then trajectory source "recorded").
+#include "backend/state_arrays.hpp"
 #include "config/device_recording.hpp"
 #include "haptics/haptic_sample.hpp"
-#include "backend/state_arrays.hpp"
 #include "util/pose_packing.hpp"
 
 namespace mssph {

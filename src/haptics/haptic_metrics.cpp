@@ -20,10 +20,11 @@ void HapticMetrics::record(const HapticSample& s) {
 // The counts, then the figures in declaration order.
 StateArrays HapticMetrics::save_state() const {
   StateArrays state;
-  state.put("ticks", std::vector<std::int64_t>{static_cast<std::int64_t>(ticks), static_cast<std::int64_t>(saturated_ticks),
-                                               static_cast<std::int64_t>(force_saturated_ticks),
-                                               static_cast<std::int64_t>(torque_saturated_ticks),
-                                               static_cast<std::int64_t>(workspace_limited_ticks)});
+  state.put("ticks",
+            std::vector<std::int64_t>{static_cast<std::int64_t>(ticks), static_cast<std::int64_t>(saturated_ticks),
+                                      static_cast<std::int64_t>(force_saturated_ticks),
+                                      static_cast<std::int64_t>(torque_saturated_ticks),
+                                      static_cast<std::int64_t>(workspace_limited_ticks)});
   state.put("figures", std::vector<double>{peak_rendered_force, peak_rendered_torque, max_force_jump, energy_balance,
                                            max_injected_energy});
   return state;

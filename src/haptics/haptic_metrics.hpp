@@ -1,8 +1,8 @@
 #pragma once
 // Run-level figures of the haptic loop, accumulated tick by tick: what the summary attributes of
 // /haptics report.
-#include "haptics/haptic_sample.hpp"
 #include "backend/state_arrays.hpp"
+#include "haptics/haptic_sample.hpp"
 
 #include <cstddef>
 

@@ -1,7 +1,7 @@
 #include "haptics/haptics_session.hpp"
 
-#include "haptics/virtual_coupling.hpp"
 #include "backend/backend.hpp"
+#include "haptics/virtual_coupling.hpp"
 
 #include <algorithm>
 

@@ -12,13 +12,13 @@
 // the haptic period it is the impulse of all ticks in the step spread over it. The backend is
 // asked for the proxy's state at most once per step that holds a tick, so never more often than
 // once per tick.
+#include "backend/state_arrays.hpp"
+#include "config/haptics_config.hpp"
 #include "haptics/device_model.hpp"
 #include "haptics/haptic_sample.hpp"
-#include "config/haptics_config.hpp"
 #include "haptics/pose_track.hpp"
 #include "haptics/proxy_predictor.hpp"
 #include "haptics/workspace_transform.hpp"
-#include "backend/state_arrays.hpp"
 
 #include <cstddef>
 #include <optional>
@@ -69,9 +69,9 @@ class HapticsSession {
   double time_tolerance_;  // tick and step times closer than this coincide [s]
   DeviceModel device_;
   ProxyPredictor predictor_;
-  std::optional<WorkspaceTransform> workspace_;  // fixed at the first tick (its offset may be the proxy's start)
+  std::optional<WorkspaceTransform> workspace_;       // fixed at the first tick (its offset may be the proxy's start)
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  // the proxy's position at the first tick
-  std::optional<PoseTrack> track_;               // scripted: the hand's target; recorded: the handle itself
+  std::optional<PoseTrack> track_;                    // scripted: the hand's target; recorded: the handle itself
   std::vector<HapticSink*> sinks_;
 
   std::size_t next_tick_ = 0;

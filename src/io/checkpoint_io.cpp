@@ -44,8 +44,9 @@ void write_array(hid_t file, const std::string& path, const std::vector<T>& valu
     h5::Handle space = h5::dataspace(H5Screate_simple(1, size, maximum), "space of " + path);
     h5::Handle properties = h5::property_list(H5Pcreate(H5P_DATASET_CREATE), "dataset properties");
     h5::check(H5Pset_chunk(properties.id(), 1, chunk), "chunk " + path);
-    set = h5::dataset(H5Dcreate2(file, path.c_str(), file_type<T>(), space.id(), H5P_DEFAULT, properties.id(), H5P_DEFAULT),
-                      "create " + path);
+    set = h5::dataset(
+        H5Dcreate2(file, path.c_str(), file_type<T>(), space.id(), H5P_DEFAULT, properties.id(), H5P_DEFAULT),
+        "create " + path);
     h5::write_attribute(set.id(), "units", units);
     h5::write_attribute(set.id(), "description", description);
   }
@@ -60,7 +61,8 @@ std::vector<T> read_array(hid_t set, const std::string& path) {
   const hssize_t count = H5Sget_simple_extent_npoints(space.id());
   if (count < 0) h5::throw_error("size of " + path);
   std::vector<T> values(static_cast<std::size_t>(count));
-  if (!values.empty()) h5::check(H5Dread(set, memory_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + path);
+  if (!values.empty())
+    h5::check(H5Dread(set, memory_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + path);
   return values;
 }
 
@@ -117,9 +119,11 @@ void write_checkpoint(hid_t file, const Checkpoint& checkpoint) {
   for (const auto& [name, values] : checkpoint.state.arrays()) {
     std::visit(
         [&](const auto& v) {
-          write_array(file, slot + "/state/" + name, v, "SI, per quantity",
-                      "checkpoint array " + name + ": part of the run's state at the slot's step, as the code that "
-                      "saved it laid it out (src/backend/state_arrays.hpp); mssph run --restart restores it bit for bit");
+          write_array(
+              file, slot + "/state/" + name, v, "SI, per quantity",
+              "checkpoint array " + name +
+                  ": part of the run's state at the slot's step, as the code that "
+                  "saved it laid it out (src/backend/state_arrays.hpp); mssph run --restart restores it bit for bit");
         },
         values);
   }
@@ -139,7 +143,9 @@ void write_checkpoint(hid_t file, const Checkpoint& checkpoint) {
   h5::check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush a checkpoint");
 }
 
-long long latest_checkpoint_step(hid_t file) { return std::max(slot_step(file, kSlots[0]), slot_step(file, kSlots[1])); }
+long long latest_checkpoint_step(hid_t file) {
+  return std::max(slot_step(file, kSlots[0]), slot_step(file, kSlots[1]));
+}
 
 std::optional<Checkpoint> read_latest_checkpoint(hid_t file) {
   const long long steps[2] = {slot_step(file, kSlots[0]), slot_step(file, kSlots[1])};

@@ -15,8 +15,8 @@
 namespace mssph {
 
 struct Checkpoint {
-  long long step = 0;   // steps done
-  double time = 0.0;    // simulated time [s]
+  long long step = 0;  // steps done
+  double time = 0.0;   // simulated time [s]
   StateArrays state;
   std::map<std::string, hsize_t> series_rows;  // time series dataset path -> rows at the step
 };

@@ -34,12 +34,23 @@ std::string xml_escape(const std::string& text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -60,9 +71,9 @@ void write_float_dataset(hid_t file, const std::string& path, std::span<const fl
                          const std::string& units, const std::string& description) {
   const hsize_t dims[2] = {values.size() / columns, columns};
   h5::Handle space = h5::dataspace(H5Screate_simple(columns == 1 ? 1 : 2, dims, nullptr), "snapshot space " + path);
-  h5::Handle set = h5::dataset(
-      H5Dcreate2(file, path.c_str(), H5T_IEEE_F32LE, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-      "create " + path);
+  h5::Handle set =
+      h5::dataset(H5Dcreate2(file, path.c_str(), H5T_IEEE_F32LE, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                  "create " + path);
   h5::check(H5Dwrite(set.id(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + path);
   h5::write_attribute(set.id(), "units", units);
   h5::write_attribute(set.id(), "description", description);
@@ -82,9 +93,11 @@ RunLogHeader read_run_log_header(const std::string& path) {
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, unlocked_file_access().id());
   if (file < 0) throw InputError("--restart " + path + ": not an HDF5 file this build can open");
   const h5::Handle owner = h5::file(file, "open " + path);
-  for (const char* name : {"config", "config_path", "backend", "record_device", "phase_timing", "checkpoint_interval"}) {
+  for (const char* name :
+       {"config", "config_path", "backend", "record_device", "phase_timing", "checkpoint_interval"}) {
     if (H5Aexists(file, name) <= 0) {
-      throw InputError("--restart " + path + ": not a run log this version can continue (no root attribute " + name + ")");
+      throw InputError("--restart " + path + ": not a run log this version can continue (no root attribute " + name +
+                       ")");
     }
   }
   RunLogHeader header;
@@ -105,7 +118,8 @@ RunLog::RunLog(OutputClaim claim, const RunMetadata& metadata)
   h5::silence_error_printing();
   // The default (oldest compatible) file format matters: it has no "open for writing" flag, which
   // newer formats leave set in a killed run's file, making readers refuse it until h5clear is run.
-  file_ = h5::file(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, unlocked_file_access().id()), "create " + path_);
+  file_ =
+      h5::file(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, unlocked_file_access().id()), "create " + path_);
   const hid_t root = file_.id();
   h5::write_attribute(root, "mssph_version", metadata.version);
   h5::write_attribute(root, "git_commit", metadata.git_commit);
@@ -136,7 +150,8 @@ RunLog::RunLog(OutputClaim claim, const Restart& restart) : claim_(std::move(cla
   if (h5::read_string_attribute(file, "status") == "completed") throw InputError(head + "the run completed");
   restart_ = read_latest_checkpoint(file);
   if (!restart_) {
-    throw InputError(head + "holds no checkpoint to continue from (runs write one with --checkpoint-interval, and on "
+    throw InputError(head +
+                     "holds no checkpoint to continue from (runs write one with --checkpoint-interval, and on "
                      "SIGINT, SIGTERM or SIGHUP)");
   }
   std::string restarts = H5Aexists(file, "restarts") > 0 ? h5::read_string_attribute(file, "restarts") : "";
@@ -167,8 +182,8 @@ void RunLog::keep_snapshots_up_to(long long step) {
       continue;
     }
     const std::size_t n = h5::dataset_shape(file_.id(), path + "/density").front();
-    const bool with_body = h5::object_exists(file_.id(), kBodyPath) &&
-                           h5::dataset_shape(file_.id(), kBodyPath) == std::vector<hsize_t>{n};
+    const bool with_body =
+        h5::object_exists(file_.id(), kBodyPath) && h5::dataset_shape(file_.id(), kBodyPath) == std::vector<hsize_t>{n};
     snapshots_.push_back({snapshot_step, h5::read_double_attribute(snapshot.id(), "time"), n, with_body});
   }
   structure_changed_ = true;
@@ -202,7 +217,8 @@ std::size_t RunLog::add_series(const std::string& dataset_path, std::size_t colu
   if (restart_ && h5::object_exists(file_.id(), dataset_path)) {
     // A restarted run's series: cut back to its rows at the checkpoint, appended from there.
     const auto rows = restart_->series_rows.find(dataset_path);
-    if (rows == restart_->series_rows.end() || h5::dataset_shape(file_.id(), dataset_path).size() != static_cast<std::size_t>(rank) ||
+    if (rows == restart_->series_rows.end() ||
+        h5::dataset_shape(file_.id(), dataset_path).size() != static_cast<std::size_t>(rank) ||
         (rank == 2 && h5::dataset_shape(file_.id(), dataset_path)[1] != columns)) {
       throw InputError("--restart " + path_ + ": " + dataset_path + " does not match the checkpoint or the scene");
     }
@@ -250,9 +266,9 @@ void RunLog::write_pending(Series& s) {
   const hsize_t count[2] = {rows, s.columns};
   h5::check(H5Sselect_hyperslab(file_space.id(), H5S_SELECT_SET, start, nullptr, count, nullptr), "select " + s.path);
   h5::Handle memory_space = h5::dataspace(H5Screate_simple(rank, count, nullptr), "memory space");
-  h5::check(H5Dwrite(s.dataset.id(), H5T_NATIVE_DOUBLE, memory_space.id(), file_space.id(), H5P_DEFAULT,
-                     s.pending.data()),
-            "append to " + s.path);
+  h5::check(
+      H5Dwrite(s.dataset.id(), H5T_NATIVE_DOUBLE, memory_space.id(), file_space.id(), H5P_DEFAULT, s.pending.data()),
+      "append to " + s.path);
   s.rows_written += rows;
   s.pending.clear();
 }
@@ -269,9 +285,9 @@ void RunLog::write_array(const std::string& dataset_path, std::span<const int> v
     return;
   }
   h5::Handle space = h5::dataspace(H5Screate_simple(1, dims, nullptr), "array space " + dataset_path);
-  h5::Handle set = h5::dataset(H5Dcreate2(file_.id(), dataset_path.c_str(), H5T_STD_I32LE, space.id(), H5P_DEFAULT,
-                                          H5P_DEFAULT, H5P_DEFAULT),
-                               "create " + dataset_path);
+  h5::Handle set = h5::dataset(
+      H5Dcreate2(file_.id(), dataset_path.c_str(), H5T_STD_I32LE, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+      "create " + dataset_path);
   h5::check(H5Dwrite(set.id(), H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + dataset_path);
   h5::write_attribute(set.id(), "units", units);
   h5::write_attribute(set.id(), "description", description);
@@ -310,13 +326,12 @@ void RunLog::add_snapshot(long long step, double time, const SnapshotFields& fie
   h5::write_attribute(group.id(), "time", time);
   h5::write_attribute(group.id(), "step", step);
   write_float_dataset(file_.id(), group_path + "/position", fields.position, 3, "m", "particle positions (x, y, z)");
-  write_float_dataset(file_.id(), group_path + "/velocity", fields.velocity, 3, "m/s",
-                      "particle velocities (x, y, z)");
+  write_float_dataset(file_.id(), group_path + "/velocity", fields.velocity, 3, "m/s", "particle velocities (x, y, z)");
   write_float_dataset(file_.id(), group_path + "/density", fields.density, 1, "kg/m^3", "SPH density of each particle");
   write_float_dataset(file_.id(), group_path + "/pressure", fields.pressure, 1, "Pa",
                       "pressure of each particle, P = k (rho - rho0)");
-  const bool with_body = h5::object_exists(file_.id(), kBodyPath) &&
-                         h5::dataset_shape(file_.id(), kBodyPath) == std::vector<hsize_t>{n};
+  const bool with_body =
+      h5::object_exists(file_.id(), kBodyPath) && h5::dataset_shape(file_.id(), kBodyPath) == std::vector<hsize_t>{n};
   snapshots_.push_back({step, time, n, with_body});
   flush();
   write_xdmf(path_);

@@ -17,9 +17,9 @@
 // run's whole state, and a RunLog reopened for a restart cuts every series back to its rows at
 // the latest checkpoint as the driver registers it again (add_series), removes the snapshots
 // taken after it, and appends from there.
-#include "util/hdf5_handle.hpp"
 #include "io/checkpoint_io.hpp"
 #include "io/output_claim.hpp"
+#include "util/hdf5_handle.hpp"
 
 #include <optional>
 #include <span>
@@ -56,7 +56,7 @@ struct RunLogHeader {
   std::string config;       // the scene document (JSON)
   std::string config_path;  // the scene file it came from (locates a recorded trajectory)
   std::string backend;
-  std::string record_device;       // "" for none
+  std::string record_device;  // "" for none
   bool phase_timing = false;
   double checkpoint_interval = 0.0;  // [s] wall clock; 0 for none
 };
@@ -162,7 +162,7 @@ class RunLog {
   std::vector<Series> series_;
   std::vector<SnapshotRecord> snapshots_;
   std::optional<Checkpoint> restart_;  // what a reopened log continues from
-  bool structure_changed_ = false;  // since the last flush
+  bool structure_changed_ = false;     // since the last flush
   bool finished_ = false;
 };
 

@@ -9,10 +9,10 @@
 namespace mssph {
 namespace {
 
-constexpr double kSide = 0.5;              // square base [m]
-constexpr double kFixedHeight = 0.2;       // the Figure 3 block's height [m]
-constexpr double kRestDensity = 1000.0;    // [kg/m^3]
-constexpr double kGravity = 9.81;          // [m/s^2]
+constexpr double kSide = 0.5;            // square base [m]
+constexpr double kFixedHeight = 0.2;     // the Figure 3 block's height [m]
+constexpr double kRestDensity = 1000.0;  // [kg/m^3]
+constexpr double kGravity = 9.81;        // [m/s^2]
 
 }  // namespace
 
@@ -59,13 +59,15 @@ Scene block_scene(BodyKind medium, std::size_t block_particles, BlockGeometry ge
       {"name", std::string("block_") + to_string(medium)},
       {"description", "Figure 2 benchmark block, " + to_string(geometry) + " geometry"},
       {"simulation", {{"dt", dt}, {"duration", 1000 * dt}, {"particle_spacing", dx}}},
-      {"materials", {{"block", material},
-                     {"wall", {{"rest_density", kRestDensity}, {"pressure_stiffness", k}, {"viscosity", 0.0}}}}},
+      {"materials",
+       {{"block", material},
+        {"wall", {{"rest_density", kRestDensity}, {"pressure_stiffness", k}, {"viscosity", 0.0}}}}},
       {"bodies",
-       {{"container", {{"kind", "boundary"},
-                       {"material", "wall"},
-                       {"shape", {{"type", "container"}, {"inner_size", {kSide, kSide, container_height}}}},
-                       {"position", {0.0, 0.0, 0.5 * container_height}}}},
+       {{"container",
+         {{"kind", "boundary"},
+          {"material", "wall"},
+          {"shape", {{"type", "container"}, {"inner_size", {kSide, kSide, container_height}}}},
+          {"position", {0.0, 0.0, 0.5 * container_height}}}},
         {"block", block}}}};
   return parse_scene(document, "block scene");
 }

@@ -73,9 +73,12 @@ std::vector<Eigen::Vector3d> sample_container(const Eigen::Vector3d& inner, int 
 
 std::vector<Eigen::Vector3d> sample_shape(const Shape& shape, double dx) {
   switch (shape.type) {
-    case ShapeType::box: return sample_box(shape.size, dx);
-    case ShapeType::sphere: return sample_sphere(shape.radius, dx);
-    case ShapeType::container: return sample_container(shape.size, shape.wall_layers, shape.open_top, dx);
+    case ShapeType::box:
+      return sample_box(shape.size, dx);
+    case ShapeType::sphere:
+      return sample_sphere(shape.radius, dx);
+    case ShapeType::container:
+      return sample_container(shape.size, shape.wall_layers, shape.open_top, dx);
   }
   return {};
 }

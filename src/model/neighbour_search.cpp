@@ -65,7 +65,8 @@ class HashedCells {
  private:
   Eigen::Array3i cell_of(const Eigen::Vector3d& x) const {
     const Eigen::Array3d c = (x * inverse_h_).array().floor();
-    if ((c.abs() > 1e9).any()) throw SimulationFailure("a particle is more than 1e9 smoothing lengths away: the scene exploded");
+    if ((c.abs() > 1e9).any())
+      throw SimulationFailure("a particle is more than 1e9 smoothing lengths away: the scene exploded");
     return c.cast<int>();
   }
   std::size_t bucket_of(const Eigen::Array3i& c) const {
@@ -75,9 +76,9 @@ class HashedCells {
 
   double inverse_h_;
   std::size_t mask_ = 0;
-  std::vector<Eigen::Array3i> cell_;             // cell of particle i
-  std::vector<std::size_t> starts_;              // bucket b: order_[starts_[b] .. starts_[b + 1])
-  std::vector<std::size_t> order_;               // particle indices sorted by bucket
+  std::vector<Eigen::Array3i> cell_;               // cell of particle i
+  std::vector<std::size_t> starts_;                // bucket b: order_[starts_[b] .. starts_[b + 1])
+  std::vector<std::size_t> order_;                 // particle indices sorted by bucket
   std::vector<Eigen::Vector3d> sorted_positions_;  // positions[order_[s]], contiguous per bucket
   std::vector<Eigen::Array3i> sorted_cells_;       // cell_[order_[s]]
 };

@@ -1,8 +1,8 @@
 #include "scene_builder.hpp"
 
 #include "lattice.hpp"
-#include "simulation_domain.hpp"
 #include "model/lattice_calibration.hpp"
+#include "simulation_domain.hpp"
 #include "util/errors.hpp"
 
 #include <cmath>
@@ -24,7 +24,8 @@ void set_rigid_mass_properties(BodySetup& body, const std::vector<Vector3d>& wor
   for (const Vector3d& x : world) com += x;
   com /= static_cast<double>(world.size());
   const Eigen::Matrix3d rotation = body.orientation.toRotationMatrix();
-  Eigen::Matrix3d inertia = Eigen::Matrix3d::Identity() * (static_cast<double>(world.size()) * particle_mass * dx * dx / 6.0);
+  Eigen::Matrix3d inertia =
+      Eigen::Matrix3d::Identity() * (static_cast<double>(world.size()) * particle_mass * dx * dx / 6.0);
   for (const Vector3d& x : world) {
     const Vector3d r = rotation.transpose() * (x - com);  // body frame
     inertia += particle_mass * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
@@ -144,7 +145,8 @@ ParticleSetup build_particles(const Scene& scene) {
 
     // Each particle stands for its lattice cell: m = rho0 dx^3 (density.hpp reads densities
     // against the rest lattice, so a rest lattice is at rho0 whatever the kernel).
-    const double sph_mass = config.material.rest_density * sim.particle_spacing * sim.particle_spacing * sim.particle_spacing;
+    const double sph_mass =
+        config.material.rest_density * sim.particle_spacing * sim.particle_spacing * sim.particle_spacing;
     const std::uint32_t body_index = static_cast<std::uint32_t>(setup.bodies.size());
     for (const Vector3d& x : world) {
       Vector3d v = Vector3d::Zero();
@@ -164,8 +166,9 @@ ParticleSetup build_particles(const Scene& scene) {
       setup.mass.push_back(sph_mass);
       setup.body.push_back(body_index);
       setup.fixed.push_back(held ? 1 : 0);
-      setup.rest_offset.push_back(config.kind == BodyKind::rigid ? Vector3d(rotation.transpose() * (x - body.centre_of_mass))
-                                                                 : Vector3d::Zero());
+      setup.rest_offset.push_back(config.kind == BodyKind::rigid
+                                      ? Vector3d(rotation.transpose() * (x - body.centre_of_mass))
+                                      : Vector3d::Zero());
     }
     setup.bodies.push_back(body);
   }

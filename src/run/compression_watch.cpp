@@ -44,8 +44,8 @@ void CompressionWatch::record(const std::vector<BodyState>& states, double time)
     w.warned = true;
     std::ostringstream message;
     message << "body \"" << w.name << "\" is compressed beyond its material model's valid range at t = " << time
-            << " s: smallest volume ratio det F = " << s.min_volume_ratio << " <= " << w.lowest_valid << " ("
-            << w.model << ", " << s.compressed_count << " particles); its forces no longer describe the material";
+            << " s: smallest volume ratio det F = " << s.min_volume_ratio << " <= " << w.lowest_valid << " (" << w.model
+            << ", " << s.compressed_count << " particles); its forces no longer describe the material";
     if (w.model == "stvk") message << " (consider model neo_hookean or corotated)";
     std::cerr << "warning: " << message.str() << "\n";
     log_.set_attribute("/bodies/" + w.name, "compression_warning", message.str());

@@ -4,10 +4,10 @@
 // volume ratio J = det F and how many particles are at or below the model's lowest valid J, warns
 // once per body (body, time, value) on stderr, and at the end writes, per body, the fraction of
 // logged samples that had any particle outside the valid range.
-#include "io/run_log.hpp"
-#include "backend/state_arrays.hpp"
-#include "model/particle_setup.hpp"
 #include "backend/backend.hpp"
+#include "backend/state_arrays.hpp"
+#include "io/run_log.hpp"
+#include "model/particle_setup.hpp"
 
 #include <cstddef>
 #include <string>
@@ -42,7 +42,9 @@ class CompressionWatch {
     std::size_t min_series = 0, count_series = 0;
     std::size_t samples = 0, samples_outside = 0;
     bool warned = false;
-    double fraction() const { return samples == 0 ? 0.0 : static_cast<double>(samples_outside) / static_cast<double>(samples); }
+    double fraction() const {
+      return samples == 0 ? 0.0 : static_cast<double>(samples_outside) / static_cast<double>(samples);
+    }
   };
   RunLog& log_;
   std::vector<Watched> watched_;

@@ -55,8 +55,8 @@ std::string LostMassWatch::finish() {
     log_.set_attribute("/bodies/" + w.name, "left_domain_count", static_cast<long long>(w.left));
     if (w.left == 0) continue;
     if (out.tellp() > 0) out << ", ";
-    out << w.name << " " << w.left << " particles (" << 100.0 * static_cast<double>(w.left) / static_cast<double>(w.particles)
-        << " %)";
+    out << w.name << " " << w.left << " particles ("
+        << 100.0 * static_cast<double>(w.left) / static_cast<double>(w.particles) << " %)";
   }
   return out.str();
 }

@@ -5,10 +5,10 @@
 // fails the run with SimulationFailure("N particles of body B left the domain ...") once they
 // carry more than simulation/max_lost_mass_fraction of the body's mass. The particles of a fluid
 // or deformable body all have the same mass (rho0 dx^3), so the mass fraction is the count's.
-#include "io/run_log.hpp"
-#include "backend/state_arrays.hpp"
-#include "model/particle_setup.hpp"
 #include "backend/backend.hpp"
+#include "backend/state_arrays.hpp"
+#include "io/run_log.hpp"
+#include "model/particle_setup.hpp"
 
 #include <cstddef>
 #include <string>

@@ -11,7 +11,12 @@ constexpr double kReportEvery = 5.0;       // [s]
 }  // namespace
 
 ProgressReporter::ProgressReporter(std::size_t total_steps, double dt, bool quiet, std::size_t first_step)
-    : total_steps_(total_steps), first_step_(first_step), dt_(dt), quiet_(quiet), start_(Clock::now()), last_print_(start_) {}
+    : total_steps_(total_steps),
+      first_step_(first_step),
+      dt_(dt),
+      quiet_(quiet),
+      start_(Clock::now()),
+      last_print_(start_) {}
 
 void ProgressReporter::update(std::size_t steps_done) {
   if (quiet_ || steps_done <= first_step_) return;

@@ -38,8 +38,10 @@ double lattice_count(const Eigen::Vector3d& size, double dx) {
 
 double shape_particles(const Shape& shape, double dx) {
   switch (shape.type) {
-    case ShapeType::box: return lattice_count(shape.size, dx);
-    case ShapeType::sphere: return std::max(1.0, 4.0 / 3.0 * std::numbers::pi * std::pow(shape.radius / dx, 3));
+    case ShapeType::box:
+      return lattice_count(shape.size, dx);
+    case ShapeType::sphere:
+      return std::max(1.0, 4.0 / 3.0 * std::numbers::pi * std::pow(shape.radius / dx, 3));
     case ShapeType::container: {
       const double wall = shape.wall_layers * dx;
       const Eigen::Vector3d outer =

@@ -3,11 +3,11 @@
 #include "backend_factory/backend_factory.hpp"
 #include "config/scene_loader.hpp"
 #include "haptics/haptics_run.hpp"
+#include "interrupt.hpp"
 #include "io/output_claim.hpp"
+#include "model/scene_builder.hpp"
 #include "output_path.hpp"
 #include "run_estimate.hpp"
-#include "model/scene_builder.hpp"
-#include "interrupt.hpp"
 #include "stability.hpp"
 #include "util/build_info.hpp"
 #include "util/errors.hpp"
@@ -107,7 +107,8 @@ void check_outputs(const SceneRunRequest& request, const Scene& scene, const std
   for (const auto& [path, option] : outputs) {
     for (const auto& [input, what] : inputs) {
       if (same_file(path, input)) {
-        throw InputError(option + " " + path + ": is " + what + " (" + input + "), which the run reads; never "
+        throw InputError(option + " " + path + ": is " + what + " (" + input +
+                         "), which the run reads; never "
                          "replaced, even with --force");
       }
     }
@@ -115,7 +116,8 @@ void check_outputs(const SceneRunRequest& request, const Scene& scene, const std
   if (!request.record_device.empty()) {
     for (std::size_t i = 0; i + 1 < outputs.size(); ++i) {
       if (same_file(request.record_device, outputs[i].first)) {
-        throw InputError("--record-device " + request.record_device + ": the run writes its log (or the log's "
+        throw InputError("--record-device " + request.record_device +
+                         ": the run writes its log (or the log's "
                          "partial file or sidecar) there");
       }
     }
@@ -129,12 +131,14 @@ void check_outputs(const SceneRunRequest& request, const Scene& scene, const std
   }
 }
 
-void print_plan(const Scene& scene, const std::string& backend, const RunEstimate& estimate,
-                const ParticleSetup& setup, const std::string& output, int threads) {
+void print_plan(const Scene& scene, const std::string& backend, const RunEstimate& estimate, const ParticleSetup& setup,
+                const std::string& output, int threads) {
   std::ostringstream out;
-  out << "dry run of " << scene.source_file << " (scene " << scene.name << ") on " << backend << ": nothing is written\n"
+  out << "dry run of " << scene.source_file << " (scene " << scene.name << ") on " << backend
+      << ": nothing is written\n"
       << "  particles: " << setup.size() << "\n";
-  for (const BodySetup& b : setup.bodies) out << "    " << b.name << " (" << to_string(b.kind) << "): " << b.count << "\n";
+  for (const BodySetup& b : setup.bodies)
+    out << "    " << b.name << " (" << to_string(b.kind) << "): " << b.count << "\n";
   out << "  memory estimate: host " << format_bytes(estimate.host_bytes);
   if (backend == "cuda") out << ", GPU " << format_bytes(estimate.device_bytes);
   if (const auto available = available_host_memory()) out << " (host available: " << format_bytes(*available) << ")";
@@ -188,12 +192,15 @@ SceneRunResult run_with_log(const Scene& scene, const ParticleSetup& setup, Back
 
 // Options that would change a restarted run: it takes them from its log.
 void check_restart_request(const SceneRunRequest& request) {
-  const std::vector<std::pair<bool, const char*>> refused{
-      {!request.scene_path.empty(), "a scene file"}, {!request.overrides.empty(), "--set"},
-      {request.backend != "auto", "--backend"},      {!request.output.empty(), "--out"},
-      {!request.record_device.empty(), "--record-device"}, {!request.tags.empty(), "--tag"},
-      {request.phase_timing, "--phase-timing"},      {request.force, "--force"},
-      {request.dry_run, "--dry-run"}};
+  const std::vector<std::pair<bool, const char*>> refused{{!request.scene_path.empty(), "a scene file"},
+                                                          {!request.overrides.empty(), "--set"},
+                                                          {request.backend != "auto", "--backend"},
+                                                          {!request.output.empty(), "--out"},
+                                                          {!request.record_device.empty(), "--record-device"},
+                                                          {!request.tags.empty(), "--tag"},
+                                                          {request.phase_timing, "--phase-timing"},
+                                                          {request.force, "--force"},
+                                                          {request.dry_run, "--dry-run"}};
   for (const auto& [given, what] : refused) {
     if (given) {
       throw InputError(std::string("--restart ") + request.restart + ": " + what +
@@ -210,8 +217,8 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
   check_restart_request(request);
   const std::string partial_suffix = ".partial";
   const bool names_partial = request.restart.size() > partial_suffix.size() &&
-                             request.restart.compare(request.restart.size() - partial_suffix.size(), partial_suffix.size(),
-                                                     partial_suffix) == 0;
+                             request.restart.compare(request.restart.size() - partial_suffix.size(),
+                                                     partial_suffix.size(), partial_suffix) == 0;
   const std::string output =
       names_partial ? request.restart.substr(0, request.restart.size() - partial_suffix.size()) : request.restart;
   const std::string partial = output + partial_suffix;
@@ -240,7 +247,8 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
     return result;
   }
   RunLog log(std::move(claim), RunLog::Restart{command_line_of(request)});
-  const double checkpoint_interval = request.checkpoint_interval > 0.0 ? request.checkpoint_interval : header.checkpoint_interval;
+  const double checkpoint_interval =
+      request.checkpoint_interval > 0.0 ? request.checkpoint_interval : header.checkpoint_interval;
   log.set_attribute("/", "threads", static_cast<long long>(threads));
   log.set_attribute("/", "checkpoint_interval", checkpoint_interval);
   if (!request.quiet) {
@@ -258,7 +266,8 @@ std::string command_line_of(const SceneRunRequest& request) {
   if (!request.restart.empty()) {
     std::string line = "mssph run --restart " + request.restart;
     if (request.threads > 0) line += " --threads " + std::to_string(request.threads);
-    if (request.checkpoint_interval > 0.0) line += " --checkpoint-interval " + std::to_string(request.checkpoint_interval);
+    if (request.checkpoint_interval > 0.0)
+      line += " --checkpoint-interval " + std::to_string(request.checkpoint_interval);
     return line;
   }
   std::string line = "mssph run " + request.scene_path + " --backend " + request.backend;
@@ -268,7 +277,8 @@ std::string command_line_of(const SceneRunRequest& request) {
   for (const std::string& t : request.tags) line += " --tag " + t;
   if (request.threads > 0) line += " --threads " + std::to_string(request.threads);
   if (request.phase_timing) line += " --phase-timing";
-  if (request.checkpoint_interval > 0.0) line += " --checkpoint-interval " + std::to_string(request.checkpoint_interval);
+  if (request.checkpoint_interval > 0.0)
+    line += " --checkpoint-interval " + std::to_string(request.checkpoint_interval);
   if (request.force) line += " --force";
   return line;
 }
@@ -283,8 +293,7 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   const std::string scene_text = read_text(request.scene_path);
   const std::string backend_name = resolve_backend_name(request.backend);
   const std::vector<Tag> tags = parse_tags(request.tags);
-  const std::string output =
-      request.output.empty() ? default_output_path(scene.name, backend_name) : request.output;
+  const std::string output = request.output.empty() ? default_output_path(scene.name, backend_name) : request.output;
   check_outputs(request, scene, output);
   // Checks of what the scene builds, after loading: a rejected value may still come from --set.
   const auto noting_overrides = [&](auto&& check) {
@@ -295,9 +304,8 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
     }
   };
   const RunEstimate estimate = noting_overrides([&] { return estimate_run(scene, backend_name); });
-  noting_overrides([&] {
-    check_run_fits(scene, backend_name, estimate, available_host_memory(), device_memory_for(backend_name));
-  });
+  noting_overrides(
+      [&] { check_run_fits(scene, backend_name, estimate, available_host_memory(), device_memory_for(backend_name)); });
   const int threads = request.threads > 0 ? request.threads : default_thread_count();
   set_thread_count(threads);
 
@@ -368,9 +376,10 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
     return result;
   }
 
-  return run_with_log(scene, setup_for_log, *backend, *log,
-                      RunOptions{request.quiet, request.record_device, request.phase_timing, request.checkpoint_interval},
-                      std::move(result));
+  return run_with_log(
+      scene, setup_for_log, *backend, *log,
+      RunOptions{request.quiet, request.record_device, request.phase_timing, request.checkpoint_interval},
+      std::move(result));
 }
 
 }  // namespace mssph::cli

@@ -16,16 +16,16 @@ struct SceneRunRequest {
   std::string scene_path;
   std::vector<std::string> overrides;  // --set PATH=VALUE, in order
   std::string backend = "auto";
-  std::string output;                  // "" for the default path results/runs/<scene>_<backend>.h5
-  std::string record_device;           // "" for none
+  std::string output;         // "" for the default path results/runs/<scene>_<backend>.h5
+  std::string record_device;  // "" for none
   // --tag NAME=VALUE: attributes of the log's /tags group, e.g. a sweep point's parameter values.
   // VALUE is stored as a number when it is one, else as text.
   std::vector<std::string> tags;
   bool quiet = false;
-  bool force = false;    // replace existing output files (regular files only, never an input)
-  bool dry_run = false;  // print the plan (particles, memory, dt bounds, steps) and write nothing
-  int threads = 0;       // host threads of the OpenMP loops; 0 for default_thread_count()
-  bool phase_timing = false;  // log each step's phase times (/timing/phases)
+  bool force = false;                // replace existing output files (regular files only, never an input)
+  bool dry_run = false;              // print the plan (particles, memory, dt bounds, steps) and write nothing
+  int threads = 0;                   // host threads of the OpenMP loops; 0 for default_thread_count()
+  bool phase_timing = false;         // log each step's phase times (/timing/phases)
   double checkpoint_interval = 0.0;  // wall-clock seconds between checkpoints; 0 for none
   // Continue the unfinished run whose log is here (<out>.partial, or <out> naming it) from its
   // latest checkpoint: scene, backend and options come from the log, so scene_path, overrides,
@@ -40,9 +40,9 @@ struct SceneRunResult {
   // The run log: the requested path when the run completed, <path>.partial otherwise, "" when
   // nothing was written (a dry run, a run interrupted or failed before its log existed).
   std::string output;
-  std::string error;        // why the run failed; "" when it completed
+  std::string error;  // why the run failed; "" when it completed
   BackendInfo backend;
-  RunSummary summary;       // meaningful when exit_code == kExitOk
+  RunSummary summary;  // meaningful when exit_code == kExitOk
 };
 
 // The command line that reproduces a request, recorded in the log.

@@ -1,10 +1,10 @@
 #include "simulation_run.hpp"
 
-#include "haptics/haptics_run.hpp"
-#include "io/checkpoint_io.hpp"
 #include "compression_watch.hpp"
-#include "lost_mass_watch.hpp"
+#include "haptics/haptics_run.hpp"
 #include "interrupt.hpp"
+#include "io/checkpoint_io.hpp"
+#include "lost_mass_watch.hpp"
 #include "progress.hpp"
 #include "util/errors.hpp"
 
@@ -39,13 +39,16 @@ std::vector<BodySeries> add_body_series(RunLog& log, const ParticleSetup& setup)
     BodySeries s;
     s.centre_of_mass = log.add_series(g + "/centre_of_mass", 3, "m", "centre of mass", xyz);
     s.linear_momentum = log.add_series(g + "/linear_momentum", 3, "kg m/s", "linear momentum", xyz);
-    s.angular_momentum = log.add_series(g + "/angular_momentum", 3, "kg m^2/s", "angular momentum about the centre of mass", xyz);
+    s.angular_momentum =
+        log.add_series(g + "/angular_momentum", 3, "kg m^2/s", "angular momentum about the centre of mass", xyz);
     s.kinetic_energy = log.add_series(g + "/kinetic_energy", 1, "J", "kinetic energy");
     s.max_speed = log.add_series(g + "/max_speed", 1, "m/s", "fastest particle's speed");
-    s.interaction_force = log.add_series(g + "/interaction_force", 3, "N",
-                                         "sum of forces from other bodies on this body's particles (paper eq. 7, 8)", xyz);
-    s.interaction_torque = log.add_series(g + "/interaction_torque", 3, "N m",
-                                          "torque of the interaction forces about the centre of mass (paper eq. 9)", xyz);
+    s.interaction_force =
+        log.add_series(g + "/interaction_force", 3, "N",
+                       "sum of forces from other bodies on this body's particles (paper eq. 7, 8)", xyz);
+    s.interaction_torque =
+        log.add_series(g + "/interaction_torque", 3, "N m",
+                       "torque of the interaction forces about the centre of mass (paper eq. 9)", xyz);
     if (body.moves_as_rigid_body()) {
       s.rigid = true;
       log.set_attribute(g, "mass", body.mass);
@@ -103,10 +106,11 @@ void check_for_blow_up(const std::vector<BodyState>& states, const ParticleSetup
       message << "has a particle at " << s.max_speed << " m/s, beyond simulation/max_speed = " << setup.max_speed
               << " m/s";
     }
-    message << "; particle " << i << " at (" << x.x() << ", " << x.y() << ", " << x.z() << ") m, velocity ("
-            << v.x() << ", " << v.y() << ", " << v.z() << ") m/s; CFL numbers: acoustic dt (c + |v|) / h = "
-            << setup.dt * (c + speed) / setup.smoothing_length << " (stable below 0.25), advective dt |v| / h = "
-            << setup.dt * speed / setup.smoothing_length << "; reduce dt or stiffness (see the start-up warnings)";
+    message << "; particle " << i << " at (" << x.x() << ", " << x.y() << ", " << x.z() << ") m, velocity (" << v.x()
+            << ", " << v.y() << ", " << v.z()
+            << ") m/s; CFL numbers: acoustic dt (c + |v|) / h = " << setup.dt * (c + speed) / setup.smoothing_length
+            << " (stable below 0.25), advective dt |v| / h = " << setup.dt * speed / setup.smoothing_length
+            << "; reduce dt or stiffness (see the start-up warnings)";
     throw SimulationFailure(message.str());
   }
 }
@@ -118,7 +122,8 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
   const double dt = scene.simulation.dt;
   const std::size_t total_steps = static_cast<std::size_t>(std::llround(scene.simulation.duration / dt));
   const std::size_t log_every = steps_per(scene.output.log_interval, dt);
-  const std::size_t snapshot_every = scene.output.snapshot_interval > 0.0 ? steps_per(scene.output.snapshot_interval, dt) : 0;
+  const std::size_t snapshot_every =
+      scene.output.snapshot_interval > 0.0 ? steps_per(scene.output.snapshot_interval, dt) : 0;
   // Blow-ups are looked for at least this often even when logging is sparse.
   const std::size_t check_every = std::min<std::size_t>(log_every, 100);
 
@@ -133,15 +138,17 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
 
   const std::size_t time_series = log.add_series("/time", 1, "s", "simulated time of each logged sample");
   const std::vector<BodySeries> body_series = add_body_series(log, setup);
-  const std::size_t step_time_series = log.add_series("/timing/step_wall_time", 1, "s",
-                                                         "host wall-clock time of each step (a GPU step returns once queued; its "
-                                                         "device time per phase is in /timing/phases, with --phase-timing)");
+  const std::size_t step_time_series =
+      log.add_series("/timing/step_wall_time", 1, "s",
+                     "host wall-clock time of each step (a GPU step returns once queued; its "
+                     "device time per phase is in /timing/phases, with --phase-timing)");
   std::optional<std::size_t> phase_series;
   backend.set_phase_timing(options.phase_timing);
   if (options.phase_timing) {
     const std::vector<std::string> phases = backend.phase_names();
     log.set_attribute("/timing", "phase_names", phases);
-    phase_series = log.add_series("/timing/phases", phases.size(), "s", "wall-clock time of each phase of each step", phases);
+    phase_series =
+        log.add_series("/timing/phases", phases.size(), "s", "wall-clock time of each phase of each step", phases);
   }
 
   std::size_t force_body = setup.bodies.size();
@@ -251,8 +258,9 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
       summary.steps = step;
       progress.update(step);
       const int signal = interrupt_signal();
-      const bool checkpoint_due = options.checkpoint_interval > 0.0 && step < total_steps &&
-                                  std::chrono::duration<double>(now - last_checkpoint).count() >= options.checkpoint_interval;
+      const bool checkpoint_due =
+          options.checkpoint_interval > 0.0 && step < total_steps &&
+          std::chrono::duration<double>(now - last_checkpoint).count() >= options.checkpoint_interval;
       if (signal || checkpoint_due) {
         log.write_checkpoint(static_cast<long long>(step), backend.time(), save_state());
         checkpoint_step = step;

@@ -2,10 +2,10 @@
 // Drives a backend through a scene's duration: logs body states and per-phase timings to the run
 // log at the scene's log rate, runs the haptic loop of a scene with a proxy (src/haptics), writes
 // snapshots, watches for blow-ups, reports progress, and marks the log completed or failed.
+#include "backend/backend.hpp"
 #include "config/scene.hpp"
 #include "io/run_log.hpp"
 #include "model/particle_setup.hpp"
-#include "backend/backend.hpp"
 
 #include <optional>
 #include <string>
@@ -23,10 +23,10 @@ struct RunOptions {
 
 struct RunSummary {
   std::size_t steps = 0;
-  double simulated_time = 0.0;   // [s]
-  double wall_seconds = 0.0;     // [s] the stepping loop alone
-  std::string force_body;        // the body whose peak force is reported (the proxy, if any)
-  double peak_force = 0.0;       // max |interaction force| on force_body [N]
+  double simulated_time = 0.0;                // [s]
+  double wall_seconds = 0.0;                  // [s] the stepping loop alone
+  std::string force_body;                     // the body whose peak force is reported (the proxy, if any)
+  double peak_force = 0.0;                    // max |interaction force| on force_body [N]
   std::optional<double> peak_rendered_force;  // max |force| the haptic device rendered [N]; runs with a proxy
   // Deformable bodies compressed beyond their material model's valid range (src/run/compression_watch.hpp):
   // the largest fraction of logged samples over the bodies [-], and "block 12.3 %, ..." ("" if none).

@@ -12,8 +12,8 @@ namespace {
 std::string bound_message(const std::string& body, const std::string& bound, double dt, double limit,
                           const std::string& detail) {
   std::ostringstream out;
-  out << "body \"" << body << "\": dt = " << dt << " s exceeds the " << bound << " bound " << limit << " s ("
-      << detail << "); the run may blow up";
+  out << "body \"" << body << "\": dt = " << dt << " s exceeds the " << bound << " bound " << limit << " s (" << detail
+      << "); the run may blow up";
   return out.str();
 }
 
@@ -28,7 +28,8 @@ std::vector<TimeStepBound> time_step_bounds(const ParticleSetup& setup) {
     if (body.is_static()) continue;
     const Material& m = body.material;
     double v_max = 0.0;
-    for (std::size_t i = body.first; i < body.first + body.count; ++i) v_max = std::max(v_max, setup.velocity[i].norm());
+    for (std::size_t i = body.first; i < body.first + body.count; ++i)
+      v_max = std::max(v_max, setup.velocity[i].norm());
     const double c = std::sqrt(m.pressure_stiffness);
     std::ostringstream acoustic;
     acoustic << "0.25 h / (c + v_max) with c = sqrt(k) = " << c << " m/s";

@@ -12,11 +12,11 @@
 namespace mssph {
 
 struct StepTimingOptions {
-  std::size_t warm_up_steps = 20;     // graph upload, caches, the first grid
-  double min_batch_seconds = 2e-3;    // a batch long enough that the clock and the sync are negligible
-  std::size_t min_batches = 10;       // enough per-step samples for a median and a spread
-  double min_total_seconds = 0.5;     // timed steps in all, at least
-  std::size_t max_steps = 100000;     // bound for tiny scenes
+  std::size_t warm_up_steps = 20;   // graph upload, caches, the first grid
+  double min_batch_seconds = 2e-3;  // a batch long enough that the clock and the sync are negligible
+  std::size_t min_batches = 10;     // enough per-step samples for a median and a spread
+  double min_total_seconds = 0.5;   // timed steps in all, at least
+  std::size_t max_steps = 100000;   // bound for tiny scenes
 };
 
 struct StepTimes {

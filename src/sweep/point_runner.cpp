@@ -201,8 +201,8 @@ RunnerReport run_point_tasks(const std::vector<PointTask>& tasks, const std::vec
       } else {
         ++report.interrupted;
         ++counts.interrupted;
-        what += " did not complete (" + (done > 0 ? describe_wait_status(status) : std::string("lost")) +
-                ", log " + (log.state == PointState::missing ? std::string("missing") : "\"" + log.status + "\"") +
+        what += " did not complete (" + (done > 0 ? describe_wait_status(status) : std::string("lost")) + ", log " +
+                (log.state == PointState::missing ? std::string("missing") : "\"" + log.status + "\"") +
                 "); it runs again when the sweep is resumed";
       }
       progress.finished(what, seconds);

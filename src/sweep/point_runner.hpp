@@ -17,10 +17,10 @@
 namespace mssph::sweep {
 
 struct PointTask {
-  std::string label;                // how progress names the point
-  std::vector<std::string> argv;    // argv[0] is the program's path
-  std::string log_path;             // the run log the child writes
-  std::string output_path;          // the child's stdout and stderr
+  std::string label;              // how progress names the point
+  std::vector<std::string> argv;  // argv[0] is the program's path
+  std::string log_path;           // the run log the child writes
+  std::string output_path;        // the child's stdout and stderr
 };
 
 struct RunSlot {
@@ -31,9 +31,9 @@ struct RunSlot {
 struct RunnerReport {
   std::size_t completed = 0;
   std::size_t failed = 0;
-  std::size_t interrupted = 0;      // stopped by a signal, or left incomplete
-  bool stopped_by_signal = false;   // the sweep itself got SIGINT or SIGTERM
-  std::string bad_input;            // a child exited with code 2: why (the sweep then stops)
+  std::size_t interrupted = 0;     // stopped by a signal, or left incomplete
+  bool stopped_by_signal = false;  // the sweep itself got SIGINT or SIGTERM
+  std::string bad_input;           // a child exited with code 2: why (the sweep then stops)
 };
 
 RunnerReport run_point_tasks(const std::vector<PointTask>& tasks, const std::vector<RunSlot>& slots,

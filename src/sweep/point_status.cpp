@@ -38,11 +38,16 @@ PointStatus read_point_status(const std::string& log_path) {
 
 const char* to_string(PointState state) {
   switch (state) {
-    case PointState::missing: return "missing";
-    case PointState::completed: return "completed";
-    case PointState::failed: return "failed";
-    case PointState::interrupted: return "interrupted";
-    case PointState::incomplete: return "incomplete";
+    case PointState::missing:
+      return "missing";
+    case PointState::completed:
+      return "completed";
+    case PointState::failed:
+      return "failed";
+    case PointState::interrupted:
+      return "interrupted";
+    case PointState::incomplete:
+      return "incomplete";
   }
   return "?";
 }

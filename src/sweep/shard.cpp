@@ -41,7 +41,8 @@ std::optional<Shard> shard_from_slurm(const std::map<std::string, std::string>& 
   if (!id_text) return std::nullopt;
   const auto fail = [&](const std::string& why) -> Shard {
     std::string values;
-    for (const char* name : kSlurmArrayVariables) values += std::string(" ") + name + "=" + get(name).value_or("(unset)");
+    for (const char* name : kSlurmArrayVariables)
+      values += std::string(" ") + name + "=" + get(name).value_or("(unset)");
     throw InputError("cannot shard this Slurm array task:" + values + ": " + why + "; pass --shard K/N");
   };
   const auto id = read_count(*id_text);
@@ -54,7 +55,8 @@ std::optional<Shard> shard_from_slurm(const std::map<std::string, std::string>& 
   } else if (const auto max = get("SLURM_ARRAY_TASK_MAX")) {
     if (const auto m = read_count(*max)) count = *m - *min + 1;
   }
-  if (!count || *count < 1) return fail("neither SLURM_ARRAY_TASK_COUNT nor SLURM_ARRAY_TASK_MIN/_MAX give the array's size");
+  if (!count || *count < 1)
+    return fail("neither SLURM_ARRAY_TASK_COUNT nor SLURM_ARRAY_TASK_MIN/_MAX give the array's size");
   if (*id - *min >= *count) return fail("the task id is beyond the array's size (an array with a step?)");
   return Shard{static_cast<std::size_t>(*id - *min), static_cast<std::size_t>(*count)};
 }

@@ -44,19 +44,29 @@ std::string array_script_text(const SlurmOptions& o) {
   const std::string tasks = std::to_string(o.tasks);
   std::string text =
       "#!/bin/bash\n"
-      "# mssph sweep " + o.sweep_name + ": " + tasks + " array tasks, task K running shard K/" + tasks + " of the\n"
+      "# mssph sweep " +
+      o.sweep_name + ": " + tasks + " array tasks, task K running shard K/" + tasks +
+      " of the\n"
       "# points. Written by `mssph sweep --emit-slurm`; submit it with submit.sh next to it, which adds the\n"
       "# merge job. A task skips points that already completed, so resubmitting the array, or part of it\n"
-      "# (sbatch --array=3,7 " + "sweep_array.sbatch), reruns only what is missing.\n"
-      "#SBATCH --job-name=mssph-" + o.sweep_name + "\n"
-      "#SBATCH --array=0-" + std::to_string(o.tasks - 1) + (o.max_parallel ? std::string("%") + std::to_string(o.max_parallel) : std::string()) + "\n"
-      "#SBATCH --output=" + logs_folder(o) + "/shard-%a.out\n" + common_directives(o);
+      "# (sbatch --array=3,7 " +
+      "sweep_array.sbatch), reruns only what is missing.\n"
+      "#SBATCH --job-name=mssph-" +
+      o.sweep_name +
+      "\n"
+      "#SBATCH --array=0-" +
+      std::to_string(o.tasks - 1) +
+      (o.max_parallel ? std::string("%") + std::to_string(o.max_parallel) : std::string()) +
+      "\n"
+      "#SBATCH --output=" +
+      logs_folder(o) + "/shard-%a.out\n" + common_directives(o);
   if (o.gpus_per_task > 0) text += "#SBATCH --gpus-per-task=" + std::to_string(o.gpus_per_task) + "\n";
   if (o.cpus_per_task > 0) text += "#SBATCH --cpus-per-task=" + std::to_string(o.cpus_per_task) + "\n";
   if (!o.time_limit.empty()) text += "#SBATCH --time=" + o.time_limit + "\n";
   text += "set -euo pipefail\n";
-  text += "exec " + shell_quote(o.program) + " sweep " + shell_quote(o.sweep_file) + " --out " + shell_quote(o.directory) +
-          " --backend " + shell_quote(o.backend) + " --shard \"${SLURM_ARRAY_TASK_ID}/" + tasks + "\"";
+  text += "exec " + shell_quote(o.program) + " sweep " + shell_quote(o.sweep_file) + " --out " +
+          shell_quote(o.directory) + " --backend " + shell_quote(o.backend) + " --shard \"${SLURM_ARRAY_TASK_ID}/" +
+          tasks + "\"";
   for (const std::string& s : o.overrides) text += " --set " + shell_quote(s);
   if (o.retry_failed) text += " --retry-failed";
   return text + "\n";
@@ -64,12 +74,18 @@ std::string array_script_text(const SlurmOptions& o) {
 
 std::string merge_script_text(const SlurmOptions& o) {
   return "#!/bin/bash\n"
-         "# mssph sweep " + o.sweep_name + ": summary of whatever the array finished (submit.sh runs it after\n"
+         "# mssph sweep " +
+         o.sweep_name +
+         ": summary of whatever the array finished (submit.sh runs it after\n"
          "# the array). Missing points are listed; rerunning the array and this job fills them in.\n"
-         "#SBATCH --job-name=mssph-" + o.sweep_name + "-merge\n"
-         "#SBATCH --output=" + logs_folder(o) + "/merge.out\n" + common_directives(o) +
+         "#SBATCH --job-name=mssph-" +
+         o.sweep_name +
+         "-merge\n"
+         "#SBATCH --output=" +
+         logs_folder(o) + "/merge.out\n" + common_directives(o) +
          "set -euo pipefail\n"
-         "exec " + shell_quote(o.program) + " sweep merge " + shell_quote(o.directory) + "\n";
+         "exec " +
+         shell_quote(o.program) + " sweep merge " + shell_quote(o.directory) + "\n";
 }
 
 std::string submit_script_text(const SlurmOptions& o, const SlurmScripts& paths) {
@@ -77,12 +93,16 @@ std::string submit_script_text(const SlurmOptions& o, const SlurmScripts& paths)
          "# Submits the sweep's array job, then its merge job, which waits for every array task to end\n"
          "# (afterany: a failed point must not cancel the summary of the others).\n"
          "set -euo pipefail\n"
-         "array_job=$(sbatch --parsable " + shell_quote(paths.array_script) + ")\n"
+         "array_job=$(sbatch --parsable " +
+         shell_quote(paths.array_script) +
+         ")\n"
          "array_job=${array_job%%;*}  # --parsable prints JOBID[;CLUSTER]\n"
-         "merge_job=$(sbatch --parsable --dependency=afterany:${array_job} " + shell_quote(paths.merge_script) + ")\n"
+         "merge_job=$(sbatch --parsable --dependency=afterany:${array_job} " +
+         shell_quote(paths.merge_script) +
+         ")\n"
          "merge_job=${merge_job%%;*}\n"
-         "echo \"mssph sweep " + o.sweep_name + ": array job ${array_job} (" + std::to_string(o.tasks) +
-         " tasks), merge job ${merge_job}\"\n";
+         "echo \"mssph sweep " +
+         o.sweep_name + ": array job ${array_job} (" + std::to_string(o.tasks) + " tasks), merge job ${merge_job}\"\n";
 }
 
 SlurmScripts write_slurm_scripts(const SlurmOptions& o) {

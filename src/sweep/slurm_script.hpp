@@ -10,19 +10,19 @@
 namespace mssph::sweep {
 
 struct SlurmOptions {
-  std::string program;                 // absolute path of the mssph binary the tasks run
-  std::string sweep_file;              // absolute
-  std::string directory;               // absolute output folder
+  std::string program;     // absolute path of the mssph binary the tasks run
+  std::string sweep_file;  // absolute
+  std::string directory;   // absolute output folder
   std::string sweep_name;
   std::string backend;
   std::vector<std::string> overrides;  // the command line's --set
   bool retry_failed = false;
-  std::size_t tasks = 1;               // array size = shard count
-  std::size_t max_parallel = 0;        // array throttle (%M); 0 for none
-  std::string partition;               // "" for the cluster's default
+  std::size_t tasks = 1;         // array size = shard count
+  std::size_t max_parallel = 0;  // array throttle (%M); 0 for none
+  std::string partition;         // "" for the cluster's default
   int gpus_per_task = 0;
   int cpus_per_task = 0;
-  std::string time_limit;              // sbatch --time, "" for the partition's default
+  std::string time_limit;                   // sbatch --time, "" for the partition's default
   std::vector<std::string> sbatch_options;  // extra "#SBATCH <option>" lines for both jobs
 };
 

@@ -46,7 +46,8 @@ SweepParameter read_parameter(const JsonReader& reader) {
   SweepParameter p;
   p.pointer = reader.pointer();
   p.path = reader.string("path");
-  if (p.path.empty() || p.path == "/") reader.fail("path", "expected a scene JSON path such as \"materials/gel/young_modulus\"");
+  if (p.path.empty() || p.path == "/")
+    reader.fail("path", "expected a scene JSON path such as \"materials/gel/young_modulus\"");
   if (p.path.front() == '/') p.path.erase(0, 1);  // as --set, with or without the leading '/'
   if (p.path == kSeedPath) {
     reader.fail("path", std::string("\"") + kSeedPath + "\" is set by \"repetitions\"; list seeds there");
@@ -69,9 +70,11 @@ SweepParameter read_parameter(const JsonReader& reader) {
     const std::vector<JsonReader> elements = list.elements();
     if (elements.empty()) list.fail_here("expected at least one value, got an empty list");
     for (const JsonReader& e : elements) {
-      if (e.value().is_null() || e.value().is_object()) e.fail_here("expected a scene value, got " + describe_json(e.value()));
+      if (e.value().is_null() || e.value().is_object())
+        e.fail_here("expected a scene value, got " + describe_json(e.value()));
       for (const nlohmann::json& earlier : p.values) {
-        if (earlier == e.value()) e.fail_here("duplicate value " + e.value().dump() + " (it would run the same point twice)");
+        if (earlier == e.value())
+          e.fail_here("duplicate value " + e.value().dump() + " (it would run the same point twice)");
       }
       p.values.push_back(e.value());
     }
@@ -97,7 +100,8 @@ std::vector<long long> read_seeds(const JsonReader& repetitions) {
       e.fail_here("expected a seed, an integer >= 0, got " + describe_json(v));
     }
     const long long seed = v.is_number_float() ? static_cast<long long>(d) : v.get<long long>();
-    if (std::find(seeds.begin(), seeds.end(), seed) != seeds.end()) e.fail_here("duplicate seed " + std::to_string(seed));
+    if (std::find(seeds.begin(), seeds.end(), seed) != seeds.end())
+      e.fail_here("duplicate seed " + std::to_string(seed));
     seeds.push_back(seed);
   }
   if (seeds.empty()) list.fail_here("expected at least one seed, got an empty list");
@@ -116,7 +120,8 @@ std::vector<std::string> read_metrics(const JsonReader& root, const std::vector<
     if (std::find(known.begin(), known.end(), name) == known.end()) {
       e.fail_here("unknown metric \"" + name + "\"; known metrics: " + known_list);
     }
-    if (std::find(metrics.begin(), metrics.end(), name) != metrics.end()) e.fail_here("metric \"" + name + "\" listed twice");
+    if (std::find(metrics.begin(), metrics.end(), name) != metrics.end())
+      e.fail_here("metric \"" + name + "\" listed twice");
     metrics.push_back(name);
   }
   if (metrics.empty()) list.fail_here("expected at least one metric (leave \"metrics\" out for all of them)");
@@ -127,9 +132,12 @@ std::vector<std::string> read_metrics(const JsonReader& root, const std::vector<
 
 const char* to_string(ValueScale scale) {
   switch (scale) {
-    case ValueScale::list: return "list";
-    case ValueScale::linear: return "linear";
-    case ValueScale::log: return "log";
+    case ValueScale::list:
+      return "list";
+    case ValueScale::linear:
+      return "linear";
+    case ValueScale::log:
+      return "log";
   }
   return "?";
 }
@@ -154,10 +162,12 @@ SweepFile load_sweep_file(const std::string& path, const std::vector<std::string
   sweep.document = read_json_file(path, "sweep file");
   const JsonReader root(sweep.document, path);
   if (!sweep.document.is_object()) root.fail_here("expected a sweep object");
-  root.allow_only({"$schema", "name", "description", "scene", "set", "parameters", "combine", "repetitions", "metrics"});
+  root.allow_only(
+      {"$schema", "name", "description", "scene", "set", "parameters", "combine", "repetitions", "metrics"});
   root.string_or("$schema", "");  // for editors only
   sweep.name = root.string("name");
-  if (!is_plain_name(sweep.name)) root.fail("name", "expected a name of letters, digits, '_', '-' or '.' (it names jobs and files)");
+  if (!is_plain_name(sweep.name))
+    root.fail("name", "expected a name of letters, digits, '_', '-' or '.' (it names jobs and files)");
   sweep.description = root.string_or("description", "");
 
   const std::string scene = root.string("scene");
@@ -179,7 +189,8 @@ SweepFile load_sweep_file(const std::string& path, const std::vector<std::string
   for (const JsonReader& p : parameters.elements()) {
     SweepParameter parameter = read_parameter(p);
     for (const SweepParameter& earlier : sweep.parameters) {
-      if (earlier.name == parameter.name) p.fail_here("a second parameter named \"" + parameter.name + "\" (set \"name\")");
+      if (earlier.name == parameter.name)
+        p.fail_here("a second parameter named \"" + parameter.name + "\" (set \"name\")");
       if (earlier.path == parameter.path) p.fail("path", "\"" + parameter.path + "\" is swept twice");
     }
     if (std::find(known_metrics.begin(), known_metrics.end(), parameter.name) != known_metrics.end()) {

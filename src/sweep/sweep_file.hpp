@@ -25,15 +25,15 @@ struct SweepParameter {
 enum class Combine { product, zip };
 
 struct SweepFile {
-  std::string source_file;      // as given
-  nlohmann::json document;      // as read
+  std::string source_file;  // as given
+  nlohmann::json document;  // as read
   std::string name;
   std::string description;
-  std::string scene_path;       // resolved against the sweep file's folder
+  std::string scene_path;                    // resolved against the sweep file's folder
   std::vector<std::string> fixed_overrides;  // "set": applied to every point before its parameters
   std::vector<SweepParameter> parameters;
   Combine combine = Combine::product;
-  std::vector<long long> seeds;  // repetitions: one point per seed and parameter combination; empty: none
+  std::vector<long long> seeds;      // repetitions: one point per seed and parameter combination; empty: none
   std::vector<std::string> metrics;  // the metrics to collect, in order
 };
 

@@ -53,8 +53,8 @@ void SweepProgress::print(const std::string& event) {
   const std::size_t left = counts_.total - counts_.done - counts_.failed - counts_.interrupted;
   // The points running now are part of what is left, started some time ago: a slight overestimate.
   const auto eta = eta_seconds(left, parallel_, finished_points_, finished_seconds_);
-  std::fprintf(stderr, "sweep %s: %s  [%zu/%zu done, %zu running, %zu failed; ETA %s]\n", name_.c_str(),
-               event.c_str(), counts_.done, counts_.total, counts_.running, counts_.failed,
+  std::fprintf(stderr, "sweep %s: %s  [%zu/%zu done, %zu running, %zu failed; ETA %s]\n", name_.c_str(), event.c_str(),
+               counts_.done, counts_.total, counts_.running, counts_.failed,
                eta ? format_duration(*eta).c_str() : "after the first point");
   last_print_ = Clock::now();
 }

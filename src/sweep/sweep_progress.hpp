@@ -10,9 +10,9 @@
 namespace mssph::sweep {
 
 struct SweepCounts {
-  std::size_t total = 0;        // points this invocation is responsible for (its shard)
-  std::size_t done = 0;         // completed, now or before
-  std::size_t failed = 0;       // failed, now or before (not retried)
+  std::size_t total = 0;   // points this invocation is responsible for (its shard)
+  std::size_t done = 0;    // completed, now or before
+  std::size_t failed = 0;  // failed, now or before (not retried)
   std::size_t running = 0;
   std::size_t interrupted = 0;  // stopped this time; rerun by the next invocation
 };

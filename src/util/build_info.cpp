@@ -3,20 +3,18 @@
 namespace mssph {
 
 const BuildInfo& build_info() {
-  static const BuildInfo info{
-      MSSPH_VERSION,
+  static const BuildInfo info {
+    MSSPH_VERSION,
 #include "git_commit.inc"
-      ,
-      MSSPH_BUILD_TYPE,
+        , MSSPH_BUILD_TYPE,
 #if defined(__clang__)
-      "clang " __clang_version__,
+        "clang " __clang_version__,
 #elif defined(__GNUC__)
-      "g++ " __VERSION__,
+        "g++ " __VERSION__,
 #else
-      "unknown",
+        "unknown",
 #endif
-      MSSPH_WITH_CUDA_BACKEND != 0,
-      MSSPH_CUDA_ARCHITECTURES,
+        MSSPH_WITH_CUDA_BACKEND != 0, MSSPH_CUDA_ARCHITECTURES,
   };
   return info;
 }

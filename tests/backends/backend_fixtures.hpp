@@ -2,9 +2,9 @@
 // Running a float32 backend (cpu, cuda) beside the reference on the same scene.
 #include "backend_factory/backend_factory.hpp"
 #include "config/scene_loader.hpp"
-#include "model/scene_builder.hpp"
 #include "framework/backends.hpp"
 #include "kernels/sphere_drops/sphere_drops.hpp"
+#include "model/scene_builder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,13 +16,14 @@ namespace mssph::testing {
 // Whether the named backend can run here; the cuda backend needs both the build and a GPU.
 inline bool backend_runs_here(const std::string& name) { return why_backend_cannot_run(name).empty(); }
 
-#define MSSPH_SKIP_WITHOUT(backend_name)                                                              \
-  if (!mssph::testing::backend_runs_here(backend_name)) {                                           \
-    GTEST_SKIP() << "backend " << (backend_name) << " cannot run here (no CUDA build or no GPU)";    \
+#define MSSPH_SKIP_WITHOUT(backend_name)                                                          \
+  if (!mssph::testing::backend_runs_here(backend_name)) {                                         \
+    GTEST_SKIP() << "backend " << (backend_name) << " cannot run here (no CUDA build or no GPU)"; \
   }
 
 // A shipped scene at a coarse spacing, as CI runs it.
-inline ParticleSetup coarse_scene(const std::string& config, double duration, const std::vector<std::string>& extra = {}) {
+inline ParticleSetup coarse_scene(const std::string& config, double duration,
+                                  const std::vector<std::string>& extra = {}) {
   return validation::shipped_scene(config, 0.04, duration, extra);
 }
 

@@ -74,7 +74,8 @@ TEST_F(DeviceArraysTest, CountedBytesAreTheSumOfTheListedArrays) {
 // member must be listed once. All ArraySize<T> are one std::size_t, so the members are counted by
 // size.
 TEST_F(DeviceArraysTest, EveryDeclaredArrayIsListedOnce) {
-  static_assert(sizeof(ArraySize<kernels::Mat3>) == sizeof(std::size_t) && sizeof(ArraySize<char>) == sizeof(std::size_t));
+  static_assert(sizeof(ArraySize<kernels::Mat3>) == sizeof(std::size_t) &&
+                sizeof(ArraySize<char>) == sizeof(std::size_t));
   constexpr std::size_t declared = sizeof(DeviceArrays<ArraySize>) / sizeof(std::size_t);
   ASSERT_FALSE(scene.deformable_body.empty());
   ASSERT_FALSE(scene.rigid_bodies.empty());
@@ -144,12 +145,12 @@ TEST_F(DeviceArraysTest, DeformableAndRestDensityArraysAddExactlyTheirBytes) {
   const std::size_t n = setup.size();
   const std::size_t d = scene.deformable_body.size();
   const std::size_t deformable_bytes =
-      n * sizeof(kernels::Vec4) +                                           // elastic_force
-      scene.elastic_bodies.size() * sizeof(kernels::ElasticParameters) +    // elastic_bodies
-      d * (sizeof(std::uint32_t) + sizeof(kernels::Vec4) + sizeof(kernels::Quat)) + // deformable_body, rest, rotation
-      d * 3 * sizeof(kernels::Mat3) +                                       // correction, corrected_stress_action, deformation
-      d * sizeof(std::uint32_t) +                                           // bond_count
-      scene.bond_neighbour.size() * sizeof(std::uint32_t);                  // bond_neighbour
+      n * sizeof(kernels::Vec4) +                                                    // elastic_force
+      scene.elastic_bodies.size() * sizeof(kernels::ElasticParameters) +             // elastic_bodies
+      d * (sizeof(std::uint32_t) + sizeof(kernels::Vec4) + sizeof(kernels::Quat)) +  // deformable_body, rest, rotation
+      d * 3 * sizeof(kernels::Mat3) +                       // correction, corrected_stress_action, deformation
+      d * sizeof(std::uint32_t) +                           // bond_count
+      scene.bond_neighbour.size() * sizeof(std::uint32_t);  // bond_neighbour
   EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kGridBlocks, kTeamLanes).total_bytes -
                 kernels::device_array_sizes(without, chunks, kGridBlocks, kTeamLanes).total_bytes,
             deformable_bytes);

@@ -49,7 +49,8 @@ std::vector<std::vector<std::uint32_t>> expected_ranges(const SortedParticles& s
     return (dx < 0 && side > 0 && !upper) || (dx > 0 && side < 0 && upper);
   };
   std::vector<std::uint32_t> key_of_particle(sorted.position.size());
-  for (std::uint32_t s = 0; s < sorted.position.size(); ++s) key_of_particle[s] = shape.key_of(kernels::xyz(sorted.position[s]));
+  for (std::uint32_t s = 0; s < sorted.position.size(); ++s)
+    key_of_particle[s] = shape.key_of(kernels::xyz(sorted.position[s]));
   const auto cell_particles = [&](std::uint32_t key, int dx) {
     std::vector<std::uint32_t> in_cell;
     for (std::uint32_t s = 0; s < sorted.position.size(); ++s) {
@@ -311,10 +312,10 @@ LeftOutWalks expect_walks_leave_out_rows(const SortedParticles& sorted, const st
       const std::vector<std::vector<std::uint32_t>> whole = expected_ranges(sorted, x, /*trim=*/false);
       for (std::size_t r = 0; r < ranges.size(); ++r) {
         if (whole[r].empty()) continue;
-        const bool only_left_out = left_out < kernels::kMixedCell &&
-                                   std::all_of(whole[r].begin(), whole[r].end(), [&](std::uint32_t t) {
-                                     return kernels::body_of(sorted.position[t]) == left_out;
-                                   });
+        const bool only_left_out =
+            left_out < kernels::kMixedCell && std::all_of(whole[r].begin(), whole[r].end(), [&](std::uint32_t t) {
+              return kernels::body_of(sorted.position[t]) == left_out;
+            });
         if (only_left_out) {
           ++met.rows_left_out;
         } else {
@@ -326,8 +327,8 @@ LeftOutWalks expect_walks_leave_out_rows(const SortedParticles& sorted, const st
       for (const std::uint32_t lanes : {1u, 3u, 8u}) {
         for (std::uint32_t lane = 0; lane < lanes; ++lane) {
           std::vector<std::uint32_t> visits, expected;
-          grid.for_each_candidate(x, lane, lanes, [&](std::uint32_t t) { visits.push_back(t); },
-                                  grid.cells_holding_only(x, left_out));
+          grid.for_each_candidate(
+              x, lane, lanes, [&](std::uint32_t t) { visits.push_back(t); }, grid.cells_holding_only(x, left_out));
           for (const std::vector<std::uint32_t>& range : lanes == 1 ? kept : kept_whole) {
             for (std::size_t k = lane; k < range.size(); k += lanes) expected.push_back(range[k]);
           }

@@ -2,8 +2,8 @@
 // teams' (recorded on the host): recorded once, they must give every particle the same neighbours
 // as a fresh search for as long as no particle has moved past the trigger, and the trigger must
 // fire before a pair can come within the support unlisted.
-#include "common/fluid_physics.hpp"
 #include "common/list_skin.hpp"
+#include "common/fluid_physics.hpp"
 #include "neighbour_list_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -87,7 +87,8 @@ TEST(ListSkin, ListsHoldEveryNeighbourWhileNoParticleMovedPastTheTrigger) {
   for (const std::uint32_t lanes : {1u, 2u, 4u, 8u}) {
     SCOPED_TRACE(::testing::Message() << lanes << " lanes");
     std::mt19937_64 random(1967 + lanes);
-    JitteredLattice lattice(random, compressed_by_up_to_4_percent(random), static_cast<float>(kernels::list_cell_size(1.0)));
+    JitteredLattice lattice(random, compressed_by_up_to_4_percent(random),
+                            static_cast<float>(kernels::list_cell_size(1.0)));
     const kernels::SortedView v = lattice.view();  // views the lattice's positions, which move below
     const kernels::ListSkin skin = kernels::list_skin(v.step.smoothing.h);
     std::unique_ptr<HostLists> host;
@@ -132,7 +133,8 @@ TEST(ListSkin, ListsHoldEveryNeighbourWhileNoParticleMovedPastTheTrigger) {
 // the one the force pass reads.
 TEST(ListSkin, TheHostsDensitySumCopiesExactlyTheEntriesWithinTheSupport) {
   std::mt19937_64 random(2011);
-  JitteredLattice lattice(random, compressed_by_up_to_4_percent(random), static_cast<float>(kernels::list_cell_size(1.0)));
+  JitteredLattice lattice(random, compressed_by_up_to_4_percent(random),
+                          static_cast<float>(kernels::list_cell_size(1.0)));
   const kernels::SortedView v = lattice.view();
   const kernels::ListSkin skin = kernels::list_skin(v.step.smoothing.h);
   const HostLists host(v, skin.record_radius2);
@@ -179,9 +181,9 @@ TEST(ListSkin, TheTriggerFiresBeforeAPairComesWithinTheSupportUnlisted) {
 
   kernels::GridShape shape;
   shape.inverse_cell_size = static_cast<float>(1.0 / kernels::list_cell_size(h));
-  SortedParticles sorted = sort_into_grid({kernels::make_vec4(a, kernels::index_as_float_bits(0)),
-                                           kernels::make_vec4(b, kernels::index_as_float_bits(0))},
-                                          shape);
+  SortedParticles sorted = sort_into_grid(
+      {kernels::make_vec4(a, kernels::index_as_float_bits(0)), kernels::make_vec4(b, kernels::index_as_float_bits(0))},
+      shape);
   const std::vector<kernels::BodyParameters> bodies = {{kernels::kFluid, kernels::kNotRigid, 0, 1000, 100, 1.0f}};
   kernels::SortedView v{};
   v.step.smoothing = kernels::SmoothingKernels::for_support(h);

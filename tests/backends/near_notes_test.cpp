@@ -6,8 +6,8 @@
 // notes nothing (its notes' words are its canonical velocity in a step); the force sums over the
 // notes have the bits of the walk that tests every candidate; and the force walk does take the
 // notes: with them cleared it visits nothing in the segments they cover.
-#include "common/fluid_physics.hpp"
 #include "common/near_notes.hpp"
+#include "common/fluid_physics.hpp"
 #include "neighbour_list_fixtures.hpp"
 
 #include <gtest/gtest.h>

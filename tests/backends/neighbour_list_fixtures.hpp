@@ -132,10 +132,9 @@ struct TeamLists {
     lists = kernels::lane_lists(capacity, static_cast<std::uint32_t>(count.size()), count.data(), index.data());
     for (std::uint32_t s = 0; s < v.step.particle_count; ++s) {
       for (std::uint32_t lane = 0; lane < lanes; ++lane) {
-        density[list_of(s, lane)] =
-            kernels::density_sum_recording(v, s, lane, lanes, kernels::cells_left_out(v, s), lists, list_of(s, lane),
-                                           record_radius2)
-                .delta;
+        density[list_of(s, lane)] = kernels::density_sum_recording(v, s, lane, lanes, kernels::cells_left_out(v, s),
+                                                                   lists, list_of(s, lane), record_radius2)
+                                        .delta;
       }
     }
   }

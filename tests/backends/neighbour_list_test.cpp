@@ -7,9 +7,9 @@
 // compressed lattice of three bodies (walls, fluid, a deformable block whose own neighbours the
 // density sum skips) in a grid small enough to wrap, so periodic images share cells with real
 // neighbours.
+#include "common/neighbour_list.hpp"
 #include "common/fluid_physics.hpp"
 #include "common/list_skin.hpp"
-#include "common/neighbour_list.hpp"
 #include "cuda/device_arrays.hpp"
 #include "neighbour_list_fixtures.hpp"
 
@@ -37,7 +37,8 @@ struct Lists {
   }
 };
 
-std::vector<std::uint32_t> visited(const kernels::SortedView& v, const kernels::NeighbourLists& lists, std::uint32_t s) {
+std::vector<std::uint32_t> visited(const kernels::SortedView& v, const kernels::NeighbourLists& lists,
+                                   std::uint32_t s) {
   std::vector<std::uint32_t> out;
   kernels::for_each_neighbour(v, lists, s, [&](std::uint32_t t) { out.push_back(t); });
   return out;
@@ -86,7 +87,8 @@ TEST(NeighbourLists, SumsOverTheListAreTheGridWalksBits) {
   for (std::uint32_t s = 0; s < lattice.size(); ++s) {
     const kernels::DensitySum walked = kernels::density_sum(v, s, 0, 1);
     const kernels::DensitySum listed = kernels::density_sum_over(v, s, kernels::neighbours_of(v, lists.lists, s));
-    ASSERT_TRUE(same_bits(walked.delta, listed.delta)) << "particle " << s << ": " << walked.delta << " vs " << listed.delta;
+    ASSERT_TRUE(same_bits(walked.delta, listed.delta))
+        << "particle " << s << ": " << walked.delta << " vs " << listed.delta;
     const kernels::ForceParticle i = kernels::load_force_particle(v, s);
     const kernels::ForceSum walked_force = kernels::force_sum(v, i);
     const kernels::ForceSum listed_force = kernels::force_sum_over(v, i, kernels::neighbours_of(v, lists.lists, s));
@@ -94,7 +96,8 @@ TEST(NeighbourLists, SumsOverTheListAreTheGridWalksBits) {
     ASSERT_TRUE(same_bits(walked_force.viscosity, listed_force.viscosity)) << "particle " << s;
     ASSERT_TRUE(same_bits(walked_force.interaction, listed_force.interaction)) << "particle " << s;
     ASSERT_EQ(walked_force.nearest_boundary2, listed_force.nearest_boundary2) << "particle " << s;
-    if (i.body == kDeformableBody && !same_bits(walked_force.interaction, Vec3{0, 0, 0})) ++deformable_with_foreign_neighbours;
+    if (i.body == kDeformableBody && !same_bits(walked_force.interaction, Vec3{0, 0, 0}))
+      ++deformable_with_foreign_neighbours;
   }
   // The deformable block meets the fluid and the walls: its particles' sums take the body tests.
   EXPECT_GT(deformable_with_foreign_neighbours, 100);
@@ -121,7 +124,8 @@ TEST(NeighbourLists, AFullListFallsBackToTheGridWalk) {
   EXPECT_EQ(visited(v, too_small.lists, s).size(), candidates) << "an overflowed list walks every candidate";
   const float walked = kernels::density_sum(v, s, 0, 1).delta;
   EXPECT_TRUE(same_bits(walked, kernels::density_sum_over(v, s, kernels::neighbours_of(v, too_small.lists, s)).delta));
-  EXPECT_TRUE(same_bits(walked, kernels::density_sum_over(v, s, kernels::neighbours_of(v, just_enough.lists, s)).delta));
+  EXPECT_TRUE(
+      same_bits(walked, kernels::density_sum_over(v, s, kernels::neighbours_of(v, just_enough.lists, s)).delta));
 }
 
 // The cpu backend's density pass over a row that overflowed (density_sum_keeping_within): its sum
@@ -169,7 +173,8 @@ std::vector<std::uint32_t> expected_list_entries(const kernels::SortedView& v, s
 // or overflows (capacity 2 holds one entry; 64 holds all of them).
 TEST(TeamNeighbourLists, KeepEveryLanesSumsAndListItsShareWithinTheSkin) {
   std::mt19937_64 random(20261124);
-  const JitteredLattice lattice(random, compressed_by_up_to_4_percent(random), static_cast<float>(kernels::list_cell_size(1.0)));
+  const JitteredLattice lattice(random, compressed_by_up_to_4_percent(random),
+                                static_cast<float>(kernels::list_cell_size(1.0)));
   const kernels::SortedView v = lattice.view();
   const float record_radius2 = kernels::list_skin(v.step.smoothing.h).record_radius2;
   for (const std::uint32_t lanes : {2u, 4u, 8u}) {
@@ -196,8 +201,8 @@ TEST(TeamNeighbourLists, KeepEveryLanesSumsAndListItsShareWithinTheSkin) {
             ASSERT_EQ(team.entries(list), expected) << "particle " << s << ", lane " << lane;
             for (const std::uint32_t t : expected) in_the_skin += within_support(v, s, t) ? 0 : 1;
           }
-          const kernels::ForceSum walked = kernels::force_sum_over(
-              v, i, [&](auto&& visit) { v.grid.for_each_candidate(i.x, lane, lanes, visit); });
+          const kernels::ForceSum walked =
+              kernels::force_sum_over(v, i, [&](auto&& visit) { v.grid.for_each_candidate(i.x, lane, lanes, visit); });
           const kernels::ForceSum from_list = kernels::force_sum_listed(v, i, lane, lanes, team.lists, list);
           ASSERT_TRUE(same_bits(walked.pressure, from_list.pressure)) << "particle " << s << ", lane " << lane;
           ASSERT_TRUE(same_bits(walked.viscosity, from_list.viscosity)) << "particle " << s;

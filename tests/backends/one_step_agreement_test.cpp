@@ -27,8 +27,8 @@ void compare(const std::string& backend, const validation::OneStepScene& scene) 
   const std::uint64_t seed = fresh_seed();
   const validation::OneStepErrors e = validation::one_step_errors(backend, scene, seed);
   std::cout << backend << " " << scene.name << " seed " << seed << ": density " << e.density << ", pressure "
-            << e.pressure << ", pressure force "
-            << e.pressure_force << ", viscosity force " << e.viscosity_force << ", total force " << e.total_force;
+            << e.pressure << ", pressure force " << e.pressure_force << ", viscosity force " << e.viscosity_force
+            << ", total force " << e.total_force;
   // Densities: float32 sums of ~30 terms, 1e-5 relative (the bound).
   EXPECT_LT(e.density, 1e-5);
   EXPECT_LT(e.pressure, 1e-5);  // the density bound, as P - P_ref = k (rho - rho_ref)
@@ -102,8 +102,8 @@ TEST_P(OneStepAgreementAtOneLanePerParticle, Cuda) {
   compare("cuda", scene);
 }
 
-INSTANTIATE_TEST_SUITE_P(MillionParticleScenes, OneStepAgreementAtOneLanePerParticle, ::testing::Values("fluid", "mixed"),
-                         [](const auto& test_info) { return test_info.param; });
+INSTANTIATE_TEST_SUITE_P(MillionParticleScenes, OneStepAgreementAtOneLanePerParticle,
+                         ::testing::Values("fluid", "mixed"), [](const auto& test_info) { return test_info.param; });
 
 }  // namespace
 }  // namespace mssph::testing

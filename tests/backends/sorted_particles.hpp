@@ -13,9 +13,9 @@ namespace mssph::testing {
 
 struct SortedParticles {
   kernels::GridShape shape;
-  std::vector<std::uint32_t> cell_start;  // shape.cell_count() + 1 entries
-  std::vector<kernels::Vec4> position;    // cell order; xyz [m], w = body index bits
-  std::vector<std::uint16_t> cell_body;   // empty, or CellRanges::cell_body (note_cell_bodies)
+  std::vector<std::uint32_t> cell_start;   // shape.cell_count() + 1 entries
+  std::vector<kernels::Vec4> position;     // cell order; xyz [m], w = body index bits
+  std::vector<std::uint16_t> cell_body;    // empty, or CellRanges::cell_body (note_cell_bodies)
   std::vector<std::uint32_t> cell_middle;  // empty, or CellRanges::cell_middle (sort_into_half_cells)
 
   kernels::CellRanges grid() const {
@@ -67,8 +67,8 @@ std::vector<std::uint32_t> counting_sort(const std::vector<kernels::Vec4>& parti
 
 inline SortedParticles sort_into_grid(const std::vector<kernels::Vec4>& particles, kernels::GridShape shape) {
   SortedParticles sorted{shape, {}, {}, {}, {}};
-  sorted.cell_start = counting_sort(particles, shape.cell_count(),
-                                    [&](kernels::Vec3 x) { return shape.key_of(x); }, sorted.position);
+  sorted.cell_start = counting_sort(
+      particles, shape.cell_count(), [&](kernels::Vec3 x) { return shape.key_of(x); }, sorted.position);
   return sorted;
 }
 
@@ -93,8 +93,10 @@ inline SortedParticles clustered_particles(std::mt19937_64& random, bool half_ce
                                            std::uint32_t origin_x = 0) {
   std::uniform_real_distribution<float> spread(-2.5f, 3.5f), packed(0.05f, 0.95f);
   std::vector<kernels::Vec4> particles;
-  for (int p = 0; p < 300; ++p) particles.push_back(kernels::Vec4{spread(random), spread(random), spread(random), 0.0f});
-  for (int p = 0; p < 400; ++p) particles.push_back(kernels::Vec4{packed(random), packed(random), packed(random), 0.0f});
+  for (int p = 0; p < 300; ++p)
+    particles.push_back(kernels::Vec4{spread(random), spread(random), spread(random), 0.0f});
+  for (int p = 0; p < 400; ++p)
+    particles.push_back(kernels::Vec4{packed(random), packed(random), packed(random), 0.0f});
   const kernels::GridShape shape = metre_cells(3, 2, 2, origin_x);
   return half_cells ? sort_into_half_cells(particles, shape) : sort_into_grid(particles, shape);
 }

@@ -123,9 +123,9 @@ TEST(WallCheckLanes, AnyLaneTouchingAWallIsExactlyARejectedMove) {
           if (kernels::touches_wall(v, previous, moved, lane, lanes)) ++lanes_touching;
         }
         EXPECT_EQ(lanes_touching > 0, rejected)
-            << "dx " << dx << ", configuration " << c << ", move " << m << ", team of " << lanes << " lanes: "
-            << lanes_touching << " lanes touch a wall, keep_out_of_walls " << (rejected ? "rejected" : "kept")
-            << " the move";
+            << "dx " << dx << ", configuration " << c << ", move " << m << ", team of " << lanes
+            << " lanes: " << lanes_touching << " lanes touch a wall, keep_out_of_walls "
+            << (rejected ? "rejected" : "kept") << " the move";
         if (rejected && lanes > 1 && lanes_touching < lanes) ++split_hits;
       }
     }
@@ -173,16 +173,18 @@ TEST(WallCheckLanes, TheTeamsListsDecideAsTheWalkDoes) {
           bool some_list_overflowed = false;
           for (std::uint32_t lane = 0; lane < lanes; ++lane) {
             const std::uint32_t list = team.list_of(s, lane);
-            nearest_boundary2 = std::fmin(
-                nearest_boundary2, kernels::force_sum_listed(v, particle, lane, lanes, team.lists, list).nearest_boundary2);
+            nearest_boundary2 =
+                std::fmin(nearest_boundary2,
+                          kernels::force_sum_listed(v, particle, lane, lanes, team.lists, list).nearest_boundary2);
             some_list_overflowed = some_list_overflowed || team.count[list] >= capacity;
           }
           advance.may_hit_wall = !kernels::surely_clear_of_walls(
-              nearest_boundary2, kernels::squared_norm(kernels::xyz(advance.position) - previous), v.step.wall_exclusion_distance);
+              nearest_boundary2, kernels::squared_norm(kernels::xyz(advance.position) - previous),
+              v.step.wall_exclusion_distance);
           bool team_rejects = false;
           for (std::uint32_t lane = 0; lane < lanes; ++lane) {
-            team_rejects = kernels::wall_check_share(v, advance, lane, lanes, team.lists, team.list_of(s, lane)) ||
-                           team_rejects;
+            team_rejects =
+                kernels::wall_check_share(v, advance, lane, lanes, team.lists, team.list_of(s, lane)) || team_rejects;
           }
           EXPECT_EQ(team_rejects, rejected) << "dx " << dx << ", configuration " << c << ", particle " << s
                                             << ", team of " << lanes << " lanes, capacity " << capacity;

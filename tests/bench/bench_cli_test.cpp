@@ -23,11 +23,19 @@ nlohmann::json benchmark_file(const std::map<std::string, std::vector<double>>& 
                         {"benchmarks", nlohmann::json::array()}};
   for (const auto& [name, times] : microseconds) {
     for (std::size_t i = 0; i < times.size(); ++i) {
-      doc["benchmarks"].push_back({{"name", name}, {"run_name", name}, {"run_type", "iteration"},
-                                   {"repetition_index", i}, {"real_time", times[i]}, {"time_unit", "us"}});
+      doc["benchmarks"].push_back({{"name", name},
+                                   {"run_name", name},
+                                   {"run_type", "iteration"},
+                                   {"repetition_index", i},
+                                   {"real_time", times[i]},
+                                   {"time_unit", "us"}});
     }
-    doc["benchmarks"].push_back({{"name", name + "_median"}, {"run_name", name}, {"run_type", "aggregate"},
-                                 {"aggregate_name", "median"}, {"real_time", 1e9}, {"time_unit", "us"}});
+    doc["benchmarks"].push_back({{"name", name + "_median"},
+                                 {"run_name", name},
+                                 {"run_type", "aggregate"},
+                                 {"aggregate_name", "median"},
+                                 {"real_time", 1e9},
+                                 {"time_unit", "us"}});
   }
   return doc;
 }
@@ -44,7 +52,8 @@ class BenchCompare : public Cli {
 
 TEST_F(BenchCompare, SameTimesPassWithExitZero) {
   const std::string a = file("a.json", benchmark_file({{"step/cpu/fluid/2000/manual_time", kBase}}));
-  const std::string b = file("b.json", benchmark_file({{"step/cpu/fluid/2000/manual_time", {101, 99, 100, 102, 98, 100.5}}}));
+  const std::string b =
+      file("b.json", benchmark_file({{"step/cpu/fluid/2000/manual_time", {101, 99, 100, 102, 98, 100.5}}}));
   const ProcessResult r = mssph({"bench", "compare", a, b});
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   expect_mentions(r.out, {"step/cpu/fluid/2000/manual_time", "unchanged", "Mann-Whitney", "Result: pass"});
@@ -139,9 +148,10 @@ using Bench = Cli;
 TEST_F(Bench, HelpDocumentsNamesContextTestHookAndExitCodes) {
   const ProcessResult r = mssph({"bench", "--help"});
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  expect_mentions(r.out, {"--backend", "--filter", "--repetitions", "--min-time", "--out", "--list",
-                          "step/<backend>/<medium>/<particles>", "haptic_tick/<backend>", "mssph_cpu", "mssph_gpu_driver",
-                          "mssph_git_commit", "MSSPH_BENCH_STEP_DELAY_US", "Test hook", "Exit codes"});
+  expect_mentions(r.out,
+                  {"--backend", "--filter", "--repetitions", "--min-time", "--out", "--list",
+                   "step/<backend>/<medium>/<particles>", "haptic_tick/<backend>", "mssph_cpu", "mssph_gpu_driver",
+                   "mssph_git_commit", "MSSPH_BENCH_STEP_DELAY_US", "Test hook", "Exit codes"});
   const ProcessResult c = mssph({"bench", "compare", "--help"});
   EXPECT_EQ(c.exit_code, 0) << c.err;
   expect_mentions(c.out, {"--threshold", "--format", "--force", "--normalize-by", "--alpha", "Mann-Whitney U", "exact",
@@ -162,8 +172,8 @@ TEST_F(Bench, BadInputExitsTwo) {
   const ProcessResult nothing = mssph({"bench", "--backend", "cpu", "--filter", "no_such_benchmark"});
   EXPECT_EQ(nothing.exit_code, 2);
   expect_mentions(nothing.err, {"no benchmark matches --filter \"no_such_benchmark\""});
-  const ProcessResult hook = run_process({"/usr/bin/env", "MSSPH_BENCH_STEP_DELAY_US=soon", MSSPH_BINARY, "bench", "--list"},
-                                         work_.path());
+  const ProcessResult hook =
+      run_process({"/usr/bin/env", "MSSPH_BENCH_STEP_DELAY_US=soon", MSSPH_BINARY, "bench", "--list"}, work_.path());
   EXPECT_EQ(hook.exit_code, 2);
   expect_mentions(hook.err, {"MSSPH_BENCH_STEP_DELAY_US=soon", "microseconds"});
   EXPECT_EQ(mssph({"bench", work("no_scene.json")}).exit_code, 2);

@@ -34,10 +34,12 @@ std::vector<double> scaled(const std::vector<double>& v, double factor) {
 }
 
 TEST(BenchComparison, VerdictsFollowThresholdAndSignificance) {
-  const BenchmarkResults base = results("a.json", {{"two_x", kBase}, {"same", kBase}, {"fast", kBase}, {"five_pct", kBase}});
-  const BenchmarkResults cur = results(
-      "b.json", {{"two_x", scaled(kBase, 2.0)}, {"same", {1.01, 0.99, 1.0, 1.02, 0.985, 1.015}},
-                 {"fast", scaled(kBase, 0.5)}, {"five_pct", scaled(kBase, 1.05)}});
+  const BenchmarkResults base =
+      results("a.json", {{"two_x", kBase}, {"same", kBase}, {"fast", kBase}, {"five_pct", kBase}});
+  const BenchmarkResults cur = results("b.json", {{"two_x", scaled(kBase, 2.0)},
+                                                  {"same", {1.01, 0.99, 1.0, 1.02, 0.985, 1.015}},
+                                                  {"fast", scaled(kBase, 0.5)},
+                                                  {"five_pct", scaled(kBase, 1.05)}});
   const ComparisonReport report = compare(base, cur, CompareOptions{});
   ASSERT_EQ(report.benchmarks.size(), 4u);
   EXPECT_EQ(report.benchmarks[0].verdict, Verdict::slower);
@@ -95,7 +97,8 @@ TEST(BenchComparison, RefusesDifferentMachinesUnlessForced) {
 // Raw, both fail the gate; normalized by the calibration, only the real slowdown does, and the
 // calibration itself is not compared.
 TEST(BenchComparison, NormalizingDividesOutTheMachinesSpeed) {
-  const BenchmarkResults base = results("a.json", {{"calibration", kBase}, {"same_code", kBase}, {"slower_code", kBase}});
+  const BenchmarkResults base =
+      results("a.json", {{"calibration", kBase}, {"same_code", kBase}, {"slower_code", kBase}});
   const BenchmarkResults cur = results("b.json", {{"calibration", scaled(kBase, 1.4)},
                                                   {"same_code", scaled(kBase, 1.4)},
                                                   {"slower_code", scaled(kBase, 1.4 * 1.3)}});
@@ -156,8 +159,12 @@ TEST(BenchmarkResultsFile, ReadsRepetitionsAndSkipsAggregates) {
        {{{"name", "t"}, {"run_name", "t"}, {"run_type", "iteration"}, {"real_time", 2.0}, {"time_unit", "ms"}},
         {{"name", "t"}, {"run_name", "t"}, {"run_type", "iteration"}, {"real_time", 4.0}, {"time_unit", "ms"}},
         {{"name", "t_mean"}, {"run_name", "t"}, {"run_type", "aggregate"}, {"real_time", 3.0}, {"time_unit", "ms"}},
-        {{"name", "s/manual_time"}, {"run_name", "s/manual_time"}, {"run_type", "iteration"}, {"real_time", 50.0},
-         {"time_unit", "us"}, {"step_seconds", 1e-6}},
+        {{"name", "s/manual_time"},
+         {"run_name", "s/manual_time"},
+         {"run_type", "iteration"},
+         {"real_time", 50.0},
+         {"time_unit", "us"},
+         {"step_seconds", 1e-6}},
         {{"name", "e"}, {"run_type", "iteration"}, {"error_occurred", true}, {"error_message", "no GPU"}}}}};
   write(dir / "r.json", doc.dump());
   const BenchmarkResults r = read_benchmark_results((dir / "r.json").string());

@@ -72,8 +72,8 @@ TEST_F(GateSelfTest, PassesTheSameBuildAndCatchesTheDelayedOne) {
     std::cerr << "same-build run " << attempt << " of " << kAttempts << " failed the comparison:\n" << same.out;
   }
   EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
-  const ProcessResult slow = mssph({"bench", "compare", work("a.json"), work("delayed.json"), "--threshold", "50%",
-                                    "--format", "json"});
+  const ProcessResult slow =
+      mssph({"bench", "compare", work("a.json"), work("delayed.json"), "--threshold", "50%", "--format", "json"});
   EXPECT_EQ(slow.exit_code, 1) << slow.out << slow.err;
   const nlohmann::json report = nlohmann::json::parse(slow.out);
   EXPECT_EQ(report["benchmarks"][0]["verdict"], "SLOWER");
@@ -81,10 +81,10 @@ TEST_F(GateSelfTest, PassesTheSameBuildAndCatchesTheDelayedOne) {
 }
 
 TEST_F(GateSelfTest, TimesOneStepOfASceneFile) {
-  const ProcessResult r = run_process({"/usr/bin/env", kThreads, MSSPH_BINARY, "bench", data_file("tiny_drop.json"),
-                                       "--backend", "cpu", "--repetitions", "2", "--min-time", "0.01", "--out",
-                                       work("scene.json")},
-                                      work_.path());
+  const ProcessResult r =
+      run_process({"/usr/bin/env", kThreads, MSSPH_BINARY, "bench", data_file("tiny_drop.json"), "--backend", "cpu",
+                   "--repetitions", "2", "--min-time", "0.01", "--out", work("scene.json")},
+                  work_.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const bench::BenchmarkResults results = bench::read_benchmark_results(work("scene.json"));
   ASSERT_EQ(results.names, std::vector<std::string>{"scene/cpu/tiny_drop/manual_time"});

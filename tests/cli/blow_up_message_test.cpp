@@ -13,8 +13,8 @@ using BlowUpMessage = Cli;
 
 TEST_F(BlowUpMessage, NamesStepBodyParticlePositionVelocityAndCflNumbers) {
   const std::string out = work("blow_up.h5");
-  const ProcessResult r = mssph({"run", data_file("tiny_drop.json"), "--out", out, "--threads", "1", "-q", "--set",
-                                 "simulation/max_speed=1e-4"});
+  const ProcessResult r = mssph(
+      {"run", data_file("tiny_drop.json"), "--out", out, "--threads", "1", "-q", "--set", "simulation/max_speed=1e-4"});
   ASSERT_EQ(r.exit_code, 3) << r.err;
   const std::regex pattern(
       R"(blow-up at step (\d+), t = [^ ]+ s: body "ball" has a particle at [^ ]+ m/s, beyond simulation/max_speed = 0.0001 m/s; )"

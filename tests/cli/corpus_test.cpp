@@ -27,8 +27,8 @@ std::vector<CorpusCase> load_cases() {
   const nlohmann::json manifest = read_json(kCorpus + "cases.json");
   std::vector<CorpusCase> cases;
   for (const nlohmann::json& c : manifest.at("cases")) {
-    cases.push_back({c.at("file"), c.at("args").get<std::vector<std::string>>(), c.at("exit"), c.at("message"),
-                     c.at("why")});
+    cases.push_back(
+        {c.at("file"), c.at("args").get<std::vector<std::string>>(), c.at("exit"), c.at("message"), c.at("why")});
   }
   return cases;
 }

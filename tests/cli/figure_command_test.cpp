@@ -10,7 +10,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::size_t line_count(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+std::size_t line_count(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
 
 using FigureCommand = Cli;
 
@@ -47,8 +49,9 @@ TEST_F(FigureCommand, Figure2TimesEachMediumAndSizeAndDrawsThem) {
 }
 
 TEST_F(FigureCommand, Figure2FixedHeightKeepsTheBlockAndRefinesTheSpacing) {
-  const std::vector<std::string> args{"figure", "2", "--backend", "cpu", "--media", "deformable", "--sizes", "300,2400",
-                                      "--geometry", "fixed-height", "--min-time", "0.02", "--out", work("fig2")};
+  const std::vector<std::string> args{"figure",     "2",       "--backend", "cpu",        "--media",
+                                      "deformable", "--sizes", "300,2400",  "--geometry", "fixed-height",
+                                      "--min-time", "0.02",    "--out",     work("fig2")};
   const ProcessResult r = mssph(args);
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   // An earlier figure is replaced only with --force.
@@ -92,9 +95,10 @@ TEST_F(FigureCommand, Figure2RejectsBadArgumentsBeforeTiming) {
 // whether they all passed. 0.3 s is too short for the sphere to settle, so some checks fail.
 TEST_F(FigureCommand, Figure3RunsThreeDropsAndWritesItsChecks) {
   // Three runs on 2 busy CPU cores: past run_process's one-minute limit.
-  const ProcessResult r = start({"figure", "3", "--backend", "cpu", "--resolution", "coarse", "--set",
-                                 "simulation/duration=0.3", "--configs", MSSPH_SOURCE_DIR "/configs", "--out",
-                                 work("fig3"), "-q"})->wait(std::chrono::minutes(10));
+  const ProcessResult r =
+      start({"figure", "3", "--backend", "cpu", "--resolution", "coarse", "--set", "simulation/duration=0.3",
+             "--configs", MSSPH_SOURCE_DIR "/configs", "--out", work("fig3"), "-q"})
+          ->wait(std::chrono::minutes(10));
   for (const char* medium : {"rigid", "deformable", "fluid"}) {
     const std::string log = work("fig3/sphere_drop_") + medium + ".h5";
     ASSERT_TRUE(fs::is_regular_file(log)) << r.err;

@@ -23,7 +23,9 @@ struct ContainmentCase {
   double sphere_density;  // [kg/m^3]
 };
 
-void PrintTo(const ContainmentCase& c, std::ostream* out) { *out << c.backend << ", sphere " << c.sphere_density << " kg/m^3"; }
+void PrintTo(const ContainmentCase& c, std::ostream* out) {
+  *out << c.backend << ", sphere " << c.sphere_density << " kg/m^3";
+}
 
 std::string snapshot_path(long long step) {
   char name[64];
@@ -39,14 +41,15 @@ TEST_P(FluidContainment, NoFluidParticleLeavesTheTank) {
   const std::string out = work("drop.h5");
   // 0.45 s: the escape seen without the wall condition happens near t = 0.3 s.
   const double duration = 0.45, dt = 0.00025, snapshot_interval = 0.05;
-  const ProcessResult r = mssph({"run", MSSPH_SOURCE_DIR "/configs/sphere_drop_fluid.json", "--backend", c.backend, "--threads", "1",
-                                 "--set", "simulation/particle_spacing=0.04", "--set",
+  const ProcessResult r = mssph({"run", MSSPH_SOURCE_DIR "/configs/sphere_drop_fluid.json", "--backend", c.backend,
+                                 "--threads", "1", "--set", "simulation/particle_spacing=0.04", "--set",
                                  "bodies/sphere/density=" + std::to_string(c.sphere_density), "--set",
                                  "simulation/duration=" + std::to_string(duration), "--set",
                                  "output/snapshot_interval=" + std::to_string(snapshot_interval), "--out", out, "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const h5::Handle file = open_read_only(out);
-  const std::vector<std::string> names = read_string_list_attribute(open_object(file.id(), "/particles").id(), "body_names");
+  const std::vector<std::string> names =
+      read_string_list_attribute(open_object(file.id(), "/particles").id(), "body_names");
   const auto index_of = [&](const std::string& name) {
     return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
   };
@@ -90,7 +93,8 @@ INSTANTIATE_TEST_SUITE_P(SphereDensities, FluidContainment,
                                            ContainmentCase{"cpu", 950.0}, ContainmentCase{"reference", 900.0},
                                            ContainmentCase{"cuda", 900.0}, ContainmentCase{"cuda", 950.0}),
                          [](const ::testing::TestParamInfo<ContainmentCase>& param_info) {
-                           return param_info.param.backend + "_" + std::to_string(static_cast<int>(param_info.param.sphere_density));
+                           return param_info.param.backend + "_" +
+                                  std::to_string(static_cast<int>(param_info.param.sphere_density));
                          });
 
 }  // namespace

@@ -1,7 +1,7 @@
 // `mssph --help`, `mssph run --help` and `mssph info`: they work and say what the program does.
 #include "backend_factory/backend_factory.hpp"
-#include "cli_fixture.hpp"
 #include "cli/commands.hpp"
+#include "cli_fixture.hpp"
 #include "util/build_info.hpp"
 
 namespace mssph::test {
@@ -13,7 +13,7 @@ void expect_mentions(const std::string& text, const std::vector<std::string>& ph
 
 // The exit codes of errors.hpp, as documented in both help texts.
 const std::vector<std::string> kExitCodes{"Exit codes: 0 ", "1 other error", "2 bad input", "3 simulation failure",
-                                          "130, 143", "129", "SIGHUP"};
+                                          "130, 143",       "129",           "SIGHUP"};
 
 using Help = Cli;
 
@@ -34,9 +34,9 @@ TEST_F(Help, RunListsEveryOptionAndDocumentsOutputAndOverrides) {
   for (const CLI::Option* option : app.get_subcommand("run")->get_options()) {
     expect_mentions(r.out, {option->get_name()});
   }
-  expect_mentions(r.out, {"results/runs/<scene>_<backend>.h5", "--set PATH=VALUE", "flush_interval", ".xdmf",
-                          "\"completed\"", "\"failed:", "\"interrupted: <signal>", "--force", "--dry-run", "--threads",
-                          ".partial"});
+  expect_mentions(r.out,
+                  {"results/runs/<scene>_<backend>.h5", "--set PATH=VALUE", "flush_interval", ".xdmf", "\"completed\"",
+                   "\"failed:", "\"interrupted: <signal>", "--force", "--dry-run", "--threads", ".partial"});
   expect_mentions(r.out, kExitCodes);
 }
 

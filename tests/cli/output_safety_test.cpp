@@ -110,9 +110,9 @@ TEST_F(OutputSafety, TwoRunsCannotWriteOnePathAndSigintEndsTheFirstWith130) {
   const std::string out = work("shared.h5");
   const auto first = start({"run", kTinyDrop, "--out", out, "-q", "--set", "simulation/duration=1000"});
   // The partial file is locked once it is a readable log: wait for its first flush.
-  ASSERT_TRUE(wait_for([&] { return std::filesystem::exists(out + ".partial") &&
-                                    std::filesystem::file_size(out + ".partial") > 0; },
-                       60s));
+  ASSERT_TRUE(wait_for(
+      [&] { return std::filesystem::exists(out + ".partial") && std::filesystem::file_size(out + ".partial") > 0; },
+      60s));
   for (const bool force : {false, true}) {
     std::vector<std::string> args{"run", kTinyDrop, "--out", out, "-q"};
     if (force) args.push_back("--force");
@@ -131,9 +131,9 @@ TEST_F(OutputSafety, TwoRunsCannotWriteOnePathAndSigintEndsTheFirstWith130) {
 TEST_F(OutputSafety, SighupEndsTheRunWith129) {
   const std::string out = work("hup.h5");
   const auto run = start({"run", kTinyDrop, "--out", out, "-q", "--set", "simulation/duration=1000"});
-  ASSERT_TRUE(wait_for([&] { return std::filesystem::exists(out + ".partial") &&
-                                    std::filesystem::file_size(out + ".partial") > 0; },
-                       60s));
+  ASSERT_TRUE(wait_for(
+      [&] { return std::filesystem::exists(out + ".partial") && std::filesystem::file_size(out + ".partial") > 0; },
+      60s));
   run->send(SIGHUP);
   const ProcessResult r = run->wait();
   EXPECT_EQ(r.exit_code, 129) << r.err;
@@ -152,7 +152,8 @@ TEST_F(OutputSafety, AClosedStdoutDoesNotFailACompletedRun) {
     dup2(fds[1], STDOUT_FILENO);
     close(fds[0]);
     close(fds[1]);
-    execl(MSSPH_BINARY, MSSPH_BINARY, "run", kTinyDrop.c_str(), "--out", out.c_str(), "-q", static_cast<char*>(nullptr));
+    execl(MSSPH_BINARY, MSSPH_BINARY, "run", kTinyDrop.c_str(), "--out", out.c_str(), "-q",
+          static_cast<char*>(nullptr));
     _exit(127);
   }
   close(fds[0]);  // no reader: the child's write to stdout fails (EPIPE, or SIGPIPE if not ignored)
@@ -218,7 +219,7 @@ TEST_F(OutputSafety, DryRunPrintsThePlanAndWritesNothing) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   // tiny_drop: a 0.5 x 0.5 x 0.1 m ground at 5 cm (10 x 10 x 2 = 200) and the ball's 27.
   for (const char* line : {"particles: 227", "ground (boundary): 200", "ball (rigid): 27", "memory estimate: host",
-                          "ball acoustic: ", "steps: 40 ", "threads: "}) {
+                           "ball acoustic: ", "steps: 40 ", "threads: "}) {
     EXPECT_NE(r.out.find(line), std::string::npos) << line << " in\n" << r.out;
   }
   EXPECT_TRUE(work_entries().empty()) << "a dry run writes nothing";

@@ -65,9 +65,20 @@ class Restart : public Cli, public ::testing::WithParamInterface<std::string> {
   // With snapshots (so that those after the checkpoint must go) and a recording of the device
   // (whose earlier ticks live only in the checkpoint).
   std::vector<std::string> run_args(const std::string& out, const std::string& recording) const {
-    return {"run",   kMixedScene, "--backend", GetParam(), "--out", out, "--threads", "1",
-            "--set", "simulation/particle_spacing=0.05", "--set", "output/snapshot_interval=0.5",
-            "--record-device", recording};
+    return {"run",
+            kMixedScene,
+            "--backend",
+            GetParam(),
+            "--out",
+            out,
+            "--threads",
+            "1",
+            "--set",
+            "simulation/particle_spacing=0.05",
+            "--set",
+            "output/snapshot_interval=0.5",
+            "--record-device",
+            recording};
   }
 
   void run_uninterrupted() {
@@ -120,8 +131,8 @@ TEST_P(Restart, AfterSigkillContinuesFromTheLastPeriodicCheckpoint) {
   restart_and_compare();
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, Restart,
-                         ::testing::Values("cpu", "reference", "cuda"), [](const auto& test) { return test.param; });
+INSTANTIATE_TEST_SUITE_P(Backends, Restart, ::testing::Values("cpu", "reference", "cuda"),
+                         [](const auto& test) { return test.param; });
 
 // Logs that cannot be continued: refused with exit 2, the file left as it was.
 class RestartRefusal : public Cli {};
@@ -135,7 +146,8 @@ TEST_F(RestartRefusal, ACompletedRun) {
 
 TEST_F(RestartRefusal, ALogWithoutACheckpoint) {
   // A run killed before any checkpoint: no --checkpoint-interval, and SIGKILL writes none.
-  auto run = start({"run", kTinyDrop, "--backend", "cpu", "--out", work("killed.h5"), "--set", "simulation/duration=1000"});
+  auto run =
+      start({"run", kTinyDrop, "--backend", "cpu", "--out", work("killed.h5"), "--set", "simulation/duration=1000"});
   ASSERT_TRUE(wait_for([&] { return run->stderr_so_far().find(" particles (") != std::string::npos; }, 60s));
   std::this_thread::sleep_for(300ms);
   run->send(SIGKILL);
@@ -147,9 +159,10 @@ TEST_F(RestartRefusal, ALogWithoutACheckpoint) {
 }
 
 TEST_F(RestartRefusal, OptionsThatWouldChangeTheRun) {
-  for (const std::vector<std::string>& extra :
-       {std::vector<std::string>{"--set", "simulation/dt=1e-4"}, {"--backend", "reference"}, {"--out", "x.h5"},
-        {kTinyDrop}}) {
+  for (const std::vector<std::string>& extra : {std::vector<std::string>{"--set", "simulation/dt=1e-4"},
+                                                {"--backend", "reference"},
+                                                {"--out", "x.h5"},
+                                                {kTinyDrop}}) {
     std::vector<std::string> args{"run", "--restart", work("any.h5.partial")};
     args.insert(args.end(), extra.begin(), extra.end());
     const ProcessResult r = mssph(args);

@@ -9,8 +9,8 @@ namespace mssph::test {
 namespace {
 
 std::size_t steps_of(const nlohmann::json& scene) {
-  return static_cast<std::size_t>(std::llround(scene["simulation"]["duration"].get<double>() /
-                                               scene["simulation"]["dt"].get<double>()));
+  return static_cast<std::size_t>(
+      std::llround(scene["simulation"]["duration"].get<double>() / scene["simulation"]["dt"].get<double>()));
 }
 
 using RunCommand = Cli;
@@ -59,8 +59,8 @@ TEST_F(RunCommand, WritesToTheDocumentedDefaultPath) {
 TEST_F(RunCommand, SetOverridesReachTheLoggedConfig) {
   const std::string out = work("overridden.h5");
   // --set before the scene: each --set takes exactly one PATH=VALUE.
-  const ProcessResult r = mssph({"run", "--set", "simulation/duration=0.01", "--set", "/simulation/seed=99", kTinyDrop,
-                                 "--out", out, "-q"});
+  const ProcessResult r = mssph(
+      {"run", "--set", "simulation/duration=0.01", "--set", "/simulation/seed=99", kTinyDrop, "--out", out, "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   nlohmann::json expected = read_json(kTinyDrop);
   expected["simulation"]["duration"] = 0.01;
@@ -82,8 +82,7 @@ TEST_F(RunCommand, SnapshotsComeWithAValidXdmfSidecar) {
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
   // One snapshot at the start and one per interval: 0, 0.01 and 0.02 s.
   const nlohmann::json scene = read_json(kTinyDrop);
-  const long long expected =
-      1 + std::llround(scene["simulation"]["duration"].get<double>() / 0.01);
+  const long long expected = 1 + std::llround(scene["simulation"]["duration"].get<double>() / 0.01);
   EXPECT_NE(check.out.find("grids " + std::to_string(expected)), std::string::npos) << check.out;
   EXPECT_NE(read_file(out + ".xdmf").find("/particles/body"), std::string::npos) << "body index per particle";
   EXPECT_FALSE(std::filesystem::exists(out + ".partial.xdmf")) << "the running log's sidecar is gone";

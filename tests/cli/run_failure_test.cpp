@@ -53,9 +53,9 @@ TEST_F(RunFailure, AnAbsurdTimeStepIsABlowUp) {
   const std::string out = work("absurd_dt.h5");
   // A stiff contact (k = 1e5 m^2/s^2) stepped at over 100 times its acoustic bound
   // 0.25 h / sqrt(k) = 7.9e-5 s; the start-up warning says so.
-  const ProcessResult r = mssph({"run", kTinyDrop, "--out", out, "--set", "materials/contact/pressure_stiffness=1e5",
-                                 "--set", "simulation/dt=0.01", "--set", "simulation/duration=1", "--set",
-                                 "output/log_interval=0", "-q"});
+  const ProcessResult r =
+      mssph({"run", kTinyDrop, "--out", out, "--set", "materials/contact/pressure_stiffness=1e5", "--set",
+             "simulation/dt=0.01", "--set", "simulation/duration=1", "--set", "output/log_interval=0", "-q"});
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("warning: "), std::string::npos) << r.err;
   EXPECT_EQ(status_of(out + ".partial").rfind("failed: blow-up", 0), 0u) << status_of(out + ".partial");
@@ -67,7 +67,8 @@ TEST_F(RunFailure, SigtermMarksTheLogInterrupted) {
   const auto run = start(concat({"run", kTinyDrop, "--out", out}, kLongRun));
   // The progress line (after a few seconds) shows the run is well under way.
   ASSERT_TRUE(wait_for([&] { return run->stderr_so_far().find("  step ") != std::string::npos; }, 60s))
-      << "no progress line on stderr:\n" << run->stderr_so_far();
+      << "no progress line on stderr:\n"
+      << run->stderr_so_far();
   run->send(SIGTERM);
   const ProcessResult r = run->wait();
   EXPECT_EQ(r.exit_code, 143) << r.err;  // 128 + SIGTERM, as a shell reports a terminated job

@@ -34,8 +34,8 @@ TEST_P(SimulationDomain, FluidThrownOutFailsPastTheLostMassFraction) {
 TEST_P(SimulationDomain, LostParticlesAreCountedAndReported) {
   if (!backend_runs_here(GetParam())) GTEST_SKIP() << "no " << GetParam() << " backend on this machine";
   const std::string out = work("fling.h5");
-  const ProcessResult r = mssph({"run", kFlingScene, "--backend", GetParam(), "--threads", "1", "--out", out, "-q", "--set",
-                                 "simulation/max_lost_mass_fraction=1"});
+  const ProcessResult r = mssph({"run", kFlingScene, "--backend", GetParam(), "--threads", "1", "--out", out, "-q",
+                                 "--set", "simulation/max_lost_mass_fraction=1"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("left the domain: splash "), std::string::npos) << r.out;
   const h5::Handle file = open_read_only(out);
@@ -56,7 +56,8 @@ INSTANTIATE_TEST_SUITE_P(Backends, SimulationDomain, ::testing::Values("cpu", "r
 using SimulationDomainInput = Cli;
 
 TEST_F(SimulationDomainInput, AnInvertedDomainIsRefusedWithFileAndPath) {
-  const ProcessResult r = mssph({"run", kFlingScene, "--set", R"(simulation/domain={"min":[0,0,0],"max":[1,-1,1]})", "-q"});
+  const ProcessResult r =
+      mssph({"run", kFlingScene, "--set", R"(simulation/domain={"min":[0,0,0],"max":[1,-1,1]})", "-q"});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find(kFlingScene + ": /simulation/domain/max: expected max > min"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("comes from --set"), std::string::npos) << r.err;

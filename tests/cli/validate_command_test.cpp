@@ -92,7 +92,8 @@ TEST_F(Validate, BadArgumentsExit2AndWriteNothing) {
 
 // The Timoshenko correction the cantilever frequency case quotes is what its script computes.
 TEST_F(Validate, TimoshenkoRatioOfTheFrequencyCaseIsTheScripts) {
-  const ProcessResult r = run_process({MSSPH_PYTHON, std::string(MSSPH_SOURCE_DIR) + "/scripts/validation/timoshenko_cantilever.py"}, work("."));
+  const ProcessResult r = run_process(
+      {MSSPH_PYTHON, std::string(MSSPH_SOURCE_DIR) + "/scripts/validation/timoshenko_cantilever.py"}, work("."));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::size_t at = r.out.find("ratio = ");
   ASSERT_NE(at, std::string::npos) << r.out;
@@ -102,13 +103,23 @@ TEST_F(Validate, TimoshenkoRatioOfTheFrequencyCaseIsTheScripts) {
 // The suites, case by case: each required check has a registered case whose folder holds
 // the README with its formula, source and tolerance (validation/README.md maps checks to cases).
 TEST(ValidateCases, EveryRequiredCaseIsRegisteredWithItsReadme) {
-  const std::vector<std::pair<std::string, std::string>> required{
-      {"kernels", "one_step"},           {"kernels", "sphere_drops"},        {"kernels", "haptic_scenes"},
-      {"physics", "hydrostatic"},        {"physics", "archimedes"},          {"physics", "torque_free_spin"},
-      {"physics", "rotation_invariance"}, {"physics", "patch_tests"},        {"physics", "bar_vibration"},
-      {"physics", "cantilever"},         {"physics", "cantilever_frequency"}, {"physics", "hertz"},
-      {"physics", "coupling_step"},      {"physics", "passivity"},           {"convergence", "hydrostatic_slope"},
-      {"convergence", "floating_depth"}, {"convergence", "cantilever_deflection"}};
+  const std::vector<std::pair<std::string, std::string>> required{{"kernels", "one_step"},
+                                                                  {"kernels", "sphere_drops"},
+                                                                  {"kernels", "haptic_scenes"},
+                                                                  {"physics", "hydrostatic"},
+                                                                  {"physics", "archimedes"},
+                                                                  {"physics", "torque_free_spin"},
+                                                                  {"physics", "rotation_invariance"},
+                                                                  {"physics", "patch_tests"},
+                                                                  {"physics", "bar_vibration"},
+                                                                  {"physics", "cantilever"},
+                                                                  {"physics", "cantilever_frequency"},
+                                                                  {"physics", "hertz"},
+                                                                  {"physics", "coupling_step"},
+                                                                  {"physics", "passivity"},
+                                                                  {"convergence", "hydrostatic_slope"},
+                                                                  {"convergence", "floating_depth"},
+                                                                  {"convergence", "cantilever_deflection"}};
   const auto& cases = validation::all_cases();
   for (const auto& [suite, name] : required) {
     const auto found = std::find_if(cases.begin(), cases.end(), [&](const auto& c) { return c.name == name; });

@@ -69,7 +69,9 @@ TEST(JsonPointer, EscapesTildeAndSlash) {
 TEST(JsonReader, AllowOnlySuggestsTheClosestKeyForANearMiss) {
   const json doc = {{"particle_spacng", 0.02}};
   const JsonReader reader(doc, "scene.json", "/simulation");
-  EXPECT_EQ(input_error_of([&] { reader.allow_only({"dt", "duration", "particle_spacing"}); }),
+  EXPECT_EQ(input_error_of([&] {
+              reader.allow_only({"dt", "duration", "particle_spacing"});
+            }),
             "scene.json: /simulation/particle_spacng: unknown key 'particle_spacng' (did you mean "
             "'particle_spacing'?)");
 }
@@ -96,7 +98,9 @@ TEST(JsonReader, TypeErrorsNameTheFileThePointerAndTheExpectedType) {
             "configs/x.json: /simulation/dt: expected a number > 0, got string \"fast\"");
   EXPECT_EQ(input_error_of([&] { simulation.boolean_or("flag", false); }),
             "configs/x.json: /simulation/flag: expected true or false, got number 1");
-  EXPECT_EQ(input_error_of([&] { simulation.choice("kind", {"fluid", "rigid"}); }),
+  EXPECT_EQ(input_error_of([&] {
+              simulation.choice("kind", {"fluid", "rigid"});
+            }),
             "configs/x.json: /simulation/kind: expected one of \"fluid\", \"rigid\", got number 3");
   EXPECT_EQ(input_error_of([&] { simulation.string("name"); }),
             "configs/x.json: /simulation/name: expected a string, got number 2");
@@ -115,7 +119,8 @@ TEST(JsonReader, MissingRequiredKeyIsNamed) {
   const json doc = json::object();
   EXPECT_EQ(input_error_of([&] { JsonReader(doc, "f.json", "/simulation").number("dt"); }),
             "f.json: /simulation/dt: missing required key");
-  EXPECT_EQ(input_error_of([&] { JsonReader(doc, "f.json").child("bodies"); }), "f.json: /bodies: missing required key");
+  EXPECT_EQ(input_error_of([&] { JsonReader(doc, "f.json").child("bodies"); }),
+            "f.json: /bodies: missing required key");
 }
 
 TEST(JsonReader, OptionalKeysFallBackOnlyWhenAbsent) {

@@ -104,8 +104,8 @@ TEST(SampleSphere, CountsTheLatticeNodesStrictlyInsideTheBall) {
   // Integer points (i, j, k) with i^2 + j^2 + k^2 = n, for n = 0..6: 1, 6, 12, 8, 6, 24, 24
   // (OEIS A005875). The radii avoid n with points on the surface.
   const double dx = 0.01;
-  EXPECT_EQ(sample_sphere(0.4 * dx, dx).size(), 1u);                            // n = 0
-  EXPECT_EQ(sample_sphere(1.5 * dx, dx).size(), 1u + 6 + 12);                   // n <= 2
+  EXPECT_EQ(sample_sphere(0.4 * dx, dx).size(), 1u);                             // n = 0
+  EXPECT_EQ(sample_sphere(1.5 * dx, dx).size(), 1u + 6 + 12);                    // n <= 2
   EXPECT_EQ(sample_sphere(2.5 * dx, dx).size(), 1u + 6 + 12 + 8 + 6 + 24 + 24);  // n <= 6
   for (const Vector3d& p : sample_sphere(2.5 * dx, dx)) EXPECT_LT(p.norm(), 2.5 * dx);
 }

@@ -34,10 +34,10 @@ constexpr double kPositionTolerance = 1e-12;
 
 // A scene of the given bodies at spacing kDx and h = 2 dx.
 Scene scene_of(const json& bodies, double jitter = 0.0, std::uint64_t seed = 0) {
-  const json doc = {{"name", "builder_test"},
-                    {"simulation",
-                     {{"dt", 0.001}, {"duration", 0.1}, {"particle_spacing", kDx}, {"jitter", jitter}, {"seed", seed}}},
-                    {"bodies", bodies}};
+  const json doc = {
+      {"name", "builder_test"},
+      {"simulation", {{"dt", 0.001}, {"duration", 0.1}, {"particle_spacing", kDx}, {"jitter", jitter}, {"seed", seed}}},
+      {"bodies", bodies}};
   return parse_scene(doc, "builder_test.json");
 }
 
@@ -58,14 +58,16 @@ json body(const std::string& kind, const json& shape, const Vector3d& position =
 json box(const Vector3d& size) { return {{"type", "box"}, {"size", {size.x(), size.y(), size.z()}}}; }
 
 std::vector<Vector3d> positions_of(const ParticleSetup& setup, const BodySetup& b) {
-  return {setup.position.begin() + static_cast<long>(b.first), setup.position.begin() + static_cast<long>(b.first + b.count)};
+  return {setup.position.begin() + static_cast<long>(b.first),
+          setup.position.begin() + static_cast<long>(b.first + b.count)};
 }
 
 TEST(SceneBuilder, ShippedScenesBuildWithoutOverlaps) {
   for (const auto& entry : std::filesystem::directory_iterator(std::string(MSSPH_SOURCE_DIR) + "/configs")) {
     const std::string name = entry.path().filename().string();
     // Not scenes: the schemas and the sweep files (sweep_*.json, checked by tests/sweep).
-    if (entry.path().extension() != ".json" || name.find(".schema.") != std::string::npos || name.rfind("sweep_", 0) == 0) {
+    if (entry.path().extension() != ".json" || name.find(".schema.") != std::string::npos ||
+        name.rfind("sweep_", 0) == 0) {
       continue;
     }
     SCOPED_TRACE(name);
@@ -77,8 +79,8 @@ TEST(SceneBuilder, ShippedScenesBuildWithoutOverlaps) {
 }
 
 TEST(SceneBuilder, BodiesAreContiguousRangesCoveringEveryParticle) {
-  const ParticleSetup setup = build_particles(scene_of({{"a", body("fluid", box({0.1, 0.1, 0.1}))},
-                                                        {"b", body("rigid", box({0.1, 0.1, 0.1}), {0.5, 0, 0})}}));
+  const ParticleSetup setup = build_particles(
+      scene_of({{"a", body("fluid", box({0.1, 0.1, 0.1}))}, {"b", body("rigid", box({0.1, 0.1, 0.1}), {0.5, 0, 0})}}));
   std::size_t next = 0;
   for (std::size_t i = 0; i < setup.bodies.size(); ++i) {
     const BodySetup& b = setup.bodies[i];
@@ -167,7 +169,8 @@ TEST(SceneBuilder, RestLatticeIsAtRestDensityAndParticlesCarryTheirCellsMass) {
 }
 
 TEST(SceneBuilder, RigidMassIsDensityTimesTheSampledVolume) {
-  const ParticleSetup setup = build_particles(scene_of({{"ball", body("rigid", {{"type", "sphere"}, {"radius", 0.1}})}}));
+  const ParticleSetup setup =
+      build_particles(scene_of({{"ball", body("rigid", {{"type", "sphere"}, {"radius", 0.1}})}}));
   const BodySetup& ball = setup.bodies[0];
   EXPECT_DOUBLE_EQ(ball.mass, 500.0 * static_cast<double>(ball.count) * kDx * kDx * kDx);
 }
@@ -206,10 +209,11 @@ TEST(SceneBuilder, InitialVelocitiesFollowEachKind) {
   json anchored = body("rigid", box({0.06, 0.06, 0.06}), {1.0, 0.0, 0.0});
   anchored["fixed"] = true;
   anchored["velocity"] = {5.0, 0.0, 0.0};
-  const ParticleSetup setup = build_particles(scene_of({{"a_fluid", fluid},
-                                                        {"b_spinning", spinning},
-                                                        {"c_anchored", anchored},
-                                                        {"d_wall", body("boundary", box({0.06, 0.06, 0.06}), {1.5, 0, 0})}}));
+  const ParticleSetup setup =
+      build_particles(scene_of({{"a_fluid", fluid},
+                                {"b_spinning", spinning},
+                                {"c_anchored", anchored},
+                                {"d_wall", body("boundary", box({0.06, 0.06, 0.06}), {1.5, 0, 0})}}));
   for (std::size_t i = 0; i < setup.size(); ++i) {
     const Vector3d& x = setup.position[i];
     Vector3d expected = Vector3d::Zero();  // fixed rigid bodies and boundaries do not move
@@ -271,7 +275,8 @@ TEST(SceneBuilder, OverlapMeansCloserThanHalfASpacing) {
   // Two boxes side by side along x whose facing particle layers are `gap` apart.
   const auto with_gap = [](double gap) {
     const double offset = 0.1 - kDx + gap;  // 0.1 m boxes: outer layers at +-0.04 m
-    return scene_of({{"a", body("fluid", box({0.1, 0.1, 0.1}))}, {"b", body("fluid", box({0.1, 0.1, 0.1}), {offset, 0, 0})}});
+    return scene_of(
+        {{"a", body("fluid", box({0.1, 0.1, 0.1}))}, {"b", body("fluid", box({0.1, 0.1, 0.1}), {offset, 0, 0})}});
   };
   EXPECT_NO_THROW(build_particles(with_gap(kDx)));  // one lattice continued: touching, not overlapping
   EXPECT_NO_THROW(build_particles(with_gap(0.55 * kDx)));

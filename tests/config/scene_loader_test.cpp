@@ -29,7 +29,8 @@ std::vector<std::filesystem::path> shipped_scenes() {
   for (const auto& entry : std::filesystem::directory_iterator(std::string(MSSPH_SOURCE_DIR) + "/configs")) {
     const std::string name = entry.path().filename().string();
     // Not scenes: the schemas and the sweep files (sweep_*.json, checked by tests/sweep).
-    if (entry.path().extension() == ".json" && name.find(".schema.") == std::string::npos && name.rfind("sweep_", 0) != 0) {
+    if (entry.path().extension() == ".json" && name.find(".schema.") == std::string::npos &&
+        name.rfind("sweep_", 0) != 0) {
       scenes.push_back(entry.path());
     }
   }
@@ -181,9 +182,9 @@ TEST(SceneLoader, TheDocumentIsRecordedAfterOverrides) {
 }
 
 TEST(SetOverride, ParsesJsonValuesAndTakesOtherTextAsAString) {
-  const Scene scene = load_scene(kBase, {"simulation/dt=0.00025", "/simulation/gravity=[0, 0, -1.62]",
-                                         "bodies/jelly/strain=green_saint_venant", "bodies/anvil/fixed=false",
-                                         "description=\"quoted text\"", "simulation/seed=11"});
+  const Scene scene = load_scene(
+      kBase, {"simulation/dt=0.00025", "/simulation/gravity=[0, 0, -1.62]", "bodies/jelly/strain=green_saint_venant",
+              "bodies/anvil/fixed=false", "description=\"quoted text\"", "simulation/seed=11"});
   EXPECT_EQ(scene.simulation.dt, 0.00025);
   EXPECT_EQ(scene.simulation.gravity, Eigen::Vector3d(0.0, 0.0, -1.62));
   EXPECT_EQ(scene.find_body("jelly")->material.model, ElasticModel::saint_venant_kirchhoff);
@@ -202,21 +203,26 @@ TEST(SetOverride, MayAddAKeyWhichIsThenValidatedLikeTheFile) {
   const Scene scene = load_scene(kBase, {"bodies/anvil/velocity=[1, 0, 0]"});
   EXPECT_EQ(scene.find_body("anvil")->velocity, Eigen::Vector3d(1.0, 0.0, 0.0));
   EXPECT_EQ(input_error_of([&] { load_scene(kBase, {"simulation/time_step=0.001"}); }),
-            kBase + ": /simulation/time_step: unknown key 'time_step'; allowed keys: dt duration gravity "
-                    "particle_spacing smoothing_length seed jitter max_speed domain max_lost_mass_fraction (this "
-                    "value comes from --set simulation/time_step=0.001)");
+            kBase +
+                ": /simulation/time_step: unknown key 'time_step'; allowed keys: dt duration gravity "
+                "particle_spacing smoothing_length seed jitter max_speed domain max_lost_mass_fraction (this "
+                "value comes from --set simulation/time_step=0.001)");
   EXPECT_EQ(input_error_of([&] { load_scene(kBase, {"simulation/dt=fast"}); }),
-            kBase + ": /simulation/dt: expected a number > 0, got string \"fast\" (this value comes from --set "
-                    "simulation/dt=fast)");
+            kBase +
+                ": /simulation/dt: expected a number > 0, got string \"fast\" (this value comes from --set "
+                "simulation/dt=fast)");
 }
 
 // Strict JSON: a key twice in one object, or a number beyond a double, is an error with its path.
 TEST(StrictJson, DuplicateKeysAndOverflowingNumbersAreRejectedWithTheirPath) {
-  EXPECT_EQ(input_error_of([&] { parse_scene_text(R"({"name": "a", "bodies": {"b": {"kind": "fluid", "kind": "rigid"}}})", "s.json"); }),
+  EXPECT_EQ(input_error_of([&] {
+              parse_scene_text(R"({"name": "a", "bodies": {"b": {"kind": "fluid", "kind": "rigid"}}})", "s.json");
+            }),
             "s.json: /bodies/b/kind: duplicate key 'kind' (JSON leaves its meaning undefined; keep one)");
   EXPECT_EQ(input_error_of([&] { parse_scene_text(R"({"name": "a", "list": [1, {"x": 2, "x": 3}]})", "s.json"); }),
             "s.json: /list/1/x: duplicate key 'x' (JSON leaves its meaning undefined; keep one)");
-  const std::string overflow = input_error_of([&] { parse_scene_text(R"({"simulation": {"g": [0, 1e400]}})", "s.json"); });
+  const std::string overflow =
+      input_error_of([&] { parse_scene_text(R"({"simulation": {"g": [0, 1e400]}})", "s.json"); });
   EXPECT_EQ(overflow.rfind("s.json: /simulation/g/1: ", 0), 0u) << overflow;
   // The same key in two objects is no duplicate.
   const std::string other = input_error_of([&] { parse_scene_text(R"({"a": {"k": 1}, "b": {"k": 2}})", "s.json"); });
@@ -235,8 +241,9 @@ TEST(SetOverride, RejectsAPathWhoseParentIsNotAnObjectOfTheScene) {
             kBase + ": --set bodies/ghost/density=1: /bodies/ghost is not an object in the scene");
   EXPECT_EQ(input_error_of([&] { load_scene(kBase, {"simulation/dt/value=1"}); }),
             kBase + ": --set simulation/dt/value=1: /simulation/dt is not an object in the scene");
-  EXPECT_EQ(input_error_of([&] { load_scene(kBase, {"bodies/jelly/fixed_regions/0=1"}); }),
-            kBase + ": --set bodies/jelly/fixed_regions/0=1: /bodies/jelly/fixed_regions is not an object in the scene");
+  EXPECT_EQ(
+      input_error_of([&] { load_scene(kBase, {"bodies/jelly/fixed_regions/0=1"}); }),
+      kBase + ": --set bodies/jelly/fixed_regions/0=1: /bodies/jelly/fixed_regions is not an object in the scene");
 }
 
 TEST(SetOverride, RejectsAMalformedPointer) {
@@ -257,10 +264,12 @@ TEST(SceneFile, InvalidJsonNamesTheLineAndColumn) {
   const std::string& path = file.path();
   const std::size_t at = text.find('@');
   const std::size_t line_start = text.rfind('\n', at) + 1;
-  const std::size_t line = static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n')) + 1;
+  const std::size_t line =
+      static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n')) + 1;
   const std::size_t column = at - line_start + 1;
   const std::string message = input_error_of([&] { load_scene(path); });
-  EXPECT_THAT(message, StartsWith(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: "));
+  EXPECT_THAT(message,
+              StartsWith(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: "));
   EXPECT_EQ(line, 3u);  // the fixture's own layout, so the check above is not vacuous
 }
 

@@ -3,10 +3,10 @@
 // each deformable body's smallest det F and the count past the range at every sample, with units
 // and descriptions, the warning (once, with body, time and value) and the fraction of the run
 // outside. A stiff cube on the same path stays inside.
-#include "run/scene_run.hpp"
 #include "h5_read.hpp"
-#include "util/hdf5_handle.hpp"
+#include "run/scene_run.hpp"
 #include "temp_dir.hpp"
+#include "util/hdf5_handle.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -21,18 +21,31 @@ namespace {
 // p-wave speed is 1.6 m/s, so the impact strain v / c_p is of order 1: far past det F = 1/sqrt(3).
 // With E = 2 MPa (c_p = 52 m/s) the strain is ~6 %.
 std::string write_scene(const test::TempDir& dir, double young_modulus) {
-  const nlohmann::json scene = {
-      {"name", "thrown_cube"},
-      {"simulation", {{"dt", 5e-5}, {"duration", 0.02}, {"gravity", {0.0, 0.0, 0.0}}, {"particle_spacing", 0.01},
-                      {"max_speed", 50.0}}},
-      {"bodies",
-       {{"ground", {{"kind", "boundary"}, {"shape", {{"type", "box"}, {"size", {0.2, 0.2, 0.02}}}},
-                    {"position", {0.0, 0.0, -0.01}}, {"rest_density", 1000.0}, {"pressure_stiffness", 500.0}}},
-        {"cube", {{"kind", "deformable"}, {"shape", {{"type", "box"}, {"size", {0.06, 0.06, 0.06}}}},
-                  {"position", {0.0, 0.0, 0.031}}, {"velocity", {0.0, 0.0, -3.0}}, {"rest_density", 1000.0},
-                  {"pressure_stiffness", 500.0}, {"young_modulus", young_modulus}, {"poisson_ratio", 0.3},
-                  {"model", "stvk"}}}}},
-      {"output", {{"log_interval", 5e-4}}}};
+  const nlohmann::json scene = {{"name", "thrown_cube"},
+                                {"simulation",
+                                 {{"dt", 5e-5},
+                                  {"duration", 0.02},
+                                  {"gravity", {0.0, 0.0, 0.0}},
+                                  {"particle_spacing", 0.01},
+                                  {"max_speed", 50.0}}},
+                                {"bodies",
+                                 {{"ground",
+                                   {{"kind", "boundary"},
+                                    {"shape", {{"type", "box"}, {"size", {0.2, 0.2, 0.02}}}},
+                                    {"position", {0.0, 0.0, -0.01}},
+                                    {"rest_density", 1000.0},
+                                    {"pressure_stiffness", 500.0}}},
+                                  {"cube",
+                                   {{"kind", "deformable"},
+                                    {"shape", {{"type", "box"}, {"size", {0.06, 0.06, 0.06}}}},
+                                    {"position", {0.0, 0.0, 0.031}},
+                                    {"velocity", {0.0, 0.0, -3.0}},
+                                    {"rest_density", 1000.0},
+                                    {"pressure_stiffness", 500.0},
+                                    {"young_modulus", young_modulus},
+                                    {"poisson_ratio", 0.3},
+                                    {"model", "stvk"}}}}},
+                                {"output", {{"log_interval", 5e-4}}}};
   const std::string path = (dir / ("cube_" + std::to_string(young_modulus) + ".json")).string();
   std::ofstream(path) << scene.dump(2);
   return path;
@@ -61,8 +74,10 @@ CompressionLog run_and_read(const test::TempDir& dir, double young_modulus) {
   if (test::has_attribute(cube.id(), "compression_warning")) {
     log.warning = h5::read_string_attribute(cube.id(), "compression_warning");
   }
-  log.min_units = h5::read_string_attribute(test::open_object(file.id(), "/bodies/cube/min_volume_ratio").id(), "units");
-  log.count_units = h5::read_string_attribute(test::open_object(file.id(), "/bodies/cube/compressed_count").id(), "units");
+  log.min_units =
+      h5::read_string_attribute(test::open_object(file.id(), "/bodies/cube/min_volume_ratio").id(), "units");
+  log.count_units =
+      h5::read_string_attribute(test::open_object(file.id(), "/bodies/cube/compressed_count").id(), "units");
   log.count_description =
       h5::read_string_attribute(test::open_object(file.id(), "/bodies/cube/compressed_count").id(), "description");
   EXPECT_EQ(h5::read_double_attribute(test::open_object(file.id(), "/").id(), "fraction_outside_valid_range"),
@@ -81,7 +96,8 @@ TEST(CompressionLog, ACrushedStVenantKirchhoffCubeIsRecordedWarnedAndSummedUp) {
   const double lowest = *std::min_element(soft.min_volume_ratio.begin(), soft.min_volume_ratio.end());
   EXPECT_LT(lowest, 0.577);
   // The fraction is the share of samples with a particle counted.
-  const auto outside = std::count_if(soft.compressed_count.begin(), soft.compressed_count.end(), [](double c) { return c > 0; });
+  const auto outside =
+      std::count_if(soft.compressed_count.begin(), soft.compressed_count.end(), [](double c) { return c > 0; });
   EXPECT_GT(outside, 0);
   EXPECT_DOUBLE_EQ(soft.fraction, static_cast<double>(outside) / 40.0);
   // The warning names the body, the time and the value.

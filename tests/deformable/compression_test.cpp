@@ -124,7 +124,8 @@ void expect_neo_hookean_forces_agree(const std::string& backend_name, double s) 
   std::mt19937_64 random(3);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (Eigen::Vector3d& x : positions) {
-    x = Eigen::Vector3d(x.x() + 0.3 * x.z(), x.y(), s * x.z()) + 2e-4 * Eigen::Vector3d(unit(random), unit(random), unit(random));
+    x = Eigen::Vector3d(x.x() + 0.3 * x.z(), x.y(), s * x.z()) +
+        2e-4 * Eigen::Vector3d(unit(random), unit(random), unit(random));
   }
   const auto reference = make_backend("reference", setup);
   const auto other = make_backend(backend_name, setup);

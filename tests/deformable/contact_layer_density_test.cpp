@@ -17,16 +17,17 @@
 namespace mssph::testing {
 namespace {
 
-constexpr double kDx = 0.04;         // [m]
-constexpr double kEdge = 8 * kDx;    // a cube of 8 x 8 x 8 particles [m]
-constexpr double kSqueeze = 0.9;     // positions scaled by 0.9 about the centre: J = 0.73
+constexpr double kDx = 0.04;       // [m]
+constexpr double kEdge = 8 * kDx;  // a cube of 8 x 8 x 8 particles [m]
+constexpr double kSqueeze = 0.9;   // positions scaled by 0.9 about the centre: J = 0.73
 
 nlohmann::json cube_scene(bool with_second_cube, double gap_in_dx) {
   nlohmann::json doc = elastic_scene(kDx, 1e-4);
   const nlohmann::json material = elastic_material(1e5, 0.3);
   doc["bodies"]["lower"] = deformable_box({kEdge, kEdge, kEdge}, {0, 0, 0}, material);
   // The second cube's bottom layer lies gap_in_dx spacings above the lower cube's top layer.
-  if (with_second_cube) doc["bodies"]["upper"] = deformable_box({kEdge, kEdge, kEdge}, {0, 0, kEdge - kDx + gap_in_dx * kDx}, material);
+  if (with_second_cube)
+    doc["bodies"]["upper"] = deformable_box({kEdge, kEdge, kEdge}, {0, 0, kEdge - kDx + gap_in_dx * kDx}, material);
   return doc;
 }
 

@@ -2,9 +2,9 @@
 // Deformable-body scenes for the elasticity tests, built through the same JSON path as user
 // scenes, and helpers that read the reference backend's deformable state.
 #include "config/scene_loader.hpp"
+#include "model/scene_builder.hpp"
 #include "physics/elastic_bodies.hpp"
 #include "reference_backend.hpp"
-#include "model/scene_builder.hpp"
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
@@ -19,20 +19,25 @@ inline nlohmann::json vec3(double x, double y, double z) { return nlohmann::json
 // A scene with no gravity unless given, h = 2 dx (the default), and no bodies yet.
 inline nlohmann::json elastic_scene(double dx, double dt, const nlohmann::json& gravity = vec3(0, 0, 0)) {
   return {{"name", "elastic_test"},
-          {"simulation", {{"dt", dt}, {"duration", 1.0}, {"particle_spacing", dx}, {"gravity", gravity}, {"max_speed", 100.0}}},
+          {"simulation",
+           {{"dt", dt}, {"duration", 1.0}, {"particle_spacing", dx}, {"gravity", gravity}, {"max_speed", 100.0}}},
           {"bodies", nlohmann::json::object()}};
 }
 
 // Material keys of a deformable body: rho0 = 1000 kg/m^3 and a pressure stiffness that only
 // matters for contact with other bodies.
 inline nlohmann::json elastic_material(double young_modulus, double poisson_ratio) {
-  return {{"rest_density", 1000.0}, {"pressure_stiffness", 100.0}, {"viscosity", 0.0},
-          {"young_modulus", young_modulus}, {"poisson_ratio", poisson_ratio}};
+  return {{"rest_density", 1000.0},
+          {"pressure_stiffness", 100.0},
+          {"viscosity", 0.0},
+          {"young_modulus", young_modulus},
+          {"poisson_ratio", poisson_ratio}};
 }
 
 // A deformable box body centred at `centre` with the given material keys (more keys may be added
 // to the returned object, e.g. fixed_regions).
-inline nlohmann::json deformable_box(const Eigen::Vector3d& size, const Eigen::Vector3d& centre, nlohmann::json material) {
+inline nlohmann::json deformable_box(const Eigen::Vector3d& size, const Eigen::Vector3d& centre,
+                                     nlohmann::json material) {
   material["kind"] = "deformable";
   material["shape"] = {{"type", "box"}, {"size", vec3(size.x(), size.y(), size.z())}};
   material["position"] = vec3(centre.x(), centre.y(), centre.z());

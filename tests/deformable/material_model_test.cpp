@@ -6,9 +6,9 @@
 #include "elasticity.hpp"
 #include "model/material_law.hpp"
 
+#include <gtest/gtest.h>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
@@ -125,11 +125,11 @@ TEST(MaterialModelPatch, UniformLargeDeformationGivesTheModelsStressAtEveryInter
     reference::ReferenceBackend backend = block(model);
     testing::deform_body(backend, 0, g, Vector3d::Zero());
     backend.compute_forces();
-    const Matrix3d expected = model == ElasticModel::neo_hookean
-                                  ? textbook_neo_hookean(g)
-                                  : g * (lame().lambda * 0.5 * (g.transpose() * g - Matrix3d::Identity()).trace() *
-                                             Matrix3d::Identity() +
-                                         lame().mu * (g.transpose() * g - Matrix3d::Identity()));
+    const Matrix3d expected =
+        model == ElasticModel::neo_hookean
+            ? textbook_neo_hookean(g)
+            : g * (lame().lambda * 0.5 * (g.transpose() * g - Matrix3d::Identity()).trace() * Matrix3d::Identity() +
+                   lame().mu * (g.transpose() * g - Matrix3d::Identity()));
     const std::vector<std::size_t> inside = testing::interior_particles(backend, 0, backend.setup().smoothing_length);
     ASSERT_GT(inside.size(), 100u);
     double worst = 0.0;

@@ -3,8 +3,8 @@
 // body keeps its angular momentum.
 #include "deformable_fixtures.hpp"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <random>
 
@@ -41,8 +41,8 @@ void deform_irregularly(reference::ReferenceBackend& backend) {
 // terms rounded at 1e-16 each.
 TEST(Momentum, InternalForcesSumToZero) {
   for (bool correction : {false, true}) {
-    reference::ReferenceBackend backend =
-        free_block({{"kernel_gradient_correction", correction}, {"zero_energy_stiffness", 5.0}, {"damping", 20.0}}, 1e-4);
+    reference::ReferenceBackend backend = free_block(
+        {{"kernel_gradient_correction", correction}, {"zero_energy_stiffness", 5.0}, {"damping", 20.0}}, 1e-4);
     deform_irregularly(backend);
     for (Vector3d& v : backend.particles().velocity) v = Vector3d(0.1, -0.2, 0.05) + 0.3 * v.Random();
     backend.compute_forces();
@@ -84,8 +84,9 @@ double angular_momentum_drift(const nlohmann::json& extra) {
 // conserved to rounding. 1e-6 per 1000 steps is the brief's bound; rounding gives ~1e-13.
 TEST(Momentum, SpinningDeformedBodyKeepsAngularMomentumWithCorrection) {
   EXPECT_LT(angular_momentum_drift({{"kernel_gradient_correction", true}}), 1e-6);
-  EXPECT_LT(angular_momentum_drift({{"kernel_gradient_correction", true}, {"zero_energy_stiffness", 5.0}, {"damping", 20.0}}),
-            1e-6);
+  EXPECT_LT(
+      angular_momentum_drift({{"kernel_gradient_correction", true}, {"zero_energy_stiffness", 5.0}, {"damping", 20.0}}),
+      1e-6);
 }
 
 }  // namespace

@@ -5,8 +5,8 @@
 #include "deformable_fixtures.hpp"
 #include "elastic_forces.hpp"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <random>

@@ -74,7 +74,9 @@ std::vector<Matrix3d> interior_stresses(reference::ReferenceBackend& backend, co
 }
 
 // Uniaxial stress: stretch e along x with lateral contraction -nu e, sigma_xx = E e.
-Matrix3d uniaxial_stress_stretch(double e) { return Vector3d(1.0 + e, 1.0 - kPoisson * e, 1.0 - kPoisson * e).asDiagonal(); }
+Matrix3d uniaxial_stress_stretch(double e) {
+  return Vector3d(1.0 + e, 1.0 - kPoisson * e, 1.0 - kPoisson * e).asDiagonal();
+}
 
 // 2 %: the brief's bound. With correction the gradient of a linear field is exact, so what
 // remains is the Green-Saint-Venant strain's quadratic term, e / 2 = 0.05 % at e = 1e-3.

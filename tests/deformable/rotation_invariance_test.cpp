@@ -5,9 +5,8 @@
 #include "deformable_fixtures.hpp"
 #include "physics/elastic_statics.hpp"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
-
+#include <Eigen/Geometry>
 
 namespace mssph {
 namespace {
@@ -60,7 +59,8 @@ TEST(PolarRotation, InvertedNeighbourhoodGivesAProperRotation) {
 TEST(PolarRotation, LinearAndEmptyNeighbourhoodsKeepThePreviousRotation) {
   const Matrix3d q = Eigen::AngleAxisd(0.8, Vector3d(0, 1, 1).normalized()).toRotationMatrix();
   const Vector3d line(1.0, 0.0, 0.0);
-  const Matrix3d a = reference::moment_matrix_term(1.0, q * line, line) + reference::moment_matrix_term(1.0, -q * line, -line);
+  const Matrix3d a =
+      reference::moment_matrix_term(1.0, q * line, line) + reference::moment_matrix_term(1.0, -q * line, -line);
   EXPECT_LT((reference::rotation_from_moment_matrix(a, q) - q).cwiseAbs().maxCoeff(), 1e-12);
   const Matrix3d r = reference::rotation_from_moment_matrix(a, Matrix3d::Identity());
   EXPECT_LT((r * line - q * line).norm(), 1e-12);

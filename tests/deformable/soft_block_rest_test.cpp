@@ -116,9 +116,9 @@ TEST(SoftBlockRest, NeoHookeanBlockCarriesTheSphereAtHertzIndentation) {
   // No particle past the Neo-Hookean model's valid range at any logged time.
   EXPECT_EQ(past_valid_range, 0u);
   // Density bound at the end (the sphere within ~1 cm of its rest height), 1.35 rho0: Hertz's
-  // peak pressure p0 = 3 W / (2 pi a^2), a = sqrt(R d) = 9.4 cm, is 7.6 kPa; compressed that hard with its sides held (the stiffest case, uniaxial
-  // strain), the material keeps J = 1 - p0 / (lambda + 2 mu) = 0.77 of its volume: rho0 / J =
-  // 1.29 rho0. The collapsed block reached 2.1 rho0.
+  // peak pressure p0 = 3 W / (2 pi a^2), a = sqrt(R d) = 9.4 cm, is 7.6 kPa; compressed that hard with its sides held
+  // (the stiffest case, uniaxial strain), the material keeps J = 1 - p0 / (lambda + 2 mu) = 0.77 of its volume: rho0 /
+  // J = 1.29 rho0. The collapsed block reached 2.1 rho0.
   EXPECT_LT(final_density, 1.35 * rest_density);
   // Over the whole run, the first impact and the swings that follow included (the sphere falls
   // one spacing onto the block and overshoots its rest indentation; measured 1.52 rho0, and

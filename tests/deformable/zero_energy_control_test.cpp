@@ -58,7 +58,8 @@ double hourglass_amplitude(const reference::ReferenceBackend& backend, double am
   const std::vector<std::size_t> deep = deep_interior(backend);
   double sum = 0.0;
   for (std::size_t i : deep) {
-    sum += checkerboard(backend.setup().position[i]) * (backend.particles().position[i] - backend.setup().position[i]).x();
+    sum +=
+        checkerboard(backend.setup().position[i]) * (backend.particles().position[i] - backend.setup().position[i]).x();
   }
   return sum / (static_cast<double>(deep.size()) * amplitude);
 }

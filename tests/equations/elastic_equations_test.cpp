@@ -3,15 +3,15 @@
 // (cpu_reference/elasticity.hpp, elastic_forces.hpp, corotation.hpp, zero_energy_control.hpp,
 // deformable_damping.hpp). Method and tolerance: twin_support.hpp. Lengths are those of a
 // 2 cm lattice (h = 4 cm), moduli those of the scenes (E up to 1e6 Pa, Poisson ratio up to 0.45).
+#include "common/elastic_physics.hpp"
 #include "corotation.hpp"
 #include "deformable_damping.hpp"
 #include "elastic_forces.hpp"
 #include "elasticity.hpp"
-#include "zero_energy_control.hpp"
-#include "common/elastic_physics.hpp"
 #include "model/deformable_rest_state.hpp"
 #include "model/smoothing_kernels.hpp"
 #include "twin_support.hpp"
+#include "zero_energy_control.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -32,7 +32,7 @@ kernels::ElasticParameters float_body(const LameParameters& lame, ElasticModel m
   kernels::ElasticParameters body{};
   body.model = model == ElasticModel::neo_hookean        ? kernels::kNeoHookean
                : model == ElasticModel::corotated_linear ? kernels::kCorotatedLinear
-                                                          : kernels::kSaintVenantKirchhoff;
+                                                         : kernels::kSaintVenantKirchhoff;
   body.lambda = static_cast<float>(lame.lambda);
   body.mu = static_cast<float>(lame.mu);
   return body;
@@ -90,7 +90,8 @@ Neighbourhood draw_neighbourhood(TwinDraws& draws, const Eigen::Matrix3d& rotati
   for (int j = 0; j <= bonds; ++j) {
     n.rest.volume.push_back(TwinDraws::rounded(draws.uniform(0.5, 2.0) * 8e-6));
     n.rest.correction.push_back(TwinDraws::rounded(Eigen::Matrix3d(Eigen::Matrix3d::Identity() + draws.matrix(0.3))));
-    n.rest_float.push_back(to_float4(rest_positions[static_cast<std::size_t>(j)], static_cast<float>(n.rest.volume.back())));
+    n.rest_float.push_back(
+        to_float4(rest_positions[static_cast<std::size_t>(j)], static_cast<float>(n.rest.volume.back())));
     n.correction.push_back(to_float(n.rest.correction.back()));
     n.body_of.push_back(0);
   }
@@ -241,7 +242,8 @@ TEST(ElasticEquationTwins, IsotropicStress) {
     const Eigen::Matrix3d eps_symmetric = TwinDraws::rounded(0.5 * (eps + eps.transpose()));
     stress.add(to_double(kernels::isotropic_stress(float_body(lame, ElasticModel::saint_venant_kirchhoff),
                                                    to_float(eps_symmetric))),
-               reference::isotropic_stress(eps_symmetric, lame), (3.0 * lame.lambda + 2.0 * lame.mu) * eps_symmetric.norm());
+               reference::isotropic_stress(eps_symmetric, lame),
+               (3.0 * lame.lambda + 2.0 * lame.mu) * eps_symmetric.norm());
   }
 }
 
@@ -289,8 +291,9 @@ TEST(ElasticEquationTwins, StressActionAndWorldDeformationGradient) {
     const Eigen::Matrix3d rotation = draws.rotation();
     const Eigen::Matrix3d first_piola = draws.matrix(1e5);
     const double rest_volume = draws.uniform(1e-6, 1e-4);
-    action.add(to_double(kernels::stress_action(static_cast<float>(rest_volume), to_float(rotation), to_float(first_piola))),
-               reference::stress_action(rest_volume, rotation, first_piola), rest_volume * first_piola.norm());
+    action.add(
+        to_double(kernels::stress_action(static_cast<float>(rest_volume), to_float(rotation), to_float(first_piola))),
+        reference::stress_action(rest_volume, rotation, first_piola), rest_volume * first_piola.norm());
     const Eigen::Matrix3d grad_u = draws.matrix(0.5);
     deformation.add(to_double(kernels::world_deformation_gradient(to_float(rotation), to_float(grad_u))),
                     reference::world_deformation_gradient(rotation, grad_u),
@@ -304,9 +307,10 @@ TEST(ElasticEquationTwins, ElasticForcePair) {
   for (int k = 0; k < kDraws; ++k) {
     const Eigen::Matrix3d action_i = draws.matrix(0.1), action_j = draws.matrix(0.1);
     const Eigen::Vector3d d_ij = draws.vector(2.0 / kSupport), d_ji = draws.vector(2.0 / kSupport);
-    force.add(to_double(kernels::elastic_force_pair(to_float(action_i), to_float(d_ij), to_float(action_j), to_float(d_ji))),
-              reference::elastic_force_pair(action_i, d_ij, action_j, d_ji),
-              action_i.norm() * d_ij.norm() + action_j.norm() * d_ji.norm());
+    force.add(
+        to_double(kernels::elastic_force_pair(to_float(action_i), to_float(d_ij), to_float(action_j), to_float(d_ji))),
+        reference::elastic_force_pair(action_i, d_ij, action_j, d_ji),
+        action_i.norm() * d_ij.norm() + action_j.norm() * d_ji.norm());
   }
 }
 
@@ -328,9 +332,10 @@ TEST(ElasticEquationTwins, ZeroEnergyForcePair) {
     // The reference takes V0_i V0_j as one product (exact in double for float inputs).
     const Eigen::Vector3d expected =
         reference::zero_energy_force_pair(f_i, f_j, rest, x_ij, volume_i * volume_j, w_float, young, alpha);
-    const kernels::Vec3 got = kernels::zero_energy_force_pair(
-        to_float(f_i), to_float(f_j), to_float(rest), to_float(x_ij), static_cast<float>(volume_i),
-        static_cast<float>(volume_j), static_cast<float>(w_float), static_cast<float>(young), static_cast<float>(alpha));
+    const kernels::Vec3 got = kernels::zero_energy_force_pair(to_float(f_i), to_float(f_j), to_float(rest),
+                                                              to_float(x_ij), static_cast<float>(volume_i),
+                                                              static_cast<float>(volume_j), static_cast<float>(w_float),
+                                                              static_cast<float>(young), static_cast<float>(alpha));
     // delta = ((F_i + F_j) X_ij - 2 x_ij) . n cancels: the scale holds its terms.
     const double coefficient = 0.5 * alpha * volume_i * volume_j * w_float * young / rest.squaredNorm();
     force.add(to_double(got), expected, coefficient * ((f_i + f_j) * rest).norm() + 2.0 * coefficient * x_ij.norm());

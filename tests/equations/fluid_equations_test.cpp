@@ -2,9 +2,9 @@
 // the float64 twins of the same names (cpu_reference/density.hpp, fluid_forces.hpp). Method and
 // tolerance: twin_support.hpp. Inputs span the scenes' ranges: spacings 1-5 cm, rest densities
 // 500-3000 kg/m^3, stiffnesses up to 1e4 m^2/s^2, viscosities up to 10 Pa s.
+#include "common/fluid_physics.hpp"
 #include "density.hpp"
 #include "fluid_forces.hpp"
-#include "common/fluid_physics.hpp"
 #include "twin_support.hpp"
 
 #include <numbers>
@@ -74,7 +74,8 @@ TEST(FluidEquationTwins, PressureForcePair) {
         reference::pressure_force_pair(volume_i, pressure_i, volume_j, pressure_j, consistency, grad_w);
     const kernels::Vec3 got = kernels::pressure_force_pair(
         {static_cast<float>(volume_i), static_cast<float>(pressure_i)},
-        {static_cast<float>(volume_j), static_cast<float>(pressure_j)}, static_cast<float>(1.0 / consistency),  // 1 / g rounded once, as kernels::StepParameters holds it
+        {static_cast<float>(volume_j), static_cast<float>(pressure_j)},
+        static_cast<float>(1.0 / consistency),  // 1 / g rounded once, as kernels::StepParameters holds it
         to_float(grad_w));
     // Both pressure terms are >= 0: no cancellation, the scale is the force itself.
     force.add(to_double(got), expected, expected.norm());
@@ -95,9 +96,9 @@ TEST(FluidEquationTwins, ViscosityForcePair) {
     const Eigen::Vector3d velocity_i = draws.vector(1.0), velocity_j = draws.vector(1.0);
     const Eigen::Vector3d expected =
         reference::viscosity_force_pair(mu, volume_i, volume_j, laplacian, velocity_i, velocity_j);
-    const kernels::Vec3 got =
-        kernels::viscosity_force_pair(static_cast<float>(mu), static_cast<float>(volume_i), static_cast<float>(volume_j),
-                                      static_cast<float>(laplacian), to_float(velocity_i), to_float(velocity_j));
+    const kernels::Vec3 got = kernels::viscosity_force_pair(static_cast<float>(mu), static_cast<float>(volume_i),
+                                                            static_cast<float>(volume_j), static_cast<float>(laplacian),
+                                                            to_float(velocity_i), to_float(velocity_j));
     // v_j - v_i may cancel: the scale holds both velocities.
     force.add(to_double(got), expected, mu * volume_i * volume_j * laplacian * (velocity_i.norm() + velocity_j.norm()));
   }

@@ -2,8 +2,8 @@
 // against the float64 twins of the same names (cpu_reference/rigid_body_dynamics.hpp,
 // particle_state.hpp). Method and tolerance: twin_support.hpp. Bodies of 0.1-10 kg with inertias
 // of a 10 cm object, forces up to 100 N, steps of 0.1-2 ms.
-#include "rigid_body_dynamics.hpp"
 #include "common/rigid_physics.hpp"
+#include "rigid_body_dynamics.hpp"
 #include "twin_support.hpp"
 
 #include <Eigen/LU>
@@ -124,10 +124,10 @@ TEST(RigidEquationTwins, IntegrateRigidBody) {
         TwinDraws::rounded(b.reference.angular_momentum * (turn_angle / (b.reference.angular_velocity().norm() * dt)));
     b.kernel.angular_momentum = to_float(b.reference.angular_momentum);
     const Eigen::Matrix3d before = b.reference.orientation.toRotationMatrix();
-    const double velocity_scale = b.reference.velocity.norm() +
-                                  dt * ((b.reference.interaction_force.norm() + b.reference.external_force.norm()) /
-                                            b.reference.mass +
-                                        gravity.norm());
+    const double velocity_scale =
+        b.reference.velocity.norm() +
+        dt * ((b.reference.interaction_force.norm() + b.reference.external_force.norm()) / b.reference.mass +
+              gravity.norm());
     const double momentum_scale = b.reference.angular_momentum.norm() +
                                   dt * (b.reference.interaction_torque.norm() + b.reference.external_torque.norm());
     reference::integrate_rigid_body(b.reference, gravity, dt);
@@ -159,7 +159,8 @@ TEST(RigidEquationTwins, PlaceRigidParticle) {
     kernels::Vec4 x{}, v{};
     kernels::place_rigid_particle(b.kernel, kernels::rotation_matrix(b.kernel.orientation),
                                   kernels::angular_velocity(b.kernel), to_float(setup.rest_offset[0]), x, v);
-    position.add(to_double(kernels::xyz(x)), particles.position[0], b.reference.position.norm() + setup.rest_offset[0].norm());
+    position.add(to_double(kernels::xyz(x)), particles.position[0],
+                 b.reference.position.norm() + setup.rest_offset[0].norm());
     velocity.add(to_double(kernels::xyz(v)), particles.velocity[0],
                  b.reference.velocity.norm() + b.reference.angular_velocity().norm() * setup.rest_offset[0].norm());
   }

@@ -20,9 +20,9 @@
 // the float function exceeds it.
 #include "common/vec_math.hpp"
 
+#include <gtest/gtest.h>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>

@@ -12,7 +12,8 @@ using Figure3Physics = Cli;
 TEST_F(Figure3Physics, CoarseDropsPassEveryShapeCheck) {
   // Minutes of simulation on 2 busy CPU cores: far past run_process's one-minute limit.
   const ProcessResult r = start({"figure", "3", "--backend", "cpu", "--resolution", "coarse", "--configs",
-                                 MSSPH_SOURCE_DIR "/configs", "--out", work("fig3"), "-q"})->wait(std::chrono::minutes(15));
+                                 MSSPH_SOURCE_DIR "/configs", "--out", work("fig3"), "-q"})
+                              ->wait(std::chrono::minutes(15));
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   const nlohmann::json report = read_json(work("fig3/figure3_checks.json"));
   EXPECT_GE(report["checks"].size(), 14u);

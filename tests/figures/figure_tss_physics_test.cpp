@@ -13,7 +13,8 @@ using FigureTssPhysics = Cli;
 TEST_F(FigureTssPhysics, EachPhaseTouchesItsBodyWithinTheDeviceLimits) {
   // Minutes of simulation on 2 busy CPU cores: far past run_process's one-minute limit.
   const ProcessResult r = start({"figure", "tss", "--backend", "cpu", "--scene",
-                                 MSSPH_SOURCE_DIR "/configs/tap_squeeze_stir.json", "--out", work("tss"), "-q"})->wait(std::chrono::minutes(15));
+                                 MSSPH_SOURCE_DIR "/configs/tap_squeeze_stir.json", "--out", work("tss"), "-q"})
+                              ->wait(std::chrono::minutes(15));
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   const nlohmann::json report = read_json(work("tss/tss_checks.json"));
   ASSERT_EQ(report["phases"].size(), 3u);

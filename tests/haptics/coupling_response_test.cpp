@@ -13,8 +13,8 @@
 namespace mssph::test {
 namespace {
 
-constexpr double kDt = 2.5e-4;    // the scenes' step: four steps per haptic tick
-constexpr double kOmega = 20.0;   // natural frequency of the coupling [rad/s]
+constexpr double kDt = 2.5e-4;   // the scenes' step: four steps per haptic tick
+constexpr double kOmega = 20.0;  // natural frequency of the coupling [rad/s]
 
 using validation::held_device;
 

@@ -1,7 +1,7 @@
 // The haptics keys of a scene's "proxy" section: defaults, values, and errors that name the file,
 // the JSON path and what was expected.
-#include "config/scene_loader.hpp"
 #include "config/device_recording.hpp"
+#include "config/scene_loader.hpp"
 #include "temp_dir.hpp"
 #include "util/errors.hpp"
 

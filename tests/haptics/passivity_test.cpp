@@ -6,8 +6,8 @@
 #include "physics/coupling/coupling_measurements.hpp"
 #include "physics/coupling/session_harness.hpp"
 
-#include <gtest/gtest.h>
 #include <gmock/gmock.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,9 +16,9 @@
 namespace mssph::test {
 namespace {
 
-constexpr double kSceneDt = 2.5e-4;     // the scenes' step
-constexpr double kMass = 1.0;      // proxy [kg]
-constexpr double kInertia = 1e-2;  // proxy [kg m^2]
+constexpr double kSceneDt = 2.5e-4;  // the scenes' step
+constexpr double kMass = 1.0;        // proxy [kg]
+constexpr double kInertia = 1e-2;    // proxy [kg m^2]
 
 // The five-second script and the passivity observer are the physics case's
 // (validation/physics/passivity).
@@ -27,7 +27,8 @@ using validation::five_second_script;
 TEST(CouplingPassivity, StableGainsInjectNoEnergyOverAFiveSecondScript) {
   const SpringDamperGains gains{1000.0, 10.0, 10.0, 0.1};  // the defaults
   const HapticsConfig config = five_second_script(gains);
-  EXPECT_THAT(coupling_stability_warnings(config, "proxy", proxy_model(kMass, kInertia), kSceneDt), ::testing::IsEmpty());
+  EXPECT_THAT(coupling_stability_warnings(config, "proxy", proxy_model(kMass, kInertia), kSceneDt),
+              ::testing::IsEmpty());
 
   const validation::PassivityMeasurement m = validation::passivity_over_script(gains);
   ASSERT_EQ(m.ticks, 5001u);

@@ -1,9 +1,9 @@
 // Device recordings on disk: both formats round-trip, and every malformed file is rejected with
 // an InputError that names the file and the row of the problem.
 #include "config/device_recording.hpp"
-#include "util/hdf5_handle.hpp"
 #include "temp_dir.hpp"
 #include "util/errors.hpp"
+#include "util/hdf5_handle.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -5,8 +5,8 @@
 //
 // At 4 cm spacing (the CI's), on the float32 cpu backend, 0.8 s: the window 0.65 s to 0.8 s
 // starts once the hand has stopped and the approach transient has passed.
-#include "run/scene_run.hpp"
 #include "h5_read.hpp"
+#include "run/scene_run.hpp"
 #include "temp_dir.hpp"
 
 #include <gtest/gtest.h>
@@ -22,10 +22,10 @@ constexpr double kWindowStart = 0.65;  // [s]
 constexpr double kWindowEnd = 0.8;     // [s]
 
 struct HoldPhase {
-  double max_rendered_jump = 0.0;     // max |rendered force - previous tick's| [N]
-  double max_contact_jump = 0.0;      // max |interaction force - previous tick's| [N]
-  double mean_contact = 0.0;          // mean |interaction force| [N]
-  double min_contact = 1e300;         // min |interaction force| [N]
+  double max_rendered_jump = 0.0;  // max |rendered force - previous tick's| [N]
+  double max_contact_jump = 0.0;   // max |interaction force - previous tick's| [N]
+  double mean_contact = 0.0;       // mean |interaction force| [N]
+  double min_contact = 1e300;      // min |interaction force| [N]
 };
 
 HoldPhase measure_hold(const std::vector<std::string>& extra) {
@@ -71,8 +71,8 @@ TEST(SqueezeHold, TheHeldPressIsSteadyFromTickToTick) {
   RecordProperty("mean_contact_force_N", std::to_string(hold.mean_contact));
   RecordProperty("min_contact_force_N", std::to_string(hold.min_contact));
   std::cout << "hold phase: rendered force jump per tick up to " << hold.max_rendered_jump
-            << " N, contact force jump up to " << hold.max_contact_jump << " N, contact force "
-            << hold.min_contact << " N to mean " << hold.mean_contact << " N\n";
+            << " N, contact force jump up to " << hold.max_contact_jump << " N, contact force " << hold.min_contact
+            << " N to mean " << hold.mean_contact << " N\n";
   // With the hand still, the contact force on the proxy balances the coupling's pull (the hand's
   // and the coupling's springs in series, ~17 N) and the proxy's weight (3 N): a steady press
   // changes from tick to tick only as the block creeps. The 3 N bound per 1 ms tick (15 % of the

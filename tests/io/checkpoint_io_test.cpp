@@ -136,7 +136,8 @@ TEST_F(Checkpoints, AReopenedLogCutsItsSeriesBackToTheCheckpointAndAppends) {
     ASSERT_NE(reopened.restart_point(), nullptr);
     EXPECT_EQ(reopened.restart_point()->step, 5);
     const std::size_t series = reopened.add_series("/x", 1, "m", "a series");
-    for (std::size_t i = 5; i < 8; ++i) reopened.append(series, std::span<const double>(std::vector<double>{scalar_row(i)}));
+    for (std::size_t i = 5; i < 8; ++i)
+      reopened.append(series, std::span<const double>(std::vector<double>{scalar_row(i)}));
     reopened.finish_completed();
   }
   const h5::Handle file = open_read_only(out);

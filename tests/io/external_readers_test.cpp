@@ -39,8 +39,7 @@ TEST(ExternalReaders, H5pyReadsAttributesAndSeries) {
   EXPECT_EQ(root["git_commit"], m.git_commit);
   EXPECT_EQ(root["seed"], m.seed);
   EXPECT_EQ(root["status"], "failed: interrupted by a signal");
-  EXPECT_EQ(summary["objects"]["/timing"]["attributes"]["phase_names"],
-            (nlohmann::json{"neighbours", "forces"}));
+  EXPECT_EQ(summary["objects"]["/timing"]["attributes"]["phase_names"], (nlohmann::json{"neighbours", "forces"}));
 
   const nlohmann::json& time = summary["objects"]["/time"];
   EXPECT_EQ(time["shape"], nlohmann::json{kRows});

@@ -10,7 +10,8 @@ std::vector<T> read_all(hid_t file, const std::string& path, hid_t memory_type) 
   const hssize_t count = H5Sget_simple_extent_npoints(space.id());
   if (count < 0) h5::throw_error("size of " + path);
   std::vector<T> values(static_cast<std::size_t>(count));
-  if (count > 0) h5::check(H5Dread(set.id(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + path);
+  if (count > 0)
+    h5::check(H5Dread(set.id(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + path);
   return values;
 }
 

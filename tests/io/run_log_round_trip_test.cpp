@@ -44,8 +44,7 @@ void write_sample_log(const std::string& path) {
   log.set_attribute("/timing", "no_names", std::vector<std::string>{});
   log.write_array("/particles/body", kBodies, "1", "body index of each particle");
   const std::size_t scalar = log.add_series("/time", 1, "s", "simulated time");
-  const std::size_t vector =
-      log.add_series("/bodies/ball/centre_of_mass", 3, "m", "centre of mass", {"x", "y", "z"});
+  const std::size_t vector = log.add_series("/bodies/ball/centre_of_mass", 3, "m", "centre of mass", {"x", "y", "z"});
   for (std::size_t i = 0; i < kScalarRows; ++i) {
     const double v = scalar_row(i);
     log.append(scalar, std::span<const double>(&v, 1));

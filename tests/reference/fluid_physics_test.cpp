@@ -13,7 +13,9 @@ namespace mssph::testing {
 namespace {
 
 // The scenes of the physics cases, validation/physics/<name>/scene.json.
-Scene case_scene(const std::string& name) { return load_scene(validation::validation_file("physics/" + name + "/scene.json")); }
+Scene case_scene(const std::string& name) {
+  return load_scene(validation::validation_file("physics/" + name + "/scene.json"));
+}
 
 // A 40 cm column of water settles in a free-slip tank. Hydrostatics then fixes two quantities
 // independently of any SPH detail: the pressure gradient dP/dz = -rho0 g, and the pressure at the
@@ -43,12 +45,22 @@ TEST(FluidPhysics, MomentumIsConservedBetweenFluidsAndRigidBodies) {
   doc["simulation"]["seed"] = 3;
   doc["materials"]["water"] = {{"rest_density", 1000.0}, {"pressure_stiffness", 100.0}, {"viscosity", 1.0}};
   doc["materials"]["oil"] = {{"rest_density", 800.0}, {"pressure_stiffness", 150.0}, {"viscosity", 3.0}};
-  doc["bodies"]["water"] = {{"kind", "fluid"}, {"material", "water"}, {"shape", {{"type", "box"}, {"size", vec(0.16, 0.16, 0.16)}}},
+  doc["bodies"]["water"] = {{"kind", "fluid"},
+                            {"material", "water"},
+                            {"shape", {{"type", "box"}, {"size", vec(0.16, 0.16, 0.16)}}},
                             {"velocity", vec(0.0, 0, 0)}};
-  doc["bodies"]["oil"] = {{"kind", "fluid"}, {"material", "oil"}, {"shape", {{"type", "box"}, {"size", vec(0.12, 0.12, 0.12)}}},
-                          {"position", vec(0.15, 0.02, 0)}, {"velocity", vec(-1.0, 0, 0.5)}};
-  doc["bodies"]["ball"] = {{"kind", "rigid"}, {"material", "water"}, {"density", 700.0}, {"shape", {{"type", "sphere"}, {"radius", 0.06}}},
-                           {"position", vec(-0.16, 0, 0.03)}, {"velocity", vec(1.0, 0, 0)}, {"angular_velocity", vec(0, 3, 0)}};
+  doc["bodies"]["oil"] = {{"kind", "fluid"},
+                          {"material", "oil"},
+                          {"shape", {{"type", "box"}, {"size", vec(0.12, 0.12, 0.12)}}},
+                          {"position", vec(0.15, 0.02, 0)},
+                          {"velocity", vec(-1.0, 0, 0.5)}};
+  doc["bodies"]["ball"] = {{"kind", "rigid"},
+                           {"material", "water"},
+                           {"density", 700.0},
+                           {"shape", {{"type", "sphere"}, {"radius", 0.06}}},
+                           {"position", vec(-0.16, 0, 0.03)},
+                           {"velocity", vec(1.0, 0, 0)},
+                           {"angular_velocity", vec(0, 3, 0)}};
   auto sim = make_reference(doc);
   const std::size_t ball = body_index(sim.setup(), "ball");
   const auto total_momentum = [&] {

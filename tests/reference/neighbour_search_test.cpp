@@ -27,7 +27,7 @@ TEST(NeighbourSearch, MatchesBruteForceOnRandomClouds) {
     std::vector<Eigen::Vector3d> x(1500);
     for (auto& p : x) p = Eigen::Vector3d(u(random), u(random), u(random));
     x.push_back(Eigen::Vector3d(1e3, -2e3, 5e2));  // far away: must not break the grid
-    x.push_back(x[0]);                              // a coincident pair
+    x.push_back(x[0]);                             // a coincident pair
     const NeighbourLists lists = find_neighbours(x, h);
     for (std::size_t i = 0; i < x.size(); ++i) {
       std::vector<std::size_t> found(lists.begin(i), lists.end(i));

@@ -22,11 +22,16 @@ TEST(RigidPhysics, BoxRestingOnTheGroundStaysPut) {
   const double dx = 0.02;
   nlohmann::json doc = scene_document(dx, 2.5e-4, 1.0);
   doc["materials"]["contact"] = {{"rest_density", 1000.0}, {"pressure_stiffness", 500.0}, {"viscosity", 5.0}};
-  doc["bodies"]["ground"] = {{"kind", "boundary"}, {"material", "contact"},
-                             {"shape", {{"type", "box"}, {"size", vec(0.3, 0.3, 0.04)}}}, {"position", vec(0, 0, -0.02)}};
+  doc["bodies"]["ground"] = {{"kind", "boundary"},
+                             {"material", "contact"},
+                             {"shape", {{"type", "box"}, {"size", vec(0.3, 0.3, 0.04)}}},
+                             {"position", vec(0, 0, -0.02)}};
   // The box's lattice continues the plate's: its bottom layer sits one spacing above the plate's top.
-  doc["bodies"]["box"] = {{"kind", "rigid"}, {"material", "contact"}, {"density", 500.0},
-                          {"shape", {{"type", "box"}, {"size", vec(0.1, 0.1, 0.06)}}}, {"position", vec(0, 0, 0.03)}};
+  doc["bodies"]["box"] = {{"kind", "rigid"},
+                          {"material", "contact"},
+                          {"density", 500.0},
+                          {"shape", {{"type", "box"}, {"size", vec(0.1, 0.1, 0.06)}}},
+                          {"position", vec(0, 0, 0.03)}};
   auto sim = make_reference(doc);
   const std::size_t box = body_index(sim.setup(), "box");
   const Eigen::Vector3d start = sim.rigid_body_state(box).centre_of_mass;
@@ -62,7 +67,8 @@ TEST(RigidPhysics, TorqueFreeTumblingKeepsAngularMomentumAndEnergy) {
   const validation::SpinMeasurement m =
       validation::measure_torque_free_spin("reference", validation::case_scene("physics/torque_free_spin"));
   EXPECT_LT(m.worst_momentum_error, 1e-12);
-  std::cout << "energy drift " << m.worst_energy_drift << ", body-axis omega turned " << m.largest_turn_degrees << " deg\n";
+  std::cout << "energy drift " << m.worst_energy_drift << ", body-axis omega turned " << m.largest_turn_degrees
+            << " deg\n";
   EXPECT_LT(m.worst_energy_drift, 5e-3);
   EXPECT_GT(m.largest_turn_degrees, 90.0);
   EXPECT_LT(m.final_linear_momentum, 1e-12);  // nothing pushed it

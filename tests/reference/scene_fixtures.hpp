@@ -1,8 +1,8 @@
 #pragma once
 // Small scenes for physics tests, built through the same JSON path as user scenes.
 #include "config/scene_loader.hpp"
-#include "reference_backend.hpp"
 #include "model/scene_builder.hpp"
+#include "reference_backend.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -14,9 +14,11 @@ namespace mssph::testing {
 inline nlohmann::json vec(double x, double y, double z) { return nlohmann::json::array({x, y, z}); }
 
 // A scene document with the given simulation settings and no bodies yet.
-inline nlohmann::json scene_document(double dx, double dt, double duration, const nlohmann::json& gravity = vec(0, 0, -9.81)) {
+inline nlohmann::json scene_document(double dx, double dt, double duration,
+                                     const nlohmann::json& gravity = vec(0, 0, -9.81)) {
   return {{"name", "test"},
-          {"simulation", {{"dt", dt}, {"duration", duration}, {"particle_spacing", dx}, {"gravity", gravity}, {"max_speed", 50.0}}},
+          {"simulation",
+           {{"dt", dt}, {"duration", duration}, {"particle_spacing", dx}, {"gravity", gravity}, {"max_speed", 50.0}}},
           {"bodies", nlohmann::json::object()}};
 }
 

@@ -40,7 +40,9 @@ TEST(SphKernels, Poly6VanishesAtAndBeyondSupport) {
 
 // The spiky gradient is the gradient of W = 15 / (pi h^6) (h - r)^3, itself normalised to 1.
 TEST(SphKernels, SpikyGradientIsTheGradientOfTheNormalisedSpikyKernel) {
-  const auto spiky = [](double r) { return r >= kH ? 0.0 : 15.0 / (std::numbers::pi * std::pow(kH, 6)) * std::pow(kH - r, 3); };
+  const auto spiky = [](double r) {
+    return r >= kH ? 0.0 : 15.0 / (std::numbers::pi * std::pow(kH, 6)) * std::pow(kH - r, 3);
+  };
   EXPECT_NEAR(radial_integral(spiky, kH), 1.0, 1e-6);
   const SpikyGradient grad_w(kH);
   std::mt19937 random(7);

@@ -28,9 +28,10 @@ std::vector<std::string> warnings_for(double dt, const json& material, const std
   json block = {{"kind", kind}, {"shape", {{"type", "box"}, {"size", {0.1, 0.1, 0.1}}}}};
   if (kind != "boundary") block["velocity"] = {speed, 0.0, 0.0};
   block.update(material);
-  const json doc = {{"name", "stability"},
-                    {"simulation", {{"dt", dt}, {"duration", 1.0}, {"particle_spacing", 0.02}, {"gravity", {0.0, 0.0, -gravity}}}},
-                    {"bodies", {{"block", block}}}};
+  const json doc = {
+      {"name", "stability"},
+      {"simulation", {{"dt", dt}, {"duration", 1.0}, {"particle_spacing", 0.02}, {"gravity", {0.0, 0.0, -gravity}}}},
+      {"bodies", {{"block", block}}}};
   return stability_warnings(build_particles(parse_scene(doc, "stability.json")));
 }
 
@@ -66,13 +67,15 @@ TEST(StabilityWarnings, BodyForceBound) {
 TEST(StabilityWarnings, ElasticBoundOfThePressureWaveSpeed) {
   // E = 1e5 Pa, nu = 0.3: lambda + 2 mu = E (1 - nu) / ((1 + nu)(1 - 2 nu)) = 134615 Pa,
   // c_p = sqrt(134615 / 1000) = 11.60 m/s, limit 0.25 * 0.04 / 11.60 = 8.62e-4 s.
-  const json rubber = {{"rest_density", 1000.0}, {"pressure_stiffness", 1e-4}, {"young_modulus", 1e5}, {"poisson_ratio", 0.3}};
+  const json rubber = {
+      {"rest_density", 1000.0}, {"pressure_stiffness", 1e-4}, {"young_modulus", 1e5}, {"poisson_ratio", 0.3}};
   EXPECT_THAT(warnings_for(8.4e-4, rubber, "deformable"), IsEmpty());
   EXPECT_THAT(warnings_for(8.8e-4, rubber, "deformable"), Contains(HasSubstr("elastic")));
 }
 
 TEST(StabilityWarnings, NearlyIncompressibleElasticity) {
-  json rubber = {{"rest_density", 1000.0}, {"pressure_stiffness", 1e-4}, {"young_modulus", 1e3}, {"poisson_ratio", 0.45}};
+  json rubber = {
+      {"rest_density", 1000.0}, {"pressure_stiffness", 1e-4}, {"young_modulus", 1e3}, {"poisson_ratio", 0.45}};
   EXPECT_THAT(warnings_for(1e-4, rubber, "deformable"), IsEmpty());
   rubber["poisson_ratio"] = 0.46;
   EXPECT_THAT(warnings_for(1e-4, rubber, "deformable"), Contains(HasSubstr("poisson_ratio = 0.46")));

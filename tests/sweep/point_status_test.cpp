@@ -1,6 +1,6 @@
 // What resume makes of a point's log: only "completed" is done.
-#include "io/run_log.hpp"
 #include "sweep/point_status.hpp"
+#include "io/run_log.hpp"
 #include "temp_dir.hpp"
 
 #include <gtest/gtest.h>

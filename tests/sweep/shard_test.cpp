@@ -48,8 +48,10 @@ TEST(Shard, OutsideAnArrayThereIsNoShard) { EXPECT_FALSE(sweep::shard_from_slurm
 TEST(Shard, InconsistentSlurmVariablesAreRejectedNamingThem) {
   try {
     // --array=3,7 resubmitted by hand: 2 tasks whose ids do not count from the minimum.
-    sweep::shard_from_slurm({{"SLURM_ARRAY_TASK_ID", "7"}, {"SLURM_ARRAY_TASK_COUNT", "2"},
-                             {"SLURM_ARRAY_TASK_MIN", "3"}, {"SLURM_ARRAY_TASK_MAX", "7"}});
+    sweep::shard_from_slurm({{"SLURM_ARRAY_TASK_ID", "7"},
+                             {"SLURM_ARRAY_TASK_COUNT", "2"},
+                             {"SLURM_ARRAY_TASK_MIN", "3"},
+                             {"SLURM_ARRAY_TASK_MAX", "7"}});
     FAIL() << "accepted";
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("SLURM_ARRAY_TASK_ID=7"));

@@ -33,7 +33,9 @@ TEST_P(ShippedSweeps, RunsCoarseEndToEnd) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Configs, ShippedSweeps, ::testing::Values("sweep_stiffness.json", "sweep_viscosity.json"),
-                         [](const auto& test_info) { return std::string(test_info.param).substr(6, std::string(test_info.param).size() - 11); });
+                         [](const auto& test_info) {
+                           return std::string(test_info.param).substr(6, std::string(test_info.param).size() - 11);
+                         });
 
 }  // namespace
 }  // namespace mssph::test

@@ -60,13 +60,16 @@ std::string tail(const std::string& text, std::size_t lines) {
 SlurmCluster::~SlurmCluster() { stop(); }
 
 std::optional<std::string> SlurmCluster::start() {
-  if (geteuid() != 0) return "slurmd must run as root to start jobs, and this test runs as uid " + std::to_string(geteuid());
+  if (geteuid() != 0)
+    return "slurmd must run as root to start jobs, and this test runs as uid " + std::to_string(geteuid());
   const std::string slurmctld = find_program("slurmctld");
   const std::string slurmd = find_program("slurmd");
   for (const char* client : {"sbatch", "squeue", "scontrol", "scancel", "sinfo"}) {
-    if (find_program(client).empty()) return std::string(client) + " not found: install slurm-wlm (scripts/setup.sh does)";
+    if (find_program(client).empty())
+      return std::string(client) + " not found: install slurm-wlm (scripts/setup.sh does)";
   }
-  if (slurmctld.empty() || slurmd.empty()) return "slurmctld or slurmd not found: install slurm-wlm (scripts/setup.sh does)";
+  if (slurmctld.empty() || slurmd.empty())
+    return "slurmctld or slurmd not found: install slurm-wlm (scripts/setup.sh does)";
 
   const std::string host = short_hostname();
   const std::string d = dir_.path().string();
@@ -92,8 +95,8 @@ std::optional<std::string> SlurmCluster::start() {
   setenv("SLURM_CONF", conf_.c_str(), 1);
 
   // -D: stay in the foreground, a child of this test; -i: ignore any saved state.
-  controller_ = std::make_unique<ChildProcess>(std::vector<std::string>{slurmctld, "-D", "-i", "-f", conf_}, dir_.path(),
-                                               capture_ctld_.path());
+  controller_ = std::make_unique<ChildProcess>(std::vector<std::string>{slurmctld, "-D", "-i", "-f", conf_},
+                                               dir_.path(), capture_ctld_.path());
   node_daemon_ = std::make_unique<ChildProcess>(std::vector<std::string>{slurmd, "-D", "-f", conf_}, dir_.path(),
                                                 capture_d_.path());
   const auto deadline = std::chrono::steady_clock::now() + 60s;
@@ -127,8 +130,8 @@ bool SlurmCluster::wait_until_idle(std::chrono::seconds limit) const {
 std::string SlurmCluster::logs() const {
   const std::string d = dir_.path().string();
   return "slurmctld.log:\n" + tail(read_file(d + "/slurmctld.log"), 15) + "slurmd.log:\n" +
-         tail(read_file(d + "/slurmd.log"), 15) + "slurmctld stderr:\n" +
-         tail(read_file(capture_ctld_ / "stderr"), 5) + "slurmd stderr:\n" + tail(read_file(capture_d_ / "stderr"), 5);
+         tail(read_file(d + "/slurmd.log"), 15) + "slurmctld stderr:\n" + tail(read_file(capture_ctld_ / "stderr"), 5) +
+         "slurmd stderr:\n" + tail(read_file(capture_d_ / "stderr"), 5);
 }
 
 void SlurmCluster::stop() {

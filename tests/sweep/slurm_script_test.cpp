@@ -1,6 +1,6 @@
 // The scripts of --emit-slurm: what each #SBATCH line and command says, and that bash parses them.
-#include "child_process.hpp"
 #include "sweep/slurm_script.hpp"
+#include "child_process.hpp"
 #include "temp_dir.hpp"
 
 #include <gmock/gmock.h>
@@ -39,16 +39,18 @@ TEST(SlurmScript, ArrayScriptRunsShardKOfNInEveryTask) {
   EXPECT_THAT(text, HasSubstr("#SBATCH --time=01:00:00\n"));
   EXPECT_THAT(text, HasSubstr("#SBATCH --account=lab\n"));
   EXPECT_THAT(text, HasSubstr("#SBATCH --output=" + o.directory + "/slurm/logs/shard-%a.out\n"));
-  EXPECT_THAT(text, HasSubstr("exec '/opt/mssph/bin/mssph' sweep '/home/u/it'\\''s here/sweep.json' --out '" +
-                              o.directory + "' --backend 'cuda' --shard \"${SLURM_ARRAY_TASK_ID}/8\" --set "
-                              "'simulation/particle_spacing=0.04'\n"));
+  EXPECT_THAT(text,
+              HasSubstr("exec '/opt/mssph/bin/mssph' sweep '/home/u/it'\\''s here/sweep.json' --out '" + o.directory +
+                        "' --backend 'cuda' --shard \"${SLURM_ARRAY_TASK_ID}/8\" --set "
+                        "'simulation/particle_spacing=0.04'\n"));
   EXPECT_THAT(text, Not(HasSubstr("--retry-failed")));
 }
 
 TEST(SlurmScript, MergeRunsAfterTheWholeArray) {
   TempDir dir;
   const sweep::SlurmOptions o = options(dir);
-  EXPECT_THAT(sweep::merge_script_text(o), HasSubstr("exec '/opt/mssph/bin/mssph' sweep merge '" + o.directory + "'\n"));
+  EXPECT_THAT(sweep::merge_script_text(o),
+              HasSubstr("exec '/opt/mssph/bin/mssph' sweep merge '" + o.directory + "'\n"));
   const sweep::SlurmScripts scripts = sweep::write_slurm_scripts(o);
   const std::string submit = read_file(scripts.submit_script);
   EXPECT_THAT(submit, HasSubstr("--dependency=afterany:${array_job}"));

@@ -7,7 +7,6 @@
 
 #include <gmock/gmock.h>
 
-
 namespace mssph::test {
 namespace {
 
@@ -23,8 +22,8 @@ TEST_F(SlurmSweep, ArrayJobAndMergeGiveTheSummaryOfALocalRun) {
   // they run the points with the same threads as the local run.
 
   const std::string slurm_out = work("slurm_sweep");
-  const ProcessResult emitted = mssph({"sweep", tiny_product_sweep(), "--out", slurm_out, "--backend", "cpu",
-                                       "--emit-slurm", "--shards", "2"});
+  const ProcessResult emitted =
+      mssph({"sweep", tiny_product_sweep(), "--out", slurm_out, "--backend", "cpu", "--emit-slurm", "--shards", "2"});
   ASSERT_EQ(emitted.exit_code, 0) << emitted.err;
   const ProcessResult submitted = run_process({"/bin/bash", slurm_out + "/slurm/submit.sh"}, work_.path());
   ASSERT_EQ(submitted.exit_code, 0) << submitted.err << cluster.logs();

@@ -32,9 +32,9 @@ class SweepBadInput : public SweepCli {
 };
 
 TEST_F(SweepBadInput, UnknownKeyInTheScene) {
-  expect_rejected(tiny_sweep({{{"path", "bodies/ball/densty"}, {"values", {400}}}}),
-                  {"point 0 (densty=400)", "tiny_drop.json: /bodies/ball/densty: unknown key 'densty'",
-                   "did you mean 'density'"});
+  expect_rejected(
+      tiny_sweep({{{"path", "bodies/ball/densty"}, {"values", {400}}}}),
+      {"point 0 (densty=400)", "tiny_drop.json: /bodies/ball/densty: unknown key 'densty'", "did you mean 'density'"});
 }
 
 TEST_F(SweepBadInput, PathWhoseParentIsNotInTheScene) {
@@ -60,14 +60,18 @@ TEST_F(SweepBadInput, UnknownMetric) {
 }
 
 TEST_F(SweepBadInput, CommandLineSetOfASweptPath) {
-  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--set bodies/ball/density=1", "is swept by"}, {"--set", "bodies/ball/density=1"});
+  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--set bodies/ball/density=1", "is swept by"},
+                  {"--set", "bodies/ball/density=1"});
 }
 
 TEST_F(SweepBadInput, BadArguments) {
-  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--shard 2/2: expected K/N with 0 <= K < N"}, {"--shard", "2/2"});
-  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--gpus and --jobs"}, {"--gpus", "0,1", "--jobs", "2"});
+  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--shard 2/2: expected K/N with 0 <= K < N"},
+                  {"--shard", "2/2"});
+  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--gpus and --jobs"},
+                  {"--gpus", "0,1", "--jobs", "2"});
   expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--gpus 0,,1"}, {"--gpus", "0,,1"});
-  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"only shape the scripts of --emit-slurm"}, {"--partition", "gpu"});
+  expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"only shape the scripts of --emit-slurm"},
+                  {"--partition", "gpu"});
 }
 
 TEST_F(SweepBadInput, RunRejectsATagWithoutANameBeforeWriting) {

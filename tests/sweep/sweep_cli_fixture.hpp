@@ -31,7 +31,9 @@ class SweepCli : public Cli {
   std::optional<std::string> previous_threads_;
 
   // As Cli::mssph, with room for a sweep of several runs on a busy machine.
-  ProcessResult mssph(const std::vector<std::string>& args) const { return start(args)->wait(std::chrono::minutes(10)); }
+  ProcessResult mssph(const std::vector<std::string>& args) const {
+    return start(args)->wait(std::chrono::minutes(10));
+  }
 
   std::string out() const { return work("sweep_out"); }
   nlohmann::json manifest() const { return read_json(out() + "/sweep.json"); }
@@ -90,7 +92,8 @@ class SweepCli : public Cli {
     const auto at = std::find(rows.at(0).begin(), rows.at(0).end(), name);
     EXPECT_NE(at, rows.at(0).end()) << "no column " << name;
     std::vector<std::string> column;
-    for (std::size_t r = 1; r < rows.size(); ++r) column.push_back(rows[r].at(static_cast<std::size_t>(at - rows[0].begin())));
+    for (std::size_t r = 1; r < rows.size(); ++r)
+      column.push_back(rows[r].at(static_cast<std::size_t>(at - rows[0].begin())));
     return column;
   }
 };

@@ -33,11 +33,17 @@ class SweepFileTest : public ::testing::Test {
 };
 
 TEST_F(SweepFileTest, ReadsEveryKey) {
-  const sweep::SweepFile s = load(tiny_sweep(
-      {{{"path", "/materials/contact/pressure_stiffness"}, {"name", "k"}, {"log", {{"from", 100}, {"to", 10000}, {"count", 3}}}},
-       {{"path", "bodies/ball/density"}, {"linear", {{"from", 400}, {"to", 600}, {"count", 3}}}}},
-      {{"description", "d"}, {"set", {{"simulation/duration", 0.15}}}, {"combine", "zip"},
-       {"repetitions", {{"seeds", {3, 4.0}}}}, {"metrics", {"final_status", "time_to_peak"}}, {"$schema", "x"}}));
+  const sweep::SweepFile s =
+      load(tiny_sweep({{{"path", "/materials/contact/pressure_stiffness"},
+                        {"name", "k"},
+                        {"log", {{"from", 100}, {"to", 10000}, {"count", 3}}}},
+                       {{"path", "bodies/ball/density"}, {"linear", {{"from", 400}, {"to", 600}, {"count", 3}}}}},
+                      {{"description", "d"},
+                       {"set", {{"simulation/duration", 0.15}}},
+                       {"combine", "zip"},
+                       {"repetitions", {{"seeds", {3, 4.0}}}},
+                       {"metrics", {"final_status", "time_to_peak"}},
+                       {"$schema", "x"}}));
   EXPECT_EQ(s.name, "test_sweep");
   EXPECT_EQ(s.scene_path, tiny_scene());
   ASSERT_EQ(s.parameters.size(), 2u);
@@ -62,8 +68,8 @@ TEST_F(SweepFileTest, DefaultsAreProductNoRepetitionsAndEveryMetric) {
 
 TEST_F(SweepFileTest, SceneIsFoundFromTheSweepFilesFolder) {
   const std::string path = MSSPH_SOURCE_DIR "/tests/data/sweeps/tiny_product.json";
-  const sweep::SweepFile s = load_sweep_file(path, {"peak_interaction_force", "time_to_peak", "peak_rendered_force",
-                                                    "final_status"});
+  const sweep::SweepFile s =
+      load_sweep_file(path, {"peak_interaction_force", "time_to_peak", "peak_rendered_force", "final_status"});
   EXPECT_EQ(s.scene_path, MSSPH_SOURCE_DIR "/tests/data/tiny_drop.json");
 }
 
@@ -88,27 +94,36 @@ TEST_F(SweepFileTest, RejectionsNameTheFileThePathAndWhatWasExpected) {
       {tiny_sweep(nlohmann::json::array()), "/parameters", "expected at least one parameter"},
       {tiny_sweep({{{"path", "bodies/ball/density"}, {"values", nlohmann::json::array()}}}), "/parameters/0/values",
        "empty list"},
-      {tiny_sweep({{{"path", "bodies/ball/density"}, {"values", {1, 1}}}}), "/parameters/0/values/1", "duplicate value"},
+      {tiny_sweep({{{"path", "bodies/ball/density"}, {"values", {1, 1}}}}), "/parameters/0/values/1",
+       "duplicate value"},
       {tiny_sweep({{{"path", "bodies/ball/density"}}}), "/parameters/0", "exactly one of"},
-      {tiny_sweep({{{"path", "bodies/ball/density"}, {"values", {1}}, {"log", {{"from", 1}, {"to", 2}, {"count", 2}}}}}),
+      {tiny_sweep(
+           {{{"path", "bodies/ball/density"}, {"values", {1}}, {"log", {{"from", 1}, {"to", 2}, {"count", 2}}}}}),
        "/parameters/0", "exactly one of"},
-      {tiny_sweep({{{"path", "a/b"}, {"log", {{"from", 0}, {"to", 2}, {"count", 2}}}}}), "/parameters/0/log/from", "> 0"},
-      {tiny_sweep({{{"path", "a/b"}, {"linear", {{"from", 0}, {"to", 2}, {"count", 1}}}}}), "/parameters/0/linear/count",
-       "in [2, 100000]"},
+      {tiny_sweep({{{"path", "a/b"}, {"log", {{"from", 0}, {"to", 2}, {"count", 2}}}}}), "/parameters/0/log/from",
+       "> 0"},
+      {tiny_sweep({{{"path", "a/b"}, {"linear", {{"from", 0}, {"to", 2}, {"count", 1}}}}}),
+       "/parameters/0/linear/count", "in [2, 100000]"},
       {tiny_sweep({{{"path", "a/b"}, {"linear", {{"from", 0}, {"to", 2}}}}}), "/parameters/0/linear/count", "missing"},
       {tiny_sweep({kDensity, kDensity}), "/parameters/1", "a second parameter named \"density\""},
       {tiny_sweep({{{"path", "bodies/ball/state"}, {"name", "state"}, {"values", {1}}}}), "/parameters/0/name",
        "taken by a summary column"},
       {tiny_sweep({{{"path", "x/final_status"}, {"values", {1}}}}), "/parameters/0", "is a metric's"},
       {tiny_sweep({{{"path", "simulation/seed"}, {"values", {1, 2}}}}), "/parameters/0/path", "repetitions"},
-      {tiny_sweep(nlohmann::json::array({kDensity}), {{"metrics", {"peak_force"}}}), "/metrics/0", "unknown metric \"peak_force\""},
-      {tiny_sweep(nlohmann::json::array({kDensity}), {{"metrics", nlohmann::json::array()}}), "/metrics", "at least one metric"},
-      {tiny_sweep(nlohmann::json::array({kDensity}), {{"repetitions", {{"seeds", {1, -1}}}}}), "/repetitions/seeds/1", "an integer >= 0"},
-      {tiny_sweep(nlohmann::json::array({kDensity}), {{"repetitions", {{"seeds", nlohmann::json::array()}}}}), "/repetitions/seeds", "empty list"},
+      {tiny_sweep(nlohmann::json::array({kDensity}), {{"metrics", {"peak_force"}}}), "/metrics/0",
+       "unknown metric \"peak_force\""},
+      {tiny_sweep(nlohmann::json::array({kDensity}), {{"metrics", nlohmann::json::array()}}), "/metrics",
+       "at least one metric"},
+      {tiny_sweep(nlohmann::json::array({kDensity}), {{"repetitions", {{"seeds", {1, -1}}}}}), "/repetitions/seeds/1",
+       "an integer >= 0"},
+      {tiny_sweep(nlohmann::json::array({kDensity}), {{"repetitions", {{"seeds", nlohmann::json::array()}}}}),
+       "/repetitions/seeds", "empty list"},
       {tiny_sweep({kDensity, {{"path", "a/b"}, {"values", {1, 2, 3}}}}, {{"combine", "zip"}}), "/combine",
        "density has 2, b has 3"},
-      {tiny_sweep(nlohmann::json::array({kDensity}), {{"combine", "cross"}}), "/combine", "expected one of \"product\", \"zip\""},
-      {tiny_sweep(nlohmann::json::array({kDensity}), {{"set", {{"bodies/ball/density", 1}}}}), "/set/bodies~1ball~1density", "is swept"},
+      {tiny_sweep(nlohmann::json::array({kDensity}), {{"combine", "cross"}}), "/combine",
+       "expected one of \"product\", \"zip\""},
+      {tiny_sweep(nlohmann::json::array({kDensity}), {{"set", {{"bodies/ball/density", 1}}}}),
+       "/set/bodies~1ball~1density", "is swept"},
       {tiny_sweep(nlohmann::json::array({kDensity}), {{"scene", "nowhere.json"}}), "/scene", "no scene file"},
       {tiny_sweep(nlohmann::json::array({kDensity}), {{"name", "has space"}}), "/name", "letters, digits"},
   };

@@ -30,11 +30,16 @@ class SweepGpus : public SweepCli {
                            "# The point's arguments with --backend cuda made cpu; one line when it starts and ends.\n"
                            "args=()\n"
                            "for a in \"$@\"; do [[ $a == cuda ]] && a=cpu; args+=(\"$a\"); done\n"
-                           "echo \"start $$ ${CUDA_VISIBLE_DEVICES-unset} $(date +%s%N)\" >> '" + record + "'\n"
-                           "'" MSSPH_BINARY "' \"${args[@]}\"\n"
-                           "code=$?\n"
-                           "echo \"end $$ ${CUDA_VISIBLE_DEVICES-unset} $(date +%s%N)\" >> '" + record + "'\n"
-                           "exit $code\n";
+                           "echo \"start $$ ${CUDA_VISIBLE_DEVICES-unset} $(date +%s%N)\" >> '" +
+                               record +
+                               "'\n"
+                               "'" MSSPH_BINARY
+                               "' \"${args[@]}\"\n"
+                               "code=$?\n"
+                               "echo \"end $$ ${CUDA_VISIBLE_DEVICES-unset} $(date +%s%N)\" >> '" +
+                               record +
+                               "'\n"
+                               "exit $code\n";
     std::filesystem::permissions(hook, std::filesystem::perms::owner_all);
     setenv("MSSPH_SWEEP_RUNNER", hook.c_str(), 1);
     const ProcessResult r = mssph({"sweep", tiny_product_sweep(), "--out", out(), "--backend", "cuda", "--gpus", gpus});

@@ -58,7 +58,8 @@ class SweepInterrupt : public SweepCli {
   }
   void expect_resume_finishes(std::size_t completed_before) {
     std::vector<ino_t> kept;
-    for (std::size_t i = 0; i < 4; ++i) kept.push_back(log_exists(i) && status_now(i) == "completed" ? inode(log_of(i)) : 0);
+    for (std::size_t i = 0; i < 4; ++i)
+      kept.push_back(log_exists(i) && status_now(i) == "completed" ? inode(log_of(i)) : 0);
     const ProcessResult resumed = mssph(args());
     ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
     EXPECT_THAT(resumed.err, HasSubstr(std::to_string(completed_before) + " completed before"));
@@ -99,7 +100,8 @@ TEST_F(SweepInterrupt, SigkillLosesOnlyThePointInFlight) {
   const auto deadline = std::chrono::steady_clock::now() + 60s;
   while (std::chrono::steady_clock::now() < deadline) {
     const auto unfinished = unfinished_logs();
-    if (unfinished.empty() || (status_now(unfinished[0]) != "running" && status_now(unfinished[0]) != "unreadable")) break;
+    if (unfinished.empty() || (status_now(unfinished[0]) != "running" && status_now(unfinished[0]) != "unreadable"))
+      break;
     std::this_thread::sleep_for(20ms);
   }
   const std::vector<std::size_t> unfinished = unfinished_logs();

@@ -15,7 +15,8 @@ namespace {
 using ::testing::HasSubstr;
 using Values = std::vector<std::pair<std::string, nlohmann::json>>;
 
-const nlohmann::json kStiffness = {{"path", "materials/contact/pressure_stiffness"}, {"name", "k"},
+const nlohmann::json kStiffness = {{"path", "materials/contact/pressure_stiffness"},
+                                   {"name", "k"},
                                    {"log", {{"from", 100}, {"to", 10000}, {"count", 3}}}};
 
 class SweepPointsTest : public ::testing::Test {
@@ -49,8 +50,8 @@ TEST_F(SweepPointsTest, ProductRunsEveryCombinationLastParameterFastest) {
 }
 
 TEST_F(SweepPointsTest, ZipPairsTheIthValues) {
-  const auto points = points_of(tiny_sweep(
-      {kStiffness, {{"path", "bodies/ball/density"}, {"values", {300, 400, 500}}}}, {{"combine", "zip"}}));
+  const auto points = points_of(
+      tiny_sweep({kStiffness, {{"path", "bodies/ball/density"}, {"values", {300, 400, 500}}}}, {{"combine", "zip"}}));
   ASSERT_EQ(points.size(), 3u);
   EXPECT_EQ(points[0].parameters, (Values{{"k", 100.0}, {"density", 300}}));
   EXPECT_EQ(points[1].parameters, (Values{{"k", 1000.0}, {"density", 400}}));
@@ -58,7 +59,8 @@ TEST_F(SweepPointsTest, ZipPairsTheIthValues) {
 }
 
 TEST_F(SweepPointsTest, RepetitionsRepeatEveryCombinationWithEachSeed) {
-  const auto points = points_of(tiny_sweep(nlohmann::json::array({kDensity}), {{"repetitions", {{"seeds", {7, 9, 11}}}}}));
+  const auto points =
+      points_of(tiny_sweep(nlohmann::json::array({kDensity}), {{"repetitions", {{"seeds", {7, 9, 11}}}}}));
   ASSERT_EQ(points.size(), 6u);
   const std::vector<long long> seeds{7, 9, 11, 7, 9, 11};
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -71,8 +73,9 @@ TEST_F(SweepPointsTest, RepetitionsRepeatEveryCombinationWithEachSeed) {
 }
 
 TEST_F(SweepPointsTest, OverridesApplyInOrderFileThenCommandLineThenParameters) {
-  const auto points = points_of(tiny_sweep(nlohmann::json::array({kDensity}), {{"set", {{"simulation/duration", 0.1}}}}),
-                                {"simulation/duration=0.05"});
+  const auto points =
+      points_of(tiny_sweep(nlohmann::json::array({kDensity}), {{"set", {{"simulation/duration", 0.1}}}}),
+                {"simulation/duration=0.05"});
   EXPECT_EQ(points[0].overrides, (std::vector<std::string>{"simulation/duration=0.1", "simulation/duration=0.05",
                                                            "bodies/ball/density=400"}));
 }
@@ -95,8 +98,9 @@ TEST_F(SweepPointsTest, HashesAreStableAndFollowTheScene) {
   EXPECT_EQ(a.size(), first.size()) << "every point has its own name";
   EXPECT_EQ(a, b) << "a point's name depends on the scene it runs, not on how the sweep is written";
   // 1e3 and 1000.0 are the same value; a command-line --set elsewhere is a different scene.
-  const auto written_otherwise = points_of(tiny_sweep({{{"path", "materials/contact/pressure_stiffness"},
-                                                        {"values", {1e3}}}}, {{"set", {{"bodies/ball/density", 400}}}}));
+  const auto written_otherwise =
+      points_of(tiny_sweep({{{"path", "materials/contact/pressure_stiffness"}, {"values", {1e3}}}},
+                           {{"set", {{"bodies/ball/density", 400}}}}));
   EXPECT_EQ(written_otherwise[0].hash, first[2].hash);
   const auto coarse = points_of(tiny_sweep({kStiffness, kDensity}), {"simulation/duration=0.01"});
   EXPECT_NE(coarse[0].hash, first[0].hash);

@@ -55,8 +55,9 @@ TEST_F(SweepResume, LogsLeftRunningOrInterruptedRunAgain) {
 
 TEST_F(SweepResume, FailedPointsAreReportedAndRerunOnlyWhenAsked) {
   // The second point's speed bound is below what the falling ball reaches: a blow-up (exit 3).
-  const std::string file = write_json(files_, "failing.json", tiny_sweep(
-      {{{"path", "simulation/max_speed"}, {"values", {20.0, 1e-4}}}}, {{"set", {{"simulation/duration", 0.02}}}}));
+  const std::string file = write_json(files_, "failing.json",
+                                      tiny_sweep({{{"path", "simulation/max_speed"}, {"values", {20.0, 1e-4}}}},
+                                                 {{"set", {{"simulation/duration", 0.02}}}}));
   const ProcessResult first = sweep({}, file);
   EXPECT_EQ(first.exit_code, 3) << first.err;
   EXPECT_THAT(first.err, HasSubstr("FAILED (failed: blow-up"));

@@ -52,7 +52,8 @@ TEST_F(SweepRun, RunsEveryPointAsAnOrdinaryRunAndSummarises) {
 TEST_F(SweepRun, APointsLogIsTheLogOfTheSameMssphRun) {
   ASSERT_EQ(mssph({"sweep", tiny_product_sweep(), "--out", out(), "--backend", "cpu"}).exit_code, 0);
   const nlohmann::json point = manifest()["points"][3];
-  std::vector<std::string> args{"run", data_file("tiny_drop.json"), "--backend", "cpu", "--out", work("direct.h5"), "-q"};
+  std::vector<std::string> args{"run",   data_file("tiny_drop.json"), "--backend", "cpu",
+                                "--out", work("direct.h5"),           "-q"};
   for (const auto& o : point["overrides"]) {
     args.push_back("--set");
     args.push_back(o.get<std::string>());
@@ -60,8 +61,8 @@ TEST_F(SweepRun, APointsLogIsTheLogOfTheSameMssphRun) {
   ASSERT_EQ(mssph(args).exit_code, 0);
   const h5::Handle direct = open_read_only(work("direct.h5"));
   const h5::Handle swept = open_read_only(log_of(point));
-  for (const char* series : {"/time", "/bodies/ball/centre_of_mass", "/bodies/ball/interaction_force",
-                             "/haptics/rendered/force"}) {
+  for (const char* series :
+       {"/time", "/bodies/ball/centre_of_mass", "/bodies/ball/interaction_force", "/haptics/rendered/force"}) {
     EXPECT_EQ(read_doubles(swept.id(), series), read_doubles(direct.id(), series)) << series;
   }
 }
@@ -108,9 +109,10 @@ TEST_F(SweepRun, HelpListsEveryOptionResumeAndExitCodes) {
   CLI::App app;
   int exit_code = 0;
   cli::add_sweep_command(app, exit_code);
-  for (const CLI::Option* option : app.get_subcommand("sweep")->get_options()) EXPECT_THAT(r.out, HasSubstr(option->get_name()));
-  for (const char* phrase : {"merge", "plot", "--retry-failed", "\"completed\"", "point-<hash>.h5", "SLURM_ARRAY_TASK_ID",
-                             "Exit codes: 0", "2 bad input", "3 a point failed"}) {
+  for (const CLI::Option* option : app.get_subcommand("sweep")->get_options())
+    EXPECT_THAT(r.out, HasSubstr(option->get_name()));
+  for (const char* phrase : {"merge", "plot", "--retry-failed", "\"completed\"", "point-<hash>.h5",
+                             "SLURM_ARRAY_TASK_ID", "Exit codes: 0", "2 bad input", "3 a point failed"}) {
     EXPECT_THAT(r.out, HasSubstr(phrase));
   }
 }

@@ -22,7 +22,8 @@ inline const std::vector<std::string>& test_metrics() {
 inline const nlohmann::json kDensity = {{"path", "bodies/ball/density"}, {"values", {400, 600}}};
 
 // A sweep over the tiny drop: `parameters` as the sweep file's list, `extra` merged at the top.
-inline nlohmann::json tiny_sweep(const nlohmann::json& parameters, const nlohmann::json& extra = nlohmann::json::object()) {
+inline nlohmann::json tiny_sweep(const nlohmann::json& parameters,
+                                 const nlohmann::json& extra = nlohmann::json::object()) {
   nlohmann::json sweep{{"name", "test_sweep"}, {"scene", tiny_scene()}, {"parameters", parameters}};
   for (const auto& [key, value] : extra.items()) sweep[key] = value;
   return sweep;

@@ -14,7 +14,6 @@ std::string validation_dir() {
 
 std::string validation_file(const std::string& relative) { return validation_dir() + "/" + relative; }
 
-
 Scene case_scene(const std::string& folder, const std::vector<std::string>& overrides) {
   return load_scene(validation_file(folder + "/scene.json"), overrides);
 }

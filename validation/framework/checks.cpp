@@ -35,9 +35,12 @@ Check made(std::string quantity, std::string unit, double expected, std::string 
 
 const char* status_name(Status status) {
   switch (status) {
-    case Status::pass: return "PASS";
-    case Status::fail: return "FAIL";
-    case Status::skipped: return "SKIPPED";
+    case Status::pass:
+      return "PASS";
+    case Status::fail:
+      return "FAIL";
+    case Status::skipped:
+      return "SKIPPED";
   }
   return "?";
 }

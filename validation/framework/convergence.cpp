@@ -20,8 +20,8 @@ CaseResult convergence_result(const std::string& quantity, const std::vector<dou
     result.details += " dx = " + exact(spacing[k]).substr(0, 7) + " m: " + std::to_string(error.back()) + ";";
   }
   const std::size_t finest = spacing.size() - 1;
-  result.checks.push_back(relative_check(quantity + " at the finest dx = " + exact(spacing[finest]).substr(0, 7) + " m", "-",
-                                         expected[finest], measured[finest], finest_tolerance));
+  result.checks.push_back(relative_check(quantity + " at the finest dx = " + exact(spacing[finest]).substr(0, 7) + " m",
+                                         "-", expected[finest], measured[finest], finest_tolerance));
   if (standard_error.empty()) {
     result.checks.push_back(range_check("observed order p of the relative error", "-", 0.0,
                                         std::numeric_limits<double>::infinity(), observed_order(spacing, error)));

@@ -22,10 +22,17 @@ std::string join(const std::vector<std::string>& items) {
 nlohmann::json number_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
 nlohmann::json info_json(const RunInfo& info) {
-  return {{"mssph_version", info.mssph_version}, {"git_commit", info.git_commit}, {"date", info.date},
-          {"command_line", info.command_line},   {"mode", info.mode},             {"physics_backend", info.physics_backend},
-          {"physics_device", info.physics_device}, {"physics_precision", info.physics_precision},
-          {"fast_backends", info.fast_backends}, {"host_cpu", info.host_cpu},     {"gpus", info.gpus},
+  return {{"mssph_version", info.mssph_version},
+          {"git_commit", info.git_commit},
+          {"date", info.date},
+          {"command_line", info.command_line},
+          {"mode", info.mode},
+          {"physics_backend", info.physics_backend},
+          {"physics_device", info.physics_device},
+          {"physics_precision", info.physics_precision},
+          {"fast_backends", info.fast_backends},
+          {"host_cpu", info.host_cpu},
+          {"gpus", info.gpus},
           {"seed", info.seed}};
 }
 
@@ -47,9 +54,11 @@ void write_info_attributes(hid_t object, const RunInfo& info) {
 void write_vector(hid_t group, const std::string& name, const std::vector<double>& values, const std::string& label) {
   const hsize_t size = values.size();
   h5::Handle space = h5::dataspace(H5Screate_simple(1, &size, nullptr), "dataspace for " + name);
-  h5::Handle set = h5::dataset(H5Dcreate2(group, name.c_str(), H5T_NATIVE_DOUBLE, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                               "create dataset " + name);
-  if (size > 0) h5::check(H5Dwrite(set.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + name);
+  h5::Handle set =
+      h5::dataset(H5Dcreate2(group, name.c_str(), H5T_NATIVE_DOUBLE, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                  "create dataset " + name);
+  if (size > 0)
+    h5::check(H5Dwrite(set.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + name);
   h5::write_attribute(set.id(), "label", label);
 }
 
@@ -68,24 +77,24 @@ Status case_status(const CaseRun& run) {
 
 void print_table(const RunInfo& info, const std::vector<CaseRun>& runs) {
   std::printf("mssph validate (%s): physics on %s (%s, %s), kernels: %s vs reference; commit %s; %s; seed %llu\n",
-              info.mode.c_str(), info.physics_backend.c_str(), info.physics_device.c_str(), info.physics_precision.c_str(),
-              join(info.fast_backends).c_str(), info.git_commit.c_str(), info.date.c_str(),
-              static_cast<unsigned long long>(info.seed));
+              info.mode.c_str(), info.physics_backend.c_str(), info.physics_device.c_str(),
+              info.physics_precision.c_str(), join(info.fast_backends).c_str(), info.git_commit.c_str(),
+              info.date.c_str(), static_cast<unsigned long long>(info.seed));
   std::printf("%-11s %-22s %-40s %-9s %-14s %-12s %-10s %-9s %s\n", "suite", "case", "quantity", "backend", "expected",
               "measured", "error", "tolerance", "status");
   int counts[3] = {0, 0, 0};
   for (const CaseRun& run : runs) {
     const ValidationCase& c = *run.which;
     if (!run.error.empty()) {
-      std::printf("%-11s %-22s %-40s %-9s %-14s %-12s %-10s %-9s FAIL (%s)\n", c.suite.c_str(), c.name.c_str(), "-", "-", "-",
-                  "-", "-", "-", run.error.c_str());
+      std::printf("%-11s %-22s %-40s %-9s %-14s %-12s %-10s %-9s FAIL (%s)\n", c.suite.c_str(), c.name.c_str(), "-",
+                  "-", "-", "-", "-", "-", run.error.c_str());
     }
     for (const Check& k : run.result.checks) {
       std::string status = status_name(k.status);
       if (!k.note.empty()) status += " (" + k.note + ")";
       if (k.status == Status::skipped) {
-        std::printf("%-11s %-22s %-40s %-9s %-14s %-12s %-10s %-9s %s\n", c.suite.c_str(), c.name.c_str(), k.quantity.c_str(),
-                    k.backend.c_str(), "-", "-", "-", "-", status.c_str());
+        std::printf("%-11s %-22s %-40s %-9s %-14s %-12s %-10s %-9s %s\n", c.suite.c_str(), c.name.c_str(),
+                    k.quantity.c_str(), k.backend.c_str(), "-", "-", "-", "-", status.c_str());
       } else {
         std::printf("%-11s %-22s %-40s %-9s %-14s %-12.5g %-10.3g %-9.3g %s\n", c.suite.c_str(), c.name.c_str(),
                     k.quantity.c_str(), k.backend.c_str(), k.expected_text.c_str(), k.measured, k.error, k.tolerance,
@@ -103,23 +112,39 @@ void write_report_json(const std::string& path, const RunInfo& info, const std::
   for (const CaseRun& run : runs) {
     nlohmann::json checks = nlohmann::json::array();
     for (const Check& k : run.result.checks) {
-      checks.push_back({{"quantity", k.quantity}, {"unit", k.unit}, {"backend", k.backend},
-                        {"expected", number_or_null(k.expected)}, {"expected_text", k.expected_text},
-                        {"measured", number_or_null(k.measured)}, {"error", number_or_null(k.error)},
-                        {"error_kind", k.error_kind}, {"tolerance", k.tolerance}, {"status", status_name(k.status)},
+      checks.push_back({{"quantity", k.quantity},
+                        {"unit", k.unit},
+                        {"backend", k.backend},
+                        {"expected", number_or_null(k.expected)},
+                        {"expected_text", k.expected_text},
+                        {"measured", number_or_null(k.measured)},
+                        {"error", number_or_null(k.error)},
+                        {"error_kind", k.error_kind},
+                        {"tolerance", k.tolerance},
+                        {"status", status_name(k.status)},
                         {"note", k.note}});
     }
     nlohmann::json series = nlohmann::json::array();
     for (const Series& s : run.result.series) {
       nlohmann::json labels = nlohmann::json::array();
       for (const auto& column : s.columns) labels.push_back(column.first);
-      series.push_back({{"name", s.name}, {"x_label", s.x_label}, {"columns", labels},
-                        {"log_log", s.log_log}, {"hdf5_group", "/" + run.which->suite + "/" + run.which->name + "/" + s.name}});
+      series.push_back({{"name", s.name},
+                        {"x_label", s.x_label},
+                        {"columns", labels},
+                        {"log_log", s.log_log},
+                        {"hdf5_group", "/" + run.which->suite + "/" + run.which->name + "/" + s.name}});
     }
-    cases.push_back({{"suite", run.which->suite}, {"case", run.which->name}, {"folder", "validation/" + run.which->folder},
-                     {"title", run.which->title}, {"status", status_name(case_status(run))}, {"error", run.error},
-                     {"resolution", run.result.resolution}, {"details", run.result.details},
-                     {"wall_seconds", run.result.wall_seconds}, {"checks", checks}, {"series", series}});
+    cases.push_back({{"suite", run.which->suite},
+                     {"case", run.which->name},
+                     {"folder", "validation/" + run.which->folder},
+                     {"title", run.which->title},
+                     {"status", status_name(case_status(run))},
+                     {"error", run.error},
+                     {"resolution", run.result.resolution},
+                     {"details", run.result.details},
+                     {"wall_seconds", run.result.wall_seconds},
+                     {"checks", checks},
+                     {"series", series}});
   }
   std::ofstream out(path);
   out << nlohmann::json{{"run", info_json(info)}, {"cases", cases}}.dump(2) << "\n";

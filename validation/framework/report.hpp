@@ -13,9 +13,9 @@ namespace mssph::validation {
 struct RunInfo {
   std::string mssph_version;
   std::string git_commit;
-  std::string date;            // UTC, ISO 8601
+  std::string date;  // UTC, ISO 8601
   std::string command_line;
-  std::string mode;            // "quick" or "full"
+  std::string mode;  // "quick" or "full"
   std::string physics_backend;
   std::string physics_device;
   std::string physics_precision;

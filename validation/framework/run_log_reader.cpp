@@ -31,6 +31,8 @@ std::vector<Eigen::Vector3d> read_vectors(const std::string& file, const std::st
   return vectors;
 }
 
-std::vector<double> read_series(const std::string& file, const std::string& dataset) { return read_all(file, dataset, 1); }
+std::vector<double> read_series(const std::string& file, const std::string& dataset) {
+  return read_all(file, dataset, 1);
+}
 
 }  // namespace mssph::validation

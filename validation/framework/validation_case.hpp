@@ -27,7 +27,7 @@ struct Check {
   std::string error_kind;
   double tolerance = 0.0;
   Status status = Status::fail;
-  std::string note;  // SKIPPED: why; otherwise optional detail
+  std::string note;     // SKIPPED: why; otherwise optional detail
   std::string backend;  // the backend the quantity was measured on
 };
 
@@ -44,7 +44,7 @@ struct Series {
   std::string x_label;
   std::vector<double> x;
   std::vector<std::pair<std::string, std::vector<double>>> columns;  // label, values
-  bool log_log = false;  // drawn on log-log axes (power laws, convergence)
+  bool log_log = false;                                              // drawn on log-log axes (power laws, convergence)
 };
 
 struct CaseResult {

@@ -2,7 +2,8 @@
 
 namespace mssph::validation {
 
-std::vector<std::size_t> interior_particles(const reference::ReferenceBackend& backend, std::size_t body, double margin) {
+std::vector<std::size_t> interior_particles(const reference::ReferenceBackend& backend, std::size_t body,
+                                            double margin) {
   const BodySetup& b = backend.setup().bodies[body];
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300);
   Eigen::Vector3d hi = Eigen::Vector3d::Constant(-1e300);

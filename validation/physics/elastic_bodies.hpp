@@ -13,7 +13,8 @@ namespace mssph::validation {
 
 // Particles of `body` whose rest neighbourhood is complete: at least `margin` from every face of
 // the body's bounding box (margin >= h: the support lies inside the body).
-std::vector<std::size_t> interior_particles(const reference::ReferenceBackend& backend, std::size_t body, double margin);
+std::vector<std::size_t> interior_particles(const reference::ReferenceBackend& backend, std::size_t body,
+                                            double margin);
 
 // Places every particle of `body` at x = centre + G (X - centre) + t from its rest position X:
 // a uniform deformation G (a rotation, a stretch, a shear) and a translation t.

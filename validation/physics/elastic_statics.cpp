@@ -13,10 +13,10 @@
 namespace mssph::validation {
 
 reference::ReferenceBackend patch_block(bool correction, const std::string& strain, double jitter) {
-  const Scene scene = case_scene("physics/patch_tests", {"simulation/jitter=" + exact(jitter),
-                                                         std::string("bodies/block/kernel_gradient_correction=") +
-                                                             (correction ? "true" : "false"),
-                                                         "bodies/block/strain=" + strain});
+  const Scene scene = case_scene(
+      "physics/patch_tests", {"simulation/jitter=" + exact(jitter),
+                              std::string("bodies/block/kernel_gradient_correction=") + (correction ? "true" : "false"),
+                              "bodies/block/strain=" + strain});
   return reference::ReferenceBackend(build_particles(scene));
 }
 
@@ -39,9 +39,10 @@ double farthest_from(const std::vector<Eigen::Matrix3d>& stresses, double target
 }
 
 RigidMotionResiduals rigid_motion_residuals(bool jitter, bool correction) {
-  const Scene scene = case_scene("physics/rotation_invariance",
-                                 {"simulation/jitter=" + std::string(jitter ? "0.2" : "0"),
-                                  std::string("bodies/block/kernel_gradient_correction=") + (correction ? "true" : "false")});
+  const Scene scene =
+      case_scene("physics/rotation_invariance",
+                 {"simulation/jitter=" + std::string(jitter ? "0.2" : "0"),
+                  std::string("bodies/block/kernel_gradient_correction=") + (correction ? "true" : "false")});
   reference::ReferenceBackend backend(build_particles(scene));
   const BodyConfig& block = scene.bodies.front();
   const double h = backend.setup().smoothing_length;

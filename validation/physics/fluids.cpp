@@ -56,7 +56,8 @@ HydrostaticMeasurement measure_hydrostatic(const std::string& backend_name, cons
     }
   }
   double top = -1e9;
-  for (std::size_t i = column.first; i < column.first + column.count; ++i) top = std::max(top, double(snapshot.position[3 * i + 2]));
+  for (std::size_t i = column.first; i < column.first + column.count; ++i)
+    top = std::max(top, double(snapshot.position[3 * i + 2]));
   HydrostaticMeasurement m;
   for (int k = 0; k < slabs; ++k) {
     const double z = (k + 0.5) * dx;
@@ -115,7 +116,8 @@ FloatingMeasurement measure_floating(const std::string& backend_name, const Scen
       const auto [it, inserted] = column_tops.emplace(column, z);
       if (!inserted) it->second = std::max(it->second, z);
     }
-    if (column_tops.empty()) throw std::runtime_error(scene.source_file + ": no free surface beyond the sphere's meniscus");
+    if (column_tops.empty())
+      throw std::runtime_error(scene.source_file + ": no free surface beyond the sphere's meniscus");
     std::vector<double> tops;
     for (const auto& [column, z] : column_tops) tops.push_back(z);
     std::sort(tops.begin(), tops.end());

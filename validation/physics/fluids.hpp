@@ -17,12 +17,12 @@ namespace mssph::validation {
 // in the floor slab at dx = 3.3 cm, enough to steepen a fit over few slabs by 10 %). A line
 // fitted through them gives dP/dz and, extrapolated, the floor pressure P(0).
 struct HydrostaticMeasurement {
-  double slope = 0.0;            // dP/dz of the fit [Pa/m]
-  double floor_pressure = 0.0;   // the fit at z = 0 [Pa]
-  double expected_slope = 0.0;   // -rho0 |g| [Pa/m]
-  double weight_per_area = 0.0;  // the column's weight over the floor area, M |g| / A [Pa]
-  double max_speed = 0.0;        // the column's fastest particle at the end [m/s]
-  double sound_speed = 0.0;      // sqrt(k) [m/s]
+  double slope = 0.0;                    // dP/dz of the fit [Pa/m]
+  double floor_pressure = 0.0;           // the fit at z = 0 [Pa]
+  double expected_slope = 0.0;           // -rho0 |g| [Pa/m]
+  double weight_per_area = 0.0;          // the column's weight over the floor area, M |g| / A [Pa]
+  double max_speed = 0.0;                // the column's fastest particle at the end [m/s]
+  double sound_speed = 0.0;              // sqrt(k) [m/s]
   std::vector<double> height, pressure;  // the slabs used [m], [Pa]
   std::size_t particles = 0;
 };
@@ -34,10 +34,10 @@ HydrostaticMeasurement measure_hydrostatic(const std::string& backend, const Sce
 // sampled (N particles of volume dx^3). The free surface, away from the sphere's meniscus, is the
 // median of the particle columns' tops plus half a spacing.
 struct FloatingMeasurement {
-  double depth = 0.0;           // at the end [m]
-  double expected_depth = 0.0;  // [m]
-  double vertical_speed = 0.0;  // |v_z| of the ball at the end [m/s]
-  double radius = 0.0;          // of the sampled sphere [m]
+  double depth = 0.0;                       // at the end [m]
+  double expected_depth = 0.0;              // [m]
+  double vertical_speed = 0.0;              // |v_z| of the ball at the end [m/s]
+  double radius = 0.0;                      // of the sampled sphere [m]
   std::vector<double> time, depth_history;  // every 0.01 s [s], [m]
   std::size_t particles = 0;
 };

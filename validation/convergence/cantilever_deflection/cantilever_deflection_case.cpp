@@ -13,8 +13,8 @@ CaseResult run_cantilever_convergence_case(const CaseContext& context) {
     return skipped;
   }
   // 3, 4, 5 (quick) or 4, 6, 8 particles across the 4 cm section.
-  const std::vector<double> spacing = context.quick ? std::vector<double>{0.04 / 3.0, 0.01, 0.008}
-                                                    : std::vector<double>{0.01, 0.04 / 6.0, 0.005};
+  const std::vector<double> spacing =
+      context.quick ? std::vector<double>{0.04 / 3.0, 0.01, 0.008} : std::vector<double>{0.01, 0.04 / 6.0, 0.005};
   std::vector<double> expected, measured, final_speed, rest_speed;
   for (double dx : spacing) {
     // Kernel-gradient correction on: with the default gradient the loaded beam has no static
@@ -29,13 +29,16 @@ CaseResult run_cantilever_convergence_case(const CaseContext& context) {
     rest_speed.push_back(m.rest_speed);
   }
   // 15 %: the physics case's tolerance.
-  CaseResult result = convergence_result("tip deflection vs Timoshenko", spacing, expected, measured, 0.15, context.physics_backend);
+  CaseResult result =
+      convergence_result("tip deflection vs Timoshenko", spacing, expected, measured, 0.15, context.physics_backend);
   // A sag read off a beam still moving is no static deflection: settled within 1 %, as in physics/cantilever.
   result.details += " signed errors (measured / Timoshenko - 1):";
-  for (std::size_t k = 0; k < spacing.size(); ++k) result.details += " " + std::to_string(measured[k] / expected[k] - 1.0) + ";";
+  for (std::size_t k = 0; k < spacing.size(); ++k)
+    result.details += " " + std::to_string(measured[k] / expected[k] - 1.0) + ";";
   for (std::size_t k = 0; k < spacing.size(); ++k) {
-    result.checks.push_back(bound_check("fastest particle at the end (at rest), dx = " + exact(spacing[k]).substr(0, 7) + " m",
-                                        "m/s", final_speed[k], rest_speed[k]));
+    result.checks.push_back(
+        bound_check("fastest particle at the end (at rest), dx = " + exact(spacing[k]).substr(0, 7) + " m", "m/s",
+                    final_speed[k], rest_speed[k]));
     result.checks.back().backend = context.physics_backend;
   }
   result.resolution = "the physics/cantilever beam at three spacings, dt = 0.2 h / c_p, kernel-gradient correction on";

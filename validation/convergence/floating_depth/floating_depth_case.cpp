@@ -14,8 +14,8 @@ CaseResult run_floating_convergence_case(const CaseContext& context) {
   }
   // Not 4 or 5 cm: there the measurement finds no free-surface particle beyond the sphere's
   // meniscus (R + 2 dx from its axis) in the 36 cm tank.
-  const std::vector<double> spacing = context.quick ? std::vector<double>{0.2 / 6.0, 0.2 / 7.0, 0.025}
-                                                    : std::vector<double>{0.02, 0.2 / 14.0, 0.01};
+  const std::vector<double> spacing =
+      context.quick ? std::vector<double>{0.2 / 6.0, 0.2 / 7.0, 0.025} : std::vector<double>{0.02, 0.2 / 14.0, 0.01};
   const Scene base = case_scene("physics/archimedes");
   std::vector<double> expected, measured;
   for (double dx : spacing) {

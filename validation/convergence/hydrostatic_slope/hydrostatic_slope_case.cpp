@@ -27,8 +27,8 @@ CaseResult run_hydrostatic_convergence_case(const CaseContext& context) {
   }
   // Quick: 6, 8 and 10 particles across the 20 cm tank; coarser spacings leave fewer than 3
   // interior slabs between h above the floor and 2 h below the surface (README.md).
-  const std::vector<double> spacing = context.quick ? std::vector<double>{0.2 / 6.0, 0.025, 0.02}
-                                                    : std::vector<double>{0.02, 0.2 / 14.0, 0.01};
+  const std::vector<double> spacing =
+      context.quick ? std::vector<double>{0.2 / 6.0, 0.025, 0.02} : std::vector<double>{0.02, 0.2 / 14.0, 0.01};
   const Scene base = case_scene("physics/hydrostatic");
   const Eigen::Vector3d column = base.find_body("column")->position;
   std::vector<double> expected, measured, standard_error;

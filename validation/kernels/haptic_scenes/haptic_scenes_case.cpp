@@ -18,7 +18,8 @@ CaseResult run_haptic_scenes_case(const CaseContext& context) {
   // 2 % for the rigid and deformable media, 5 % for the fluid: the sphere drops' bounds.
   const std::vector<SceneCase> scenes{{"tap", 0.75, 0.02}, {"squeeze", 0.8, 0.02}, {"stir", 1.0, 0.05}};
   const std::string spacing = context.quick ? "0.04" : "0.02";
-  result.resolution = context.quick ? "dx = 4 cm, cut after the motion (0.75, 0.8, 1.0 s)" : "dx = 2 cm, the scenes' full durations";
+  result.resolution =
+      context.quick ? "dx = 4 cm, cut after the motion (0.75, 0.8, 1.0 s)" : "dx = 2 cm, the scenes' full durations";
   const std::string work_dir = context.work_dir + "/haptic_scenes";
   std::filesystem::create_directories(work_dir);
   for (const std::string& backend : context.fast_backends) {
@@ -39,7 +40,9 @@ CaseResult run_haptic_scenes_case(const CaseContext& context) {
         c.backend = backend;
         result.checks.push_back(std::move(c));
       }
-      result.series.push_back({backend + "_" + s.name + "_force", "time [s]", a.time,
+      result.series.push_back({backend + "_" + s.name + "_force",
+                               "time [s]",
+                               a.time,
                                {{"reference |F| [N]", a.force_reference}, {backend + " |F| [N]", a.force_candidate}}});
     }
   }

@@ -52,7 +52,8 @@ std::vector<std::string> one_step_scene_names() { return {"fluid", "rigid", "def
 
 OneStepScene one_step_scene(const std::string& name) {
   const bool far = name == "mixed_far";
-  OneStepScene scene{name, read_json(validation_file("kernels/one_step/" + (far ? std::string("mixed") : name) + ".json"))};
+  OneStepScene scene{name,
+                     read_json(validation_file("kernels/one_step/" + (far ? std::string("mixed") : name) + ".json"))};
   scene.deform = name == "deformable" || name == "mixed" || far;
   // No rotation in the mixed scenes: the jelly must stay clear of the water and the walls.
   scene.rotate_degrees = name == "deformable" ? 25.0 : 0.0;
@@ -81,7 +82,8 @@ OneStepErrors one_step_errors(const std::string& backend, const OneStepScene& sc
     std::mt19937_64 random(seed + 1);
     std::uniform_real_distribution<double> shake(-0.02 * setup.spacing, 0.02 * setup.spacing);
     const Eigen::Matrix3d rotation =
-        Eigen::AngleAxisd(scene.rotate_degrees * std::numbers::pi / 180.0, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+        Eigen::AngleAxisd(scene.rotate_degrees * std::numbers::pi / 180.0, Eigen::Vector3d(1, 2, 3).normalized())
+            .toRotationMatrix();
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
     double count = 0.0;
     for (std::size_t i = 0; i < setup.size(); ++i) {

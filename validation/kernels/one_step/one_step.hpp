@@ -12,8 +12,8 @@ namespace mssph::validation {
 
 struct OneStepScene {
   std::string name;
-  nlohmann::json document;     // a scene in the ordinary format; its seed is replaced per run
-  bool deform = false;         // stretch, rotate and shake the deformable particles before evaluating
+  nlohmann::json document;      // a scene in the ordinary format; its seed is replaced per run
+  bool deform = false;          // stretch, rotate and shake the deformable particles before evaluating
   double rotate_degrees = 0.0;  // the rotation of that deformation
 };
 

@@ -17,7 +17,8 @@ struct ProxyTrack {
   std::vector<Eigen::Vector3d> position;
 };
 
-ProxyTrack track_proxy(const std::string& backend_name, const ParticleSetup& setup, std::size_t proxy, std::size_t steps) {
+ProxyTrack track_proxy(const std::string& backend_name, const ParticleSetup& setup, std::size_t proxy,
+                       std::size_t steps) {
   std::unique_ptr<Backend> backend = make_backend(backend_name, setup);
   ProxyTrack track;
   for (std::size_t s = 0; s < steps; ++s) {
@@ -37,13 +38,16 @@ std::string text(double x) {
 
 }  // namespace
 
-ParticleSetup shipped_scene(const std::string& config, double spacing, double duration, const std::vector<std::string>& extra) {
-  std::vector<std::string> overrides{"simulation/particle_spacing=" + text(spacing), "simulation/duration=" + text(duration)};
+ParticleSetup shipped_scene(const std::string& config, double spacing, double duration,
+                            const std::vector<std::string>& extra) {
+  std::vector<std::string> overrides{"simulation/particle_spacing=" + text(spacing),
+                                     "simulation/duration=" + text(duration)};
   overrides.insert(overrides.end(), extra.begin(), extra.end());
   return build_particles(load_scene(std::string(MSSPH_SOURCE_DIR) + "/configs/" + config, overrides));
 }
 
-DropAgreement drop_agreement(const std::string& backend, const ParticleSetup& setup, std::size_t proxy, std::size_t steps) {
+DropAgreement drop_agreement(const std::string& backend, const ParticleSetup& setup, std::size_t proxy,
+                             std::size_t steps) {
   const ProxyTrack reference = track_proxy("reference", setup, proxy, steps);
   const ProxyTrack candidate = track_proxy(backend, setup, proxy, steps);
   DropAgreement result;

@@ -20,12 +20,13 @@ struct DropAgreement {
   double force_error = 0.0;  // NRMS of the interaction force, over the reference's peak force
   double path_error = 0.0;   // NRMS of the displacement, over the farthest the reference travels
   double travel = 0.0;       // that farthest displacement [m]
-  std::vector<double> time;                     // [s]
+  std::vector<double> time;  // [s]
   std::vector<double> force_reference, force_candidate;  // z component of the interaction force [N]
 };
 
 // Runs `steps` steps of the setup on the reference and on `backend`, tracking body `proxy`.
-DropAgreement drop_agreement(const std::string& backend, const ParticleSetup& setup, std::size_t proxy, std::size_t steps);
+DropAgreement drop_agreement(const std::string& backend, const ParticleSetup& setup, std::size_t proxy,
+                             std::size_t steps);
 
 // Bounds (set before measuring, as in the unit test): 2 % NRMS for the rigid and deformable
 // drops; 5 % for the fluid drop, as splashing fluid is chaotic and float32 rounding grows into

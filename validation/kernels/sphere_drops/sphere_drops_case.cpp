@@ -38,7 +38,9 @@ CaseResult run_sphere_drops_case(const CaseContext& context) {
         }
         result.checks.push_back(std::move(c));
       }
-      result.series.push_back({backend + "_" + medium + "_drop_force", "time [s]", a.time,
+      result.series.push_back({backend + "_" + medium + "_drop_force",
+                               "time [s]",
+                               a.time,
                                {{"reference F_z [N]", a.force_reference}, {backend + " F_z [N]", a.force_candidate}}});
     }
   }

@@ -16,13 +16,16 @@ CaseResult run_archimedes_case(const CaseContext& context) {
   for (const double density : {500.0, 700.0}) {
     std::vector<std::string> overrides = resolution_overrides(base, dx);
     overrides.push_back("bodies/ball/density=" + exact(density));
-    const FloatingMeasurement m = measure_floating(context.physics_backend, case_scene("physics/archimedes", overrides));
+    const FloatingMeasurement m =
+        measure_floating(context.physics_backend, case_scene("physics/archimedes", overrides));
     const std::string label = "density " + std::to_string(static_cast<int>(density)) + ": ";
     result.checks.push_back(relative_check(label + "depth below the surface", "m", m.expected_depth, m.depth, 0.10));
     result.checks.push_back(bound_check(label + "|v_z| at the end (settled)", "m/s", m.vertical_speed, 0.02));
     result.resolution = "dx = " + exact(dx) + " m, h = 2 dx, sphere radius " + exact(m.radius) + " m as sampled, " +
                         std::to_string(m.particles) + " particles";
-    result.series.push_back({"depth_" + std::to_string(static_cast<int>(density)), "time [s]", m.time,
+    result.series.push_back({"depth_" + std::to_string(static_cast<int>(density)),
+                             "time [s]",
+                             m.time,
                              {{"measured depth [m]", m.depth_history},
                               {"Archimedes depth [m]", std::vector<double>(m.time.size(), m.expected_depth)}}});
   }

@@ -2,8 +2,8 @@
 
 #include "elastic_forces.hpp"
 #include "framework/backends.hpp"
-#include "physics/elastic_bodies.hpp"
 #include "model/scene_builder.hpp"
+#include "physics/elastic_bodies.hpp"
 
 #include <cmath>
 
@@ -14,7 +14,8 @@ reference::ReferenceBackend stretched_bar(double damping) {
   reference::ReferenceBackend backend(build_particles(scene));
   const double e = 0.01;
   const double nu = scene.bodies.front().material.poisson_ratio;
-  deform_body(backend, 0, Eigen::Vector3d(1.0 + e, 1.0 - nu * e, 1.0 - nu * e).asDiagonal(), scene.bodies.front().position);
+  deform_body(backend, 0, Eigen::Vector3d(1.0 + e, 1.0 - nu * e, 1.0 - nu * e).asDiagonal(),
+              scene.bodies.front().position);
   return backend;
 }
 

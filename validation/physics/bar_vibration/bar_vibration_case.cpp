@@ -20,9 +20,11 @@ CaseResult run_bar_vibration_case(const CaseContext&) {
   const BarHistory damped = run_bar(damped_bar, 4.0 * period);
   // 5 %: the fit over a decay rippled at twice the vibration frequency (gamma / omega = 0.05),
   // and the explicit damping's first-order error gamma dt / 2 = 0.08 %.
-  result.checks.push_back(relative_check("energy decay rate with damping 5 /s", "1/s", gamma, -energy_decay_rate(damped), 0.05));
+  result.checks.push_back(
+      relative_check("energy decay rate with damping 5 /s", "1/s", gamma, -energy_decay_rate(damped), 0.05));
   for (Check& c : result.checks) c.backend = "reference";
-  result.series.push_back({"elongation", "time [s]", history.time, {{"end-to-end elongation [m]", history.elongation}}});
+  result.series.push_back(
+      {"elongation", "time [s]", history.time, {{"end-to-end elongation [m]", history.elongation}}});
   result.series.push_back({"energy", "time [s]", history.time, {{"total energy, no damping [J]", history.energy}}});
   return result;
 }

@@ -37,7 +37,7 @@ CantileverBeam cantilever_beam();
 Scene cantilever_scene(const CantileverBeam& beam, double dx, double damping, double duration, bool correction);
 
 struct CantileverMeasurement {
-  double tip = 0.0;             // mean deflection of the last particle layer [m]
+  double tip = 0.0;              // mean deflection of the last particle layer [m]
   double euler_bernoulli = 0.0;  // w at that layer's x = L - dx / 2 [m]
   // Timoshenko's shear deflection there, q (L x - x^2 / 2) / (kappa G A) with kappa = 5/6
   // (Timoshenko and Gere; rectangular section) [m]

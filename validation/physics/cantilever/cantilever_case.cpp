@@ -16,10 +16,13 @@ CaseResult run_cantilever_case(const CaseContext& context) {
     const std::string label = correction ? "with gradient correction" : "uncorrected";
     result.checks.push_back(relative_check("tip deflection, " + label, "m", m.euler_bernoulli, m.tip, 0.15));
     // The sag above is a static one only if the beam has settled: within 1 % (cantilever.hpp).
-    result.checks.push_back(bound_check("fastest particle at the end (at rest), " + label, "m/s", m.final_max_speed, m.rest_speed));
+    result.checks.push_back(
+        bound_check("fastest particle at the end (at rest), " + label, "m/s", m.final_max_speed, m.rest_speed));
     result.resolution = "dx = " + exact(dx) + " m, h = 2 dx, " + std::to_string(m.particles) + " particles, " +
                         std::to_string(m.steps) + " steps";
-    result.series.push_back({std::string("deflection_") + (correction ? "corrected" : "uncorrected"), "x along the beam [m]", m.x,
+    result.series.push_back({std::string("deflection_") + (correction ? "corrected" : "uncorrected"),
+                             "x along the beam [m]",
+                             m.x,
                              {{"measured sag w(x) [m]", m.deflection}, {"Euler-Bernoulli w(x) [m]", m.expected}}});
   }
   for (Check& c : result.checks) c.backend = context.physics_backend;

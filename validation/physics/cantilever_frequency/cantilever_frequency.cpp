@@ -1,8 +1,8 @@
 #include "cantilever_frequency.hpp"
 
 #include "backend_factory/backend_factory.hpp"
-#include "physics/cantilever/cantilever.hpp"
 #include "model/scene_builder.hpp"
+#include "physics/cantilever/cantilever.hpp"
 
 #include <algorithm>
 #include <cmath>

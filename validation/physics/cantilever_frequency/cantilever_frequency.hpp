@@ -32,6 +32,7 @@ struct CantileverVibration {
 // The beam of physics/cantilever at spacing dx (dt = 0.2 h / c_p), without damping, released
 // straight and at rest under gravity, run for `periods` Euler-Bernoulli periods; the tip's sag
 // is sampled about 200 times a period.
-CantileverVibration measure_cantilever_vibration(const std::string& backend, double dx, bool correction, double periods);
+CantileverVibration measure_cantilever_vibration(const std::string& backend, double dx, bool correction,
+                                                 double periods);
 
 }  // namespace mssph::validation

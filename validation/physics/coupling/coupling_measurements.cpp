@@ -42,7 +42,8 @@ StepResponse translation_step_response() {
   Pose device;
   device.position = Eigen::Vector3d(step, 0.0, 0.0);
   test::RigidBodyDouble body(mass, 1.0, kDt);
-  const auto samples = test::run_session(held_device(device, {stiffness, damping, 0.0, 0.0}), body, mass, 1.0, kDt, 2.0);
+  const auto samples =
+      test::run_session(held_device(device, {stiffness, damping, 0.0, 0.0}), body, mass, 1.0, kDt, 2.0);
   StepResponse r;
   double peak = 0.0;
   for (const HapticSample& s : samples) {
@@ -66,7 +67,8 @@ StepResponse rotation_step_response() {
   Pose device;
   device.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis));
   test::RigidBodyDouble body(1.0, inertia, kDt);
-  const auto samples = test::run_session(held_device(device, {0.0, 0.0, stiffness, damping}), body, 1.0, inertia, kDt, 2.0);
+  const auto samples =
+      test::run_session(held_device(device, {0.0, 0.0, stiffness, damping}), body, 1.0, inertia, kDt, 2.0);
   StepResponse r;
   double peak = 0.0;
   for (const HapticSample& s : samples) {

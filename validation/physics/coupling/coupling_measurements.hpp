@@ -19,10 +19,10 @@ HapticsConfig held_device(const Pose& pose, const SpringDamperGains& gains);
 
 struct StepResponse {
   double overshoot = 0.0;
-  double predicted_low = 0.0;   // continuous coupling
-  double predicted_high = 0.0;  // with the half-period hold
-  double final_error = 0.0;     // |final - target| / step
-  double off_axis = 0.0;        // translation: |y| at the end [m]
+  double predicted_low = 0.0;          // continuous coupling
+  double predicted_high = 0.0;         // with the half-period hold
+  double final_error = 0.0;            // |final - target| / step
+  double off_axis = 0.0;               // translation: |y| at the end [m]
   std::vector<double> time, response;  // position along the step [m] or angle about the axis [rad]
 };
 StepResponse translation_step_response();  // 5 cm along x, proxy 1 kg

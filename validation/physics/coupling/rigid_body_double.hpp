@@ -1,10 +1,10 @@
 #pragma once
 // A stand-in for mssph::Backend, for the coupling cases and tests: one free rigid body (index 0)
 // with isotropic inertia and no particles, so the haptic loop can be tested in milliseconds.
-// Under a constant wrench over a step it moves exactly (x += v dt + F/(2m) dt^2; a fixed rotation axis turns by the mean angular
-// velocity). An optional penalty floor stands in for the SPH interaction forces of a contact.
-#include "util/pose.hpp"
+// Under a constant wrench over a step it moves exactly (x += v dt + F/(2m) dt^2; a fixed rotation axis turns by the
+// mean angular velocity). An optional penalty floor stands in for the SPH interaction forces of a contact.
 #include "backend/backend.hpp"
+#include "util/pose.hpp"
 
 #include <optional>
 #include <stdexcept>
@@ -66,8 +66,8 @@ class RigidBodyDouble final : public Backend {
   StateArrays save_state() override {
     StateArrays state;
     const Eigen::Quaterniond& q = pose.orientation;
-    state.put("motion", std::vector<double>{pose.position.x(), pose.position.y(), pose.position.z(), q.x(), q.y(), q.z(),
-                                            q.w(), twist.linear.x(), twist.linear.y(), twist.linear.z(),
+    state.put("motion", std::vector<double>{pose.position.x(), pose.position.y(), pose.position.z(), q.x(), q.y(),
+                                            q.z(), q.w(), twist.linear.x(), twist.linear.y(), twist.linear.z(),
                                             twist.angular.x(), twist.angular.y(), twist.angular.z()});
     state.put("external", std::vector<double>{external_.force.x(), external_.force.y(), external_.force.z(),
                                               external_.torque.x(), external_.torque.y(), external_.torque.z()});

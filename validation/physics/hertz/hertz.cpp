@@ -1,7 +1,7 @@
 #include "hertz.hpp"
 
-#include "reference_backend.hpp"
 #include "model/scene_builder.hpp"
+#include "reference_backend.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -99,7 +99,8 @@ Indentation press_indenter(const Scene& scene, double speed, double deepest) {
     }
     backend.step();
     double force = 0.0;
-    for (std::size_t i = blk.first; i < blk.first + blk.count; ++i) force -= backend.particles().interaction_force[i].z();
+    for (std::size_t i = blk.first; i < blk.first + blk.count; ++i)
+      force -= backend.particles().interaction_force[i].z();
     curve.depth.push_back(static_cast<double>(s) * speed * dt - gap);
     curve.force.push_back(force);
   }
@@ -131,7 +132,8 @@ HertzFit fit_hertz(const Indentation& curve, double d_min, double d_max) {
 
 double hertz_prefactor(const Scene& scene) {
   const Material& m = body(scene, "block").material;
-  return 4.0 / 3.0 * m.young_modulus / (1.0 - m.poisson_ratio * m.poisson_ratio) * std::sqrt(body(scene, "indenter").shape.radius);
+  return 4.0 / 3.0 * m.young_modulus / (1.0 - m.poisson_ratio * m.poisson_ratio) *
+         std::sqrt(body(scene, "indenter").shape.radius);
 }
 
 }  // namespace mssph::validation

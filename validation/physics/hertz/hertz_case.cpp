@@ -16,7 +16,8 @@ CaseResult run_hertz_case(const CaseContext&) {
   const HertzFit fit = fit_hertz(curve, kHertzShallowest * dx, kHertzDeepest * dx);
   const double hertz = hertz_prefactor(scene);
   CaseResult result;
-  result.resolution = "dx = 1 cm, h = 2 dx, sphere R = 12.5 dx, block 33 x 33 x 16 particles, fit over d = 0.5 to 2.5 dx";
+  result.resolution =
+      "dx = 1 cm, h = 2 dx, sphere R = 12.5 dx, block 33 x 33 x 16 particles, fit over d = 0.5 to 2.5 dx";
   result.checks.push_back(absolute_check("exponent of F(d)", "-", 1.5, fit.exponent, 0.15));
   result.checks.push_back(relative_check("prefactor C of F = C d^1.5", "N/m^1.5", hertz, fit.prefactor, 0.25));
   if (!(fit.min_force > 0.0)) {
@@ -26,7 +27,9 @@ CaseResult run_hertz_case(const CaseContext&) {
   for (Check& c : result.checks) c.backend = "reference";
   std::vector<double> expected;
   for (double d : curve.depth) expected.push_back(d > 0.0 ? hertz * std::pow(d, 1.5) : 0.0);
-  result.series.push_back({"force_depth", "indentation d [m]", curve.depth,
+  result.series.push_back({"force_depth",
+                           "indentation d [m]",
+                           curve.depth,
                            {{"measured F [N]", curve.force}, {"Hertz 4/3 E* sqrt(R) d^1.5 [N]", expected}},
                            true});
   return result;

@@ -25,7 +25,9 @@ CaseResult run_hydrostatic_case(const CaseContext& context) {
   for (Check& c : result.checks) c.backend = context.physics_backend;
   std::vector<double> expected;
   for (double z : m.height) expected.push_back(m.weight_per_area + m.expected_slope * z);
-  result.series.push_back({"pressure_profile", "height above the floor z [m]", m.height,
+  result.series.push_back({"pressure_profile",
+                           "height above the floor z [m]",
+                           m.height,
                            {{"measured slab pressure [Pa]", m.pressure}, {"M g / A - rho0 g z [Pa]", expected}}});
   return result;
 }

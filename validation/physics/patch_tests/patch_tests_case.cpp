@@ -1,7 +1,7 @@
 // Physics case: uniaxial stress, uniaxial strain and simple shear patch tests (README.md beside
 // this file). Reference backend: the stresses are the reference's internal state.
-#include "model/material_law.hpp"
 #include "framework/case_functions.hpp"
+#include "model/material_law.hpp"
 #include "physics/elastic_statics.hpp"
 
 namespace mssph::validation {
@@ -15,8 +15,9 @@ double xy(const Eigen::Matrix3d& s) { return s(0, 1); }
 
 CaseResult run_patch_tests_case(const CaseContext&) {
   CaseResult result;
-  result.resolution = "dx = 1 cm, h = 2 dx, 10^3 particles, kernel-gradient correction on; stresses at the interior "
-                      "particles (at least h from every face); strain 1e-3";
+  result.resolution =
+      "dx = 1 cm, h = 2 dx, 10^3 particles, kernel-gradient correction on; stresses at the interior "
+      "particles (at least h from every face); strain 1e-3";
   const Material& m = case_scene("physics/patch_tests").bodies.front().material;
   const double young = m.young_modulus;
   const double lambda = lame_lambda(m);
@@ -48,7 +49,8 @@ CaseResult run_patch_tests_case(const CaseContext&) {
   reference::ReferenceBackend block = patch_block(true, "green_saint_venant");
   const auto s = interior_stresses(block, Eigen::Vector3d(1.0 + e, 1.0, 1.0).asDiagonal());
   result.checks.push_back(relative_check("uniaxial strain: sigma_xx / ((lambda + 2 mu) e), worst", "-", 1.0,
-                                         farthest_from(s, (lambda + 2.0 * mu) * e, xx) / ((lambda + 2.0 * mu) * e), tolerance));
+                                         farthest_from(s, (lambda + 2.0 * mu) * e, xx) / ((lambda + 2.0 * mu) * e),
+                                         tolerance));
   result.checks.push_back(relative_check("uniaxial strain: sigma_yy / (lambda e), worst", "-", 1.0,
                                          farthest_from(s, lambda * e, yy) / (lambda * e), tolerance));
   for (Check& c : result.checks) c.backend = "reference";

@@ -11,9 +11,9 @@
 namespace mssph::validation {
 
 struct SpinMeasurement {
-  double worst_momentum_error = 0.0;  // max over samples of |L - L0| / |L0|
-  double worst_energy_drift = 0.0;    // max over samples of |E - E0| / E0
-  double largest_turn_degrees = 0.0;  // how far omega in body axes swung from its start: did it tumble?
+  double worst_momentum_error = 0.0;   // max over samples of |L - L0| / |L0|
+  double worst_energy_drift = 0.0;     // max over samples of |E - E0| / E0
+  double largest_turn_degrees = 0.0;   // how far omega in body axes swung from its start: did it tumble?
   double final_linear_momentum = 0.0;  // |p| at the end [kg m/s]
   std::vector<double> time, momentum_error, energy_drift;
 };

@@ -24,8 +24,8 @@ CaseResult run_torque_free_spin_case(const CaseContext& context) {
       range_check("body-axis omega turned (it tumbled)", "deg", 90.0, 180.0, m.largest_turn_degrees),
       bound_check("|p| at the end (nothing pushed it)", "kg m/s", m.final_linear_momentum, float64 ? 1e-12 : 1e-6)};
   for (Check& c : result.checks) c.backend = context.physics_backend;
-  result.series.push_back({"conservation", "time [s]", m.time,
-                           {{"|L - L0| / |L0|", m.momentum_error}, {"|E - E0| / E0", m.energy_drift}}});
+  result.series.push_back(
+      {"conservation", "time [s]", m.time, {{"|L - L0| / |L0|", m.momentum_error}, {"|E - E0| / E0", m.energy_drift}}});
   return result;
 }
 

@@ -1,0 +1,2 @@
+// Fixture: a file out of the tree's clang-format style.
+int  misformatted( int x ){return x*2;}
