@@ -52,6 +52,10 @@ void add_machine_context() {
     benchmark::AddCustomContext("mssph_test_step_delay_us",
                                 std::to_string(delay * 1e6) + " (test hook: not a real measurement)");
   }
+  if (const std::size_t every = extra_step_interval(); every != 0) {
+    benchmark::AddCustomContext("mssph_test_extra_step_every",
+                                std::to_string(every) + " (test hook: not a real measurement)");
+  }
 }
 
 }  // namespace mssph::bench

@@ -8,6 +8,7 @@
 #include "haptics/haptics_run.hpp"
 #include "haptics/haptics_session.hpp"
 #include "haptics/virtual_coupling.hpp"
+#include "instruction_counts.hpp"
 #include "machine_calibration.hpp"
 #include "mixed_scene.hpp"
 #include "model/block_scene.hpp"
@@ -28,25 +29,42 @@ namespace {
 
 constexpr int kBatch = 50;   // steps per timed iteration
 constexpr int kWarmUp = 20;  // steps before timing: graph upload, caches, first grid
+// Units of work in a counted region: enough steps to cover several neighbour-list rebuilds, and
+// ticks to make the tick's count stand above the region's own overhead.
+constexpr std::size_t kCountedSteps = 20;
+constexpr std::size_t kCountedTicks = 2000;
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // A scene being stepped as `mssph run` steps it: the haptic session (when the scene has a proxy)
-// sets the coupling wrench before each step.
+// sets the coupling wrench before each step. `state` (null when counting) receives the device
+// memory counter.
 class SteppedScene {
  public:
-  SteppedScene(const Scene& scene, const std::string& backend_name, benchmark::State& state) {
+  SteppedScene(const Scene& scene, const std::string& backend_name, benchmark::State* state) {
     ParticleSetup setup = build_particles(scene);
     particles_ = static_cast<double>(setup.size());
     if (scene.proxy) haptics_.emplace(scene.proxy->haptics, proxy_model_of(scene, setup), scene.simulation.dt);
-    if (const std::optional<std::size_t> bytes = backend_device_bytes(backend_name, setup)) {
-      state.counters["device_bytes_per_particle"] = static_cast<double>(*bytes) / particles_;
+    if (const std::optional<std::size_t> bytes = backend_device_bytes(backend_name, setup); bytes && state) {
+      state->counters["device_bytes_per_particle"] = static_cast<double>(*bytes) / particles_;
     }
     backend_ = make_backend(backend_name, std::move(setup));
   }
 
+  // One step, and with the MSSPH_BENCH_EXTRA_STEP_EVERY test hook an extra one every N.
   void step() {
+    advance();
+    if (extra_every_ != 0 && ++requested_ % extra_every_ == 0) advance();
+  }
+
+  Backend& backend() { return *backend_; }
+  double particles() const { return particles_; }
+  bool coupled() const { return haptics_.has_value(); }
+  double last_coupling_seconds() const { return last_coupling_seconds_; }
+
+ private:
+  void advance() {
     if (haptics_) {
       const auto start = Clock::now();
       haptics_->before_step(*backend_, steps_);
@@ -56,14 +74,10 @@ class SteppedScene {
     ++steps_;
   }
 
-  Backend& backend() { return *backend_; }
-  double particles() const { return particles_; }
-  bool coupled() const { return haptics_.has_value(); }
-  double last_coupling_seconds() const { return last_coupling_seconds_; }
-
- private:
   std::unique_ptr<Backend> backend_;
   std::optional<HapticsSession> haptics_;
+  std::size_t extra_every_ = extra_step_interval();
+  std::size_t requested_ = 0;
   std::size_t steps_ = 0;
   double particles_ = 0.0;
   double last_coupling_seconds_ = 0.0;
@@ -71,7 +85,7 @@ class SteppedScene {
 
 void time_steps(benchmark::State& state, const Scene& scene, const std::string& backend_name) {
   const double delay = step_delay_seconds();
-  SteppedScene sim(scene, backend_name, state);
+  SteppedScene sim(scene, backend_name, &state);
   for (int k = 0; k < kWarmUp; ++k) sim.step();
   sim.backend().synchronize();
   std::vector<std::string> phases = sim.backend().phase_names();
@@ -121,27 +135,64 @@ void time_steps(benchmark::State& state, const Scene& scene, const std::string& 
 }
 
 // One haptic tick as the haptic thread runs it: read the proxy's state back from the backend,
-// evaluate the virtual coupling against a handle held 1 cm above it, hand the wrench back.
-void time_haptic_tick(benchmark::State& state, const std::string& backend_name) {
-  const Scene scene = mixed_scene(2000);
-  SteppedScene sim(scene, backend_name, state);
-  for (int k = 0; k < kWarmUp; ++k) sim.step();
-  sim.backend().synchronize();
-  const ProxyModel proxy = proxy_model_of(scene, build_particles(scene));
-  const SpringDamperGains& gains = scene.proxy->haptics.coupling;
-  const BodyState start = sim.backend().rigid_body_state(proxy.body);
-  Pose handle;
-  handle.position = start.centre_of_mass + Eigen::Vector3d(0.0, 0.0, 0.01);
-  const double delay = step_delay_seconds();
-  for (auto _ : state) {
-    const BodyState s = sim.backend().rigid_body_state(proxy.body);
+// evaluate the virtual coupling against a handle held 1 cm above it, hand the wrench back. With the
+// MSSPH_BENCH_EXTRA_STEP_EVERY test hook, an extra tick every N.
+class TickedProxy {
+ public:
+  TickedProxy(const std::string& backend_name, benchmark::State* state)
+      : scene_(mixed_scene(2000)),
+        sim_(scene_, backend_name, state),
+        proxy_(proxy_model_of(scene_, build_particles(scene_))) {
+    for (int k = 0; k < kWarmUp; ++k) sim_.step();
+    sim_.backend().synchronize();
+    handle_.position = sim_.backend().rigid_body_state(proxy_.body).centre_of_mass + Eigen::Vector3d(0.0, 0.0, 0.01);
+  }
+
+  void tick() {
+    evaluate();
+    if (extra_every_ != 0 && ++requested_ % extra_every_ == 0) evaluate();
+  }
+
+  double particles() const { return sim_.particles(); }
+
+ private:
+  void evaluate() {
+    const BodyState s = sim_.backend().rigid_body_state(proxy_.body);
     const Pose pose{s.centre_of_mass, s.orientation};
     const Twist twist{s.linear_momentum / s.mass, s.angular_velocity};
-    const Wrench w = spring_damper_wrench(gains, handle, Twist{}, pose, twist);
-    sim.backend().set_external_wrench(proxy.body, w.force, w.torque);
+    const Wrench w = spring_damper_wrench(scene_.proxy->haptics.coupling, handle_, Twist{}, pose, twist);
+    sim_.backend().set_external_wrench(proxy_.body, w.force, w.torque);
+  }
+
+  Scene scene_;
+  SteppedScene sim_;
+  ProxyModel proxy_;
+  Pose handle_;
+  std::size_t extra_every_ = extra_step_interval();
+  std::size_t requested_ = 0;
+};
+
+void time_haptic_tick(benchmark::State& state, const std::string& backend_name) {
+  TickedProxy proxy(backend_name, &state);
+  const double delay = step_delay_seconds();
+  for (auto _ : state) {
+    proxy.tick();
     busy_wait(delay);
   }
-  state.counters["particles"] = sim.particles();
+  state.counters["particles"] = proxy.particles();
+}
+
+// The counted twins of time_steps and time_haptic_tick: the same set-up and warm-up, then a fixed
+// number of steps or ticks, so that a count is the same in every run of the same build.
+void count_steps(const CountedRegion& region, const Scene& scene, const std::string& backend_name) {
+  SteppedScene sim(scene, backend_name, nullptr);
+  for (int k = 0; k < kWarmUp; ++k) sim.step();
+  region.measure(kCountedSteps, [&] { sim.step(); });
+}
+
+void count_haptic_ticks(const CountedRegion& region, const std::string& backend_name) {
+  TickedProxy proxy(backend_name, nullptr);
+  region.measure(kCountedTicks, [&] { proxy.tick(); });
 }
 
 std::vector<long> sizes_for(const std::string& backend) {
@@ -180,10 +231,18 @@ void register_suite(const std::vector<std::string>& backends) {
                                      })
             ->UseManualTime()
             ->Unit(benchmark::kMicrosecond);
+        if (!backend_runs_on_gpu(backend)) {
+          add_counted_workload(name, [backend, scene_of, n](const CountedRegion& region) {
+            count_steps(region, scene_of(static_cast<std::size_t>(n)), backend);
+          });
+        }
       }
     }
-    benchmark::RegisterBenchmark(("haptic_tick/" + backend).c_str(), time_haptic_tick, backend)
-        ->Unit(benchmark::kMicrosecond);
+    const std::string tick = "haptic_tick/" + backend;
+    benchmark::RegisterBenchmark(tick.c_str(), time_haptic_tick, backend)->Unit(benchmark::kMicrosecond);
+    if (!backend_runs_on_gpu(backend)) {
+      add_counted_workload(tick, [backend](const CountedRegion& region) { count_haptic_ticks(region, backend); });
+    }
   }
 }
 
@@ -196,6 +255,9 @@ void register_scene_benchmark(const std::string& scene_path, const std::vector<s
                                [scene, backend](benchmark::State& state) { time_steps(state, scene, backend); })
       ->UseManualTime()
       ->Unit(benchmark::kMicrosecond);
+  if (!backend_runs_on_gpu(backend)) {
+    add_counted_workload(name, [scene, backend](const CountedRegion& region) { count_steps(region, scene, backend); });
+  }
 }
 
 }  // namespace mssph::bench

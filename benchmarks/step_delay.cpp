@@ -2,6 +2,7 @@
 
 #include "util/errors.hpp"
 
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <string>
@@ -17,6 +18,18 @@ double step_delay_seconds() {
     throw InputError(std::string(kStepDelayVariable) + "=" + text + ": expected a non-negative number of microseconds");
   }
   return microseconds * 1e-6;
+}
+
+std::size_t extra_step_interval() {
+  const char* text = std::getenv(kExtraStepVariable);
+  if (text == nullptr || *text == '\0') return 0;
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long n = std::strtoull(text, &end, 10);
+  if (*end != '\0' || *text == '-' || errno == ERANGE || n == 0) {
+    throw InputError(std::string(kExtraStepVariable) + "=" + text + ": expected a positive whole number of steps");
+  }
+  return static_cast<std::size_t>(n);
 }
 
 void busy_wait(double seconds) {

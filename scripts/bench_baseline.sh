@@ -1,22 +1,20 @@
 #!/usr/bin/env bash
-# Makes the CPU baseline of the benchmark gate on this machine and the noise study that sets the
-# gate's threshold. Run it on a QUIET machine (nothing else running), after scripts/build.sh:
+# Makes the CPU baseline of the benchmark gate and checks that the gate can judge against it:
 #
 #   scripts/bench_baseline.sh [--runs N] [--dir DIR]
 #
-# 1. the baseline: the gate's benchmarks (scripts/bench_gate_settings.sh) -> DIR/cpu_gate.json;
-# 2. the noise study: N more runs of the same build, each compared with the baseline;
-# 3. a known slowdown: one run with MSSPH_BENCH_STEP_DELAY_US set to the fastest step benchmark's
-#    baseline step time (that benchmark then takes 2x), which must fail the gate;
-# then DIR/noise_study.md (the ratios' spread and the threshold that follows), DIR/threshold
-# (read by scripts/bench_gate.sh) and DIR/noise/ (each comparison, as JSON). A run took 32 s on
-# the 2-core CI machine kind at load average 10: N = 10, the default, then takes about 7 minutes
-# (less on a quiet machine). Exits 1 when the known slowdown does not fail the gate.
+# 1. the baseline: the gate's benchmarks with their instruction counts
+#    (scripts/bench_gate_settings.sh) -> DIR/cpu_gate.json;
+# 2. N more runs of the same build (default 3), each compared with it: every count must agree;
+# 3. planted slowdowns of the same work (MSSPH_BENCH_EXTRA_STEP_EVERY=N, 1/N more steps): every
+#    20th step (5 %) must fail the gate, every 50th (2 %, below the 3 % threshold) must pass;
+# then DIR/gate_study.md with the ratios. The counts do not depend on other load, so any machine
+# with the CI build's compiler and build type makes the same baseline. Exits 1 when a check fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/bench_gate_settings.sh
 MSSPH=${MSSPH:-build/mssph}
-runs=10
+runs=3
 dir=$GATE_BASELINE_DIR
 while [[ $# -gt 0 ]]; do
   case $1 in
@@ -27,42 +25,54 @@ while [[ $# -gt 0 ]]; do
 done
 [[ -x $MSSPH ]] || { echo "error: $MSSPH not built (run scripts/build.sh)" >&2; exit 2; }
 mkdir -p "$dir"
-# The runs' JSON is large and stays in a temporary folder; their comparisons (small) are kept in
-# DIR/noise/, from which scripts/bench_noise_study.py remakes the summary.
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-rm -rf "$dir/noise"
-mkdir -p "$dir/noise"
 start=$SECONDS
-load_before=$(cut -d" " -f1-3 /proc/loadavg)
 
 echo "bench baseline: baseline run -> $dir/cpu_gate.json" >&2
 gate_bench "$dir/cpu_gate.json"
-same=()
+comparisons=()
+# compare_run LABEL EXPECTED_EXIT: compares $work/LABEL.json with the baseline, records the JSON.
+compare_run() {
+  local code=0
+  gate_compare "$dir/cpu_gate.json" "$work/$1.json" --format json > "$work/$1.compare.json" || code=$?
+  comparisons+=("$1" "$2" "$code" "$work/$1.compare.json")
+}
 for i in $(seq 1 "$runs"); do
-  echo "bench baseline: noise run $i of $runs ($((SECONDS - start)) s so far)" >&2
-  gate_bench "$work/run_$i.json"
-  # The threshold is irrelevant here: the study reads the ratios and p-values.
-  "$MSSPH" bench compare "$dir/cpu_gate.json" "$work/run_$i.json" --normalize-by "$GATE_NORMALIZE_BY" --format json > "$dir/noise/same_build_$i.json" || [[ $? == 1 ]]
-  same+=("$dir/noise/same_build_$i.json")
+  echo "bench baseline: same-build run $i of $runs ($((SECONDS - start)) s so far)" >&2
+  gate_bench "$work/same_$i.json"
+  compare_run "same_$i" 0
+done
+for every in 20 50; do
+  echo "bench baseline: planted run, one extra step every $every" >&2
+  MSSPH_BENCH_EXTRA_STEP_EVERY=$every gate_bench "$work/extra_every_$every.json"
+  compare_run "extra_every_$every" "$([[ $every == 20 ]] && echo 1 || echo 0)"
 done
 
-# The fastest step benchmark's median step time, from the baseline [us].
-delay_us=$("$MSSPH" bench compare "$dir/cpu_gate.json" "$dir/cpu_gate.json" --format json |
-  /usr/bin/python3 -c 'import json, sys; print(round(1e6 * min(b["baseline_median_seconds"] for b in json.load(sys.stdin)["benchmarks"] if b["name"].startswith("step/"))))')
-echo "bench baseline: known slowdown run, MSSPH_BENCH_STEP_DELAY_US=$delay_us" >&2
-MSSPH_BENCH_STEP_DELAY_US=$delay_us gate_bench "$work/delayed.json"
-"$MSSPH" bench compare "$dir/cpu_gate.json" "$work/delayed.json" --normalize-by "$GATE_NORMALIZE_BY" --format json > "$dir/noise/delayed.json" || [[ $? == 1 ]]
-
-status=0
 {
-  echo "# Noise study of $dir/cpu_gate.json"
+  echo "# Gate study of $dir/cpu_gate.json"
   echo
   echo "Made by \`scripts/bench_baseline.sh --runs $runs\` in $((SECONDS - start)) s; $("$MSSPH" --version);"
-  echo "Load average (1, 5, 15 min) before the runs: $load_before; after: $(cut -d" " -f1-3 /proc/loadavg)."
+  echo "threshold $(gate_threshold) on instructions per step."
   echo
-  /usr/bin/python3 scripts/bench_noise_study.py "$dir/threshold" "$dir/noise/delayed.json" "${same[@]}" || status=$?
-} > "$dir/noise_study.md"
-cat "$dir/noise_study.md"
-echo "bench baseline: done in $((SECONDS - start)) s; threshold $(cat "$dir/threshold")" >&2
-exit "$status"
+  /usr/bin/python3 - "${comparisons[@]}" <<'PY'
+import json, sys
+args = sys.argv[1:]
+print("| run | expected exit | exit | largest instruction ratio | wall-time ratios |")
+print("|---|---|---|---|---|")
+failed = 0
+for label, expected, code, path in zip(args[0::4], args[1::4], args[2::4], args[3::4]):
+    report = json.load(open(path))
+    ratios = [b["instruction_ratio"] for b in report["benchmarks"]]
+    walls = ", ".join(f'{b["ratio"]:.2f}' for b in report["benchmarks"])
+    ok = expected == code
+    failed += not ok
+    print(f"| {label} | {expected} | {code}{'' if ok else ' (WRONG)'} | {max(ratios):.5f} | {walls} |")
+print()
+print("All as expected." if not failed else f"{failed} run(s) not as expected.")
+sys.exit(1 if failed else 0)
+PY
+} > "$dir/gate_study.md" || status=$?
+cat "$dir/gate_study.md"
+echo "bench baseline: done in $((SECONDS - start)) s" >&2
+exit "${status:-0}"

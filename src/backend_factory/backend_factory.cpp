@@ -33,6 +33,8 @@ const std::vector<std::string>& backend_choices() {
   return choices;
 }
 
+bool backend_runs_on_gpu(const std::string& name) { return name == "cuda"; }
+
 std::vector<std::string> available_backends() {
   std::vector<std::string> names{"reference", "cpu"};
 #ifdef MSSPH_HAVE_CUDA_BACKEND

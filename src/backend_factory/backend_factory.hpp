@@ -21,6 +21,9 @@ std::vector<std::string> float_backend_names();
 // What --backend accepts: backend_names() and "auto".
 const std::vector<std::string>& backend_choices();
 
+// Whether the backend computes on a GPU (its steps cost device time, not host instructions).
+bool backend_runs_on_gpu(const std::string& name);
+
 // The backends this binary can run, e.g. {"reference", "cpu"}.
 std::vector<std::string> available_backends();
 

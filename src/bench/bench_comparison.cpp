@@ -48,6 +48,34 @@ BenchmarkComparison compare_one(const std::string& name, const std::vector<doubl
   return c;
 }
 
+std::optional<double> find(const std::map<std::string, double>& values, const std::string& name) {
+  const auto it = values.find(name);
+  return it == values.end() ? std::nullopt : std::optional<double>(it->second);
+}
+
+// Adds the instruction counts of both files; on the instruction gate, the verdict is theirs: a
+// count is exact, so any rise beyond the threshold is a regression.
+void add_instructions(BenchmarkComparison& c, const BenchmarkResults& baseline, const BenchmarkResults& current,
+                      const CompareOptions& options) {
+  c.baseline_instructions = find(baseline.instructions_per_step, c.name);
+  c.current_instructions = find(current.instructions_per_step, c.name);
+  c.baseline_ll_misses = find(baseline.ll_misses_per_step, c.name);
+  c.current_ll_misses = find(current.ll_misses_per_step, c.name);
+  if (c.baseline_instructions && c.current_instructions) {
+    c.instruction_ratio = *c.current_instructions / *c.baseline_instructions;
+  }
+  if (options.gate != GateMeasure::instructions) return;
+  if (!c.instruction_ratio) {
+    const std::string& path = c.baseline_instructions ? current.path : baseline.path;
+    throw InputError(path + ": no instructions_per_step for " + c.name +
+                     " (the instruction gate needs both files made by `mssph bench --count-instructions`)");
+  }
+  const double r = *c.instruction_ratio;
+  c.verdict = r > 1.0 + options.threshold           ? Verdict::slower
+              : r < 1.0 / (1.0 + options.threshold) ? Verdict::faster
+                                                    : Verdict::unchanged;
+}
+
 Normalization normalization(const BenchmarkResults& baseline, const BenchmarkResults& current,
                             const std::string& name) {
   Normalization n{name, 0.0, 0.0};
@@ -95,9 +123,10 @@ double median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-std::vector<ContextDifference> machine_differences(const BenchmarkResults& baseline, const BenchmarkResults& current) {
+std::vector<ContextDifference> machine_differences(const BenchmarkResults& baseline, const BenchmarkResults& current,
+                                                   const std::vector<std::string>& keys) {
   std::vector<ContextDifference> differences;
-  for (const std::string& key : kMachineKeys) {
+  for (const std::string& key : keys) {
     const std::string a = context_value(baseline, key);
     const std::string b = context_value(current, key);
     if (a != b) differences.push_back({key, a, b});
@@ -111,9 +140,11 @@ ComparisonReport compare(const BenchmarkResults& baseline, const BenchmarkResult
   report.baseline_path = baseline.path;
   report.current_path = current.path;
   report.options = options;
-  report.machine_differences = machine_differences(baseline, current);
+  const bool counts = options.gate == GateMeasure::instructions;
+  report.machine_differences = machine_differences(baseline, current, counts ? kInstructionKeys : kMachineKeys);
   if (!report.machine_differences.empty() && !options.force) {
-    std::string message = "the files come from different machines or builds, whose times do not compare:";
+    std::string message = counts ? "the files come from different builds, whose instruction counts do not compare:"
+                                 : "the files come from different machines or builds, whose times do not compare:";
     for (const ContextDifference& d : report.machine_differences) {
       message += "\n  " + d.key + ": baseline \"" + d.baseline + "\", current \"" + d.current + "\"";
     }
@@ -136,6 +167,7 @@ ComparisonReport compare(const BenchmarkResults& baseline, const BenchmarkResult
     }
     report.benchmarks.push_back(
         compare_one(name, baseline.seconds.at(name), it->second, machine_ratio, options, report.smallest_attainable_p));
+    add_instructions(report.benchmarks.back(), baseline, current, options);
   }
   for (const std::string& name : current.names) {
     if (!baseline.seconds.count(name) && !is_yardstick(name)) report.only_in_current.push_back(name);

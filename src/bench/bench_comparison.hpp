@@ -1,8 +1,12 @@
 #pragma once
 // `mssph bench compare`: per benchmark common to a baseline and a current result file, the ratio
 // of median times, a two-sided Mann-Whitney U test over the repetitions, and a verdict. The gate
-// fails only on a slowdown that is both larger than the threshold and significant, so that a
-// noisy machine alone does not fail it.
+// is on one of two measures:
+// - wall time: it fails only on a slowdown that is both larger than the threshold and
+//   significant, so that a noisy machine alone does not fail it (a quiet, dedicated machine; GPUs);
+// - instructions per step, counted by Callgrind (`mssph bench --count-instructions`): the same
+//   for the same build and inputs whatever else the machine runs, so a rise beyond the threshold
+//   fails it with no test needed (a shared CI runner). Wall time is then reported beside it.
 #include "bench/benchmark_results.hpp"
 
 #include <optional>
@@ -11,8 +15,11 @@
 
 namespace mssph::bench {
 
+enum class GateMeasure { wall_time, instructions };
+
 struct CompareOptions {
-  double threshold = 0.10;  // a slowdown beyond median ratio 1 + threshold can fail the gate
+  GateMeasure gate = GateMeasure::wall_time;
+  double threshold = 0.10;  // a slowdown beyond ratio 1 + threshold (of the gate's measure) can fail the gate
   double alpha = 0.05;      // significance level of the test
   bool force = false;       // compare files from different machines or build types anyway
   // A benchmark of both files that times the machine, not the code (calibration/cpu): each file's
@@ -47,7 +54,11 @@ struct BenchmarkComparison {
   double u = 0.0;                // Mann-Whitney U of the current sample
   double p_value = 1.0;
   bool exact = false;
-  Verdict verdict = Verdict::unchanged;
+  // Instructions per step in each file, and their ratio, where both files counted them.
+  std::optional<double> baseline_instructions, current_instructions;
+  std::optional<double> instruction_ratio;
+  std::optional<double> baseline_ll_misses, current_ll_misses;  // simulated last-level misses per step
+  Verdict verdict = Verdict::unchanged;                         // on the gate's measure
 };
 
 // A machine context key whose values differ between the files.
@@ -74,10 +85,15 @@ struct ComparisonReport {
   bool failed() const;  // any verdict "slower"
 };
 
-std::vector<ContextDifference> machine_differences(const BenchmarkResults& baseline, const BenchmarkResults& current);
+// The context keys whose values differ: kMachineKeys for wall time; for instruction counts, which
+// do not depend on the machine's speed, kInstructionKeys (the build and its compiler).
+inline const std::vector<std::string> kInstructionKeys{"mssph_build_type", "mssph_compiler"};
+std::vector<ContextDifference> machine_differences(const BenchmarkResults& baseline, const BenchmarkResults& current,
+                                                   const std::vector<std::string>& keys = kMachineKeys);
 
 // Throws InputError when the files share no benchmark, when a file lacks options.normalize_by or
-// its times are not positive, or, without options.force, when their machine context differs (the
+// its times are not positive, when the gate is on instructions and a common benchmark lacks
+// counts in either file, or, without options.force, when their machine context differs (the
 // message names each differing key and both values).
 ComparisonReport compare(const BenchmarkResults& baseline, const BenchmarkResults& current,
                          const CompareOptions& options);

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -19,6 +20,16 @@ double seconds_per(const std::string& unit, const std::string& where) {
 }
 
 std::string as_text(const nlohmann::json& value) { return value.is_string() ? value.get<std::string>() : value.dump(); }
+
+// A positive, finite number at entry[key], or InputError naming where.
+double positive(const nlohmann::json& entry, const std::string& key, const std::string& where) {
+  if (!entry[key].is_number()) throw InputError(where + "/" + key + ": expected a number");
+  const double value = entry[key].get<double>();
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw InputError(where + "/" + key + ": expected a positive finite number, got " + entry[key].dump());
+  }
+  return value;
+}
 
 }  // namespace
 
@@ -67,9 +78,15 @@ BenchmarkResults read_benchmark_results(const std::string& path) {
     }
     // Step benchmarks time batches of steps; their step_seconds counter is the same time per step.
     const double seconds =
-        entry.contains("step_seconds") && entry["step_seconds"].is_number()
-            ? entry["step_seconds"].get<double>()
-            : entry["real_time"].get<double>() * seconds_per(entry["time_unit"].get<std::string>(), where);
+        entry.contains("step_seconds")
+            ? positive(entry, "step_seconds", where)
+            : positive(entry, "real_time", where) * seconds_per(entry["time_unit"].get<std::string>(), where);
+    if (entry.contains("instructions_per_step")) {
+      results.instructions_per_step[name] = positive(entry, "instructions_per_step", where);
+      if (entry.contains("ll_misses_per_step") && entry["ll_misses_per_step"].is_number()) {
+        results.ll_misses_per_step[name] = entry["ll_misses_per_step"].get<double>();
+      }
+    }
     auto [it, inserted] = results.seconds.try_emplace(name);
     if (inserted) results.names.push_back(name);
     it->second.push_back(seconds);

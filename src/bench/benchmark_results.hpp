@@ -20,11 +20,16 @@ struct BenchmarkResults {
   // (mean, median, stddev) are left out: the test needs the repetitions themselves.
   std::vector<std::string> names;
   std::map<std::string, std::vector<double>> seconds;
+  // Per benchmark counted by `mssph bench --count-instructions`: instructions executed and
+  // simulated last-level cache misses per step (or tick), the same in every repetition.
+  std::map<std::string, double> instructions_per_step;
+  std::map<std::string, double> ll_misses_per_step;
   std::vector<std::string> errors;  // benchmarks that reported an error, with its message
 };
 
 // Throws InputError naming the file and what is wrong: unreadable, not JSON, not Google Benchmark
-// output (no "context" object or "benchmarks" array), an entry without name, time or unit.
+// output (no "context" object or "benchmarks" array), an entry without name, time or unit, a
+// time or count that is not a positive finite number.
 BenchmarkResults read_benchmark_results(const std::string& path);
 
 }  // namespace mssph::bench

@@ -36,14 +36,37 @@ std::string format_number(const char* pattern, double value) {
 
 std::string percent(double fraction) { return format_number("%.0f%%", 100.0 * fraction); }
 
+bool has_counts(const ComparisonReport& report) {
+  return std::any_of(report.benchmarks.begin(), report.benchmarks.end(),
+                     [](const BenchmarkComparison& b) { return b.instruction_ratio.has_value(); });
+}
+
+std::string count_or_dash(const std::optional<double>& value, const char* pattern) {
+  return value ? format_number(pattern, *value) : "-";
+}
+
+// One row per benchmark: wall time (medians, ratio, test), then the instruction counts where both
+// files have them, then the verdict on the gate's measure.
 std::vector<std::vector<std::string>> rows_of(const ComparisonReport& report) {
+  const bool counts = has_counts(report);
   std::vector<std::vector<std::string>> rows;
-  rows.push_back({"benchmark", "baseline", "current", "ratio", "p", "n", "verdict"});
+  std::vector<std::string> header{"benchmark", "baseline", "current", "ratio", "p", "n"};
+  if (counts) header.insert(header.end(), {"instr/step", "instr ratio", "LL misses/step"});
+  header.push_back("verdict");
+  rows.push_back(header);
   for (const BenchmarkComparison& b : report.benchmarks) {
-    rows.push_back({b.name, format_time(b.baseline_median), format_time(b.current_median),
-                    format_number("%.3f", b.ratio), format_number("%.3g", b.p_value),
-                    std::to_string(b.baseline_repetitions) + "/" + std::to_string(b.current_repetitions),
-                    to_string(b.verdict)});
+    std::vector<std::string> row{b.name,
+                                 format_time(b.baseline_median),
+                                 format_time(b.current_median),
+                                 format_number("%.3f", b.ratio),
+                                 format_number("%.3g", b.p_value),
+                                 std::to_string(b.baseline_repetitions) + "/" + std::to_string(b.current_repetitions)};
+    if (counts) {
+      row.insert(row.end(), {count_or_dash(b.current_instructions, "%.4g"), count_or_dash(b.instruction_ratio, "%.4f"),
+                             count_or_dash(b.current_ll_misses, "%.3g")});
+    }
+    row.push_back(to_string(b.verdict));
+    rows.push_back(row);
   }
   return rows;
 }
@@ -68,10 +91,23 @@ std::vector<std::string> notes_of(const ComparisonReport& report) {
         format_number("%.3f", n.machine_ratio()) +
         "x); each ratio and test is of the current times divided by that factor, the medians shown are as measured.");
   }
-  notes.push_back("The gate fails (exit 1) on a benchmark whose ratio exceeds " +
-                  format_number("%.3f", 1.0 + o.threshold) + " (threshold " + percent(o.threshold) +
-                  ") with a significant difference.");
-  if (report.smallest_attainable_p) {
+  if (has_counts(report)) {
+    notes.push_back(
+        "instr/step: instructions executed per step (or tick) in the current file, counted by Callgrind; instr "
+        "ratio = current / baseline; LL misses/step: simulated last-level cache misses per step.");
+  }
+  if (o.gate == GateMeasure::instructions) {
+    notes.push_back(
+        "The gate is on instructions per step, which other load on the machine does not change: it fails "
+        "(exit 1) on a benchmark whose instruction ratio exceeds " +
+        format_number("%.3f", 1.0 + o.threshold) + " (threshold " + percent(o.threshold) +
+        "). Wall time is shown for information.");
+  } else {
+    notes.push_back("The gate fails (exit 1) on a benchmark whose ratio exceeds " +
+                    format_number("%.3f", 1.0 + o.threshold) + " (threshold " + percent(o.threshold) +
+                    ") with a significant difference.");
+  }
+  if (report.smallest_attainable_p && o.gate == GateMeasure::wall_time) {
     notes.push_back(
         "Too few repetitions for some benchmarks: with their counts the smallest p-value the test can give "
         "is " +
@@ -85,8 +121,9 @@ std::vector<std::string> notes_of(const ComparisonReport& report) {
   for (const std::string& name : report.only_in_baseline) notes.push_back("only in the baseline: " + name);
   for (const std::string& name : report.only_in_current) notes.push_back("only in the current file: " + name);
   for (const std::string& e : report.errors) notes.push_back("error reported by the benchmark: " + e);
-  notes.push_back(std::string("Result: ") +
-                  (report.failed() ? "FAIL, significantly slower beyond the threshold." : "pass."));
+  const char* failure = o.gate == GateMeasure::instructions ? "FAIL, more instructions per step beyond the threshold."
+                                                            : "FAIL, significantly slower beyond the threshold.";
+  notes.push_back(std::string("Result: ") + (report.failed() ? failure : "pass."));
   return notes;
 }
 
@@ -139,6 +176,10 @@ std::string as_markdown(const ComparisonReport& report) {
   return out.str();
 }
 
+nlohmann::json json_or_null(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
 std::string as_json(const ComparisonReport& report) {
   nlohmann::json doc;
   doc["baseline"] = report.baseline_path;
@@ -146,6 +187,7 @@ std::string as_json(const ComparisonReport& report) {
   doc["threshold"] = report.options.threshold;
   doc["alpha"] = report.options.alpha;
   doc["test"] = "two-sided Mann-Whitney U";
+  doc["gate"] = report.options.gate == GateMeasure::instructions ? "instructions" : "wall time";
   doc["failed"] = report.failed();
   doc["benchmarks"] = nlohmann::json::array();
   for (const BenchmarkComparison& b : report.benchmarks) {
@@ -158,6 +200,11 @@ std::string as_json(const ComparisonReport& report) {
                                  {"u", b.u},
                                  {"p_value", b.p_value},
                                  {"exact", b.exact},
+                                 {"baseline_instructions_per_step", json_or_null(b.baseline_instructions)},
+                                 {"current_instructions_per_step", json_or_null(b.current_instructions)},
+                                 {"instruction_ratio", json_or_null(b.instruction_ratio)},
+                                 {"baseline_ll_misses_per_step", json_or_null(b.baseline_ll_misses)},
+                                 {"current_ll_misses_per_step", json_or_null(b.current_ll_misses)},
                                  {"verdict", to_string(b.verdict)}});
   }
   doc["only_in_baseline"] = report.only_in_baseline;

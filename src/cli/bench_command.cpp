@@ -3,10 +3,13 @@
 // significance-gated comparison of two such files (src/bench/).
 #include "backend_factory/backend_factory.hpp"
 #include "bench/bench_comparison.hpp"
+#include "bench/benchmark_results.hpp"
 #include "bench/comparison_format.hpp"
 #include "benchmark_suite.hpp"
 #include "commands.hpp"
 #include "guarded.hpp"
+#include "instruction_counts.hpp"
+#include "io/output_claim.hpp"
 #include "run/output_path.hpp"
 #include "step_delay.hpp"
 #include "util/errors.hpp"
@@ -16,6 +19,9 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <regex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -29,6 +35,9 @@ struct BenchArgs {
   double min_time = 0.0;  // 0: Google Benchmark's default (0.5 s)
   std::string out;
   bool list = false;
+  bool force = false;
+  bool count_instructions = false;
+  std::string counting_filter;  // set in the counting run under Callgrind: the benchmarks to count
   std::string scene;
   std::vector<std::string> overrides;
 };
@@ -36,7 +45,8 @@ struct BenchArgs {
 struct CompareArgs {
   std::string baseline;
   std::string current;
-  std::string threshold = "10%";
+  std::string gate = "time";
+  std::string threshold;  // empty: 10% on wall time, 3% on instructions
   double alpha = 0.05;
   std::string format = "table";
   bool force = false;
@@ -78,8 +88,7 @@ std::vector<std::string> benchmark_flags(const BenchArgs& a) {
   return flags;
 }
 
-int run_bench(const BenchArgs& a) {
-  bench::step_delay_seconds();  // a malformed test hook is bad input before anything runs
+void register_benchmarks(const BenchArgs& a) {
   if (a.scene.empty() && !a.overrides.empty())
     throw InputError("--set applies to a scene file: mssph bench SCENE.json --set ...");
   if (!a.scene.empty()) {
@@ -91,13 +100,66 @@ int run_bench(const BenchArgs& a) {
     for (const std::string& b : a.backends) backends.push_back(resolve_backend_name(b));
     bench::register_suite(backends.empty() ? bench::default_benchmark_backends() : backends);
   }
+}
+
+// The name as the suite registers it: Google Benchmark appends /manual_time to manually timed ones.
+std::string registered_name(std::string name) {
+  const std::string suffix = "/manual_time";
+  if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+    name.resize(name.size() - suffix.size());
+  }
+  return name;
+}
+
+// This program's arguments for the counting run of the benchmarks in the results file.
+std::vector<std::string> counting_arguments(const BenchArgs& a, const std::string& results_path) {
+  std::string alternatives;
+  for (const std::string& name : bench::read_benchmark_results(results_path).names) {
+    const std::string escaped =
+        std::regex_replace(registered_name(name), std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)");
+    alternatives += (alternatives.empty() ? "" : "|") + escaped;
+  }
+  std::vector<std::string> args{std::filesystem::read_symlink("/proc/self/exe").string(), "bench"};
+  if (!a.scene.empty()) args.push_back(a.scene);
+  for (const std::string& b : a.backends) args.insert(args.end(), {"--backend", b});
+  for (const std::string& o : a.overrides) args.insert(args.end(), {"--set", o});
+  args.insert(args.end(), {"--counting-filter", "^(" + alternatives + ")$"});
+  return args;
+}
+
+// Counts the instructions of the benchmarks in `results_path` under Callgrind and adds them there.
+void add_instruction_counts(const BenchArgs& a, const std::string& results_path) {
+  const std::filesystem::path dir = std::filesystem::path(results_path + ".callgrind");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directory(dir);
+  std::cerr << "mssph bench: counting instructions under Callgrind" << std::endl;
+  const std::vector<bench::InstructionCount> counts =
+      bench::count_instructions(counting_arguments(a, results_path), dir.string());
+  std::filesystem::remove_all(dir);
+  bench::add_counts_to_benchmark_file(results_path, counts);
+}
+
+int run_bench(const BenchArgs& a) {
+  bench::step_delay_seconds();  // a malformed test hook is bad input before anything runs
+  bench::extra_step_interval();
+  register_benchmarks(a);
+  if (!a.counting_filter.empty()) {
+    if (bench::run_counted_workloads(a.counting_filter) == 0) {
+      throw InputError("no counted workload matches " + a.counting_filter);
+    }
+    return kExitOk;
+  }
+  if (a.count_instructions && a.out.empty()) throw InputError("--count-instructions: give --out FILE.json");
+  // The results go to <out>.partial, held by this run, and reach <out> only once whole.
+  std::optional<OutputClaim> claim;
   if (!a.out.empty()) {
     check_output_path(a.out);
-    const std::filesystem::path parent = std::filesystem::path(a.out).parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent);
+    claim.emplace(a.out, a.force);
   }
+  BenchArgs google_benchmark_args = a;
+  if (claim) google_benchmark_args.out = claim->partial_path();
   bench::add_machine_context();
-  std::vector<std::string> flags = benchmark_flags(a);
+  std::vector<std::string> flags = benchmark_flags(google_benchmark_args);
   std::vector<char*> argv;
   for (std::string& f : flags) argv.push_back(f.data());
   int argc = static_cast<int>(argv.size());
@@ -107,13 +169,23 @@ int run_bench(const BenchArgs& a) {
   if (ran == 0 && !a.list) {
     throw InputError("no benchmark matches --filter \"" + a.filter + "\" (mssph bench --list names them)");
   }
-  if (!a.out.empty()) std::cerr << "mssph bench: wrote " << a.out << "\n";
+  if (!claim) return kExitOk;
+  try {
+    bench::read_benchmark_results(claim->partial_path());  // what was written is whole and readable
+  } catch (const InputError& e) {
+    throw std::runtime_error(std::string("writing the results failed: ") + e.what());
+  }
+  if (a.count_instructions) add_instruction_counts(a, claim->partial_path());
+  claim->publish();
+  std::cerr << "mssph bench: wrote " << a.out << "\n";
   return kExitOk;
 }
 
 int run_compare(const CompareArgs& a) {
   bench::CompareOptions options;
-  options.threshold = parse_threshold(a.threshold);
+  options.gate = a.gate == "instructions" ? bench::GateMeasure::instructions : bench::GateMeasure::wall_time;
+  const bool counts = options.gate == bench::GateMeasure::instructions;
+  options.threshold = parse_threshold(!a.threshold.empty() ? a.threshold : counts ? "3%" : "10%");
   options.alpha = a.alpha;
   options.force = a.force;
   if (!a.normalize_by.empty()) options.normalize_by = a.normalize_by;
@@ -132,9 +204,14 @@ void add_compare_command(CLI::App& bench, int& exit_code) {
   CLI::App* cmd = bench.add_subcommand("compare", "Compare two benchmark files: median ratios, significance, verdicts");
   cmd->add_option("baseline", args->baseline, "Baseline results (Google Benchmark JSON)")->required();
   cmd->add_option("current", args->current, "Current results (Google Benchmark JSON)")->required();
-  cmd->add_option("--threshold", args->threshold,
-                  "Slowdown that fails the gate when significant: a median ratio above 1 + threshold (10% or 0.1)")
+  cmd->add_option("--gate", args->gate,
+                  "The measure the gate judges: time (medians and a significance test; a quiet machine, GPUs) or "
+                  "instructions (per step, from `mssph bench --count-instructions`; a shared runner)")
+      ->check(CLI::IsMember({"time", "instructions"}))
       ->capture_default_str();
+  cmd->add_option("--threshold", args->threshold,
+                  "Slowdown that fails the gate: a ratio above 1 + threshold, significant on time (default 10%), any "
+                  "on instructions (default 3%); as 10% or 0.1");
   cmd->add_option("--alpha", args->alpha, "Significance level of the Mann-Whitney U test")
       ->check(CLI::Range(1e-6, 0.5))
       ->capture_default_str();
@@ -158,11 +235,18 @@ void add_compare_command(CLI::App& bench, int& exit_code) {
       "The files must come from the same machine and build: their context's mssph_cpu, mssph_gpu and\n"
       "mssph_build_type must agree, else the comparison is refused (naming the field) unless --force.\n"
       "A shared machine's speed still drifts between hours; --normalize-by calibration/cpu divides\n"
-      "each ratio by the ratio of that fixed workload's medians (the CI gate does).\n"
+      "each ratio by the ratio of that fixed workload's medians.\n"
       "\n"
-      "Exit codes: 0 no benchmark significantly slower beyond the threshold; 1 at least one; 2 bad\n"
-      "input (a missing or unreadable file, not Google Benchmark JSON, no benchmark in common,\n"
-      "different machines without --force).");
+      "--gate instructions judges instructions per step instead (files from `mssph bench\n"
+      "--count-instructions`): counted by Callgrind, they are the same for the same build whatever\n"
+      "else the machine runs, so any ratio above 1 + threshold (default 3%) fails, with no test; wall\n"
+      "time is shown beside them. Only mssph_build_type and mssph_compiler must agree. This is the\n"
+      "gate for a shared CI runner (scripts/bench_gate.sh); wall time stays the gate of a quiet,\n"
+      "dedicated machine and of GPUs.\n"
+      "\n"
+      "Exit codes: 0 no benchmark slower beyond the threshold; 1 at least one; 2 bad input (a missing\n"
+      "or unreadable file, not Google Benchmark JSON, a time or count that is not positive, no\n"
+      "benchmark in common, no counts for the instruction gate, different machines without --force).");
   cmd->callback([args, &exit_code] { guarded(exit_code, [&] { return run_compare(*args); }); });
 }
 
@@ -197,6 +281,12 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--set", args->overrides, "With a scene: override a scene value, PATH=VALUE (as mssph run)")
       ->allow_extra_args(false);
   cmd->add_flag("--list", args->list, "List the benchmark names (after --filter) without running them");
+  cmd->add_flag("--force", args->force, "Replace an existing --out file");
+  cmd->add_flag("--count-instructions", args->count_instructions,
+                "Also count each host benchmark's instructions per step under Valgrind's Callgrind "
+                "(single-threaded, unaffected by other load) and add them to --out as instructions_per_step and "
+                "ll_misses_per_step");
+  cmd->add_option("--counting-filter", args->counting_filter)->group("");  // the counting run under Callgrind
   cmd->footer(
       "Benchmarks (stable names, so that files compare across commits):\n"
       "  step/<backend>/<medium>/<particles>/manual_time  one step of a block of fluid, rigid or\n"
@@ -215,7 +305,15 @@ void add_bench_command(CLI::App& app, int& exit_code) {
       "Test hook: MSSPH_BENCH_STEP_DELAY_US=N busy-waits N microseconds after every benchmarked step\n"
       "(and haptic tick), a known slowdown for testing the gate; it is recorded in the context as\n"
       "mssph_test_step_delay_us. Never set it for real measurements. On cuda the wait overlaps the\n"
-      "GPU's work.\n"
+      "GPU's work. MSSPH_BENCH_EXTRA_STEP_EVERY=N takes one extra step after every N benchmarked\n"
+      "steps (and ticks): 1/N more of the same work, which instruction counts see (recorded as\n"
+      "mssph_test_extra_step_every).\n"
+      "\n"
+      "--count-instructions: after the timed runs, this program runs again under\n"
+      "`valgrind --tool=callgrind` (Debian's valgrind), which counts each host benchmark's\n"
+      "instructions over 20 steps (or 2000 ticks) after the same warm-up, with fixed simulated caches;\n"
+      "--out then carries instructions_per_step and ll_misses_per_step for `bench compare --gate\n"
+      "instructions`. GPU benchmarks are not counted.\n"
       "\n"
       "mssph bench compare BASELINE.json CURRENT.json: see 'mssph bench compare --help'.\n"
       "\n"

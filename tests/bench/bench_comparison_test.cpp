@@ -196,5 +196,68 @@ TEST(BenchmarkResultsFile, BadFilesNameTheFileAndTheProblem) {
   EXPECT_NE(message_of("unit.json").find("/benchmarks/0/time_unit"), std::string::npos);
 }
 
+// A time of zero or below, or an instruction count that is not positive, is not a measurement.
+TEST(BenchmarkResultsFile, NonPositiveTimesAndCountsAreBadInput) {
+  const test::TempDir dir;
+  const std::string head = R"({"context": {}, "benchmarks": [{"name": "t", "time_unit": "ms", )";
+  write(dir / "zero.json", head + R"("real_time": 0}]})");
+  write(dir / "negative.json", head + R"("real_time": -1}]})");
+  write(dir / "count.json", head + R"("real_time": 1, "instructions_per_step": 0}]})");
+  for (const char* name : {"zero.json", "negative.json", "count.json"}) {
+    try {
+      read_benchmark_results((dir / name).string());
+      ADD_FAILURE() << name << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("expected a positive finite number"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// With counts (mssph bench --count-instructions) the instruction gate fails on any rise beyond
+// its threshold, noisy wall times or not; a file without counts cannot be judged.
+TEST(BenchComparison, InstructionGateJudgesCountsNotTimes) {
+  BenchmarkResults base = results("a.json", {{"five_pct", kBase}, {"two_pct", kBase}, {"wall_only", kBase}});
+  BenchmarkResults cur = results(
+      "b.json", {{"five_pct", scaled(kBase, 0.5)}, {"two_pct", scaled(kBase, 3.0)}, {"wall_only", scaled(kBase, 3.0)}});
+  base.instructions_per_step = {{"five_pct", 1e6}, {"two_pct", 1e6}, {"wall_only", 1e6}};
+  cur.instructions_per_step = {{"five_pct", 1.05e6}, {"two_pct", 1.02e6}, {"wall_only", 1e6}};
+  CompareOptions options;
+  options.gate = GateMeasure::instructions;
+  options.threshold = 0.03;
+  const ComparisonReport report = compare(base, cur, options);
+  ASSERT_EQ(report.benchmarks.size(), 3u);
+  EXPECT_EQ(report.benchmarks[0].verdict, Verdict::slower);  // faster on the clock, more work
+  EXPECT_NEAR(*report.benchmarks[0].instruction_ratio, 1.05, 1e-12);
+  EXPECT_EQ(report.benchmarks[1].verdict, Verdict::unchanged);
+  EXPECT_EQ(report.benchmarks[2].verdict, Verdict::unchanged);  // 3x the wall time, the same work
+  EXPECT_TRUE(report.failed());
+  const std::string text = format_report(report, ReportFormat::table);
+  EXPECT_NE(text.find("instr ratio"), std::string::npos) << text;
+  EXPECT_NE(text.find("gate is on instructions per step"), std::string::npos) << text;
+
+  cur.instructions_per_step.erase("two_pct");
+  try {
+    compare(base, cur, options);
+    ADD_FAILURE() << "a benchmark without counts was judged";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("b.json: no instructions_per_step for two_pct"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Instruction counts do not depend on the machine's speed: files of different CPUs compare, but
+// not of different compilers.
+TEST(BenchComparison, InstructionGateChecksTheBuildNotTheCpu) {
+  BenchmarkResults base = results("a.json", {{"s", kBase}}, "CPU one");
+  BenchmarkResults cur = results("b.json", {{"s", kBase}}, "CPU two");
+  base.instructions_per_step = cur.instructions_per_step = {{"s", 1e6}};
+  base.context["mssph_compiler"] = cur.context["mssph_compiler"] = "GNU 12.2.0";
+  CompareOptions options;
+  options.gate = GateMeasure::instructions;
+  EXPECT_FALSE(compare(base, cur, options).failed());
+  cur.context["mssph_compiler"] = "Clang 14";
+  EXPECT_THROW(compare(base, cur, options), InputError);
+}
+
 }  // namespace
 }  // namespace mssph::bench
