@@ -63,6 +63,9 @@ struct BodyConfig {
   double density = 0.0;               // rigid bodies: physical density for mass and inertia [kg/m^3]
   bool fixed = false;                 // rigid bodies: immovable (then it acts as a boundary)
   std::vector<Region> fixed_regions;  // deformable bodies
+  // Fluids: leave out the lattice sites within one spacing of another body's particles, so that
+  // bodies can start inside the fluid.
+  bool fill_around_bodies = false;
 };
 
 struct SimulationConfig {

@@ -187,6 +187,7 @@ BodyConfig read_body(const std::string& name, const JsonReader& reader,
                      "density",
                      "fixed",
                      "fixed_regions",
+                     "fill_around_bodies",
                      "description"});
   // The name becomes the run log's HDF5 group /bodies/<name>, where '/' would nest groups.
   if (name.empty() || name.find('/') != std::string::npos) {
@@ -212,6 +213,9 @@ BodyConfig read_body(const std::string& name, const JsonReader& reader,
     }
     if (key == "velocity" && body.kind == BodyKind::boundary) {
       reader.fail(key, "a boundary does not move");
+    }
+    if (key == "fill_around_bodies" && body.kind != BodyKind::fluid) {
+      reader.fail(key, std::string("applies to fluid bodies only (this body is ") + to_string(body.kind) + ")");
     }
   }
 
@@ -256,6 +260,7 @@ BodyConfig read_body(const std::string& name, const JsonReader& reader,
     body.density = reader.number("density", Interval::positive());
     body.fixed = reader.boolean_or("fixed", false);
   }
+  if (body.kind == BodyKind::fluid) body.fill_around_bodies = reader.boolean_or("fill_around_bodies", false);
   if (const auto regions = reader.optional_child("fixed_regions")) {
     for (const JsonReader& r : regions->elements()) {
       r.allow_only({"min", "max"});

@@ -1,5 +1,6 @@
 #include "scene_builder.hpp"
 
+#include "fluid_fill.hpp"
 #include "lattice.hpp"
 #include "model/lattice_calibration.hpp"
 #include "simulation_domain.hpp"
@@ -96,6 +97,38 @@ void check_domain_holds_moving_particles(const Scene& scene, const ParticleSetup
   }
 }
 
+// Every body's lattice sites in the world frame, before jitter; a fluid that fills around bodies
+// leaves out its sites closer than one spacing to another body's.
+std::vector<std::vector<Vector3d>> lattice_sites(const Scene& scene) {
+  const double dx = scene.simulation.particle_spacing;
+  std::vector<std::vector<Vector3d>> sites;
+  for (const BodyConfig& config : scene.bodies) {
+    const Eigen::Matrix3d rotation = config.orientation.toRotationMatrix();
+    std::vector<Vector3d> world;
+    for (const Vector3d& p : sample_shape(config.shape, dx)) world.push_back(config.position + rotation * p);
+    if (world.empty()) {
+      throw InputError(scene.source_file + ": /bodies/" + config.name +
+                       "/shape: the shape holds no particle at particle_spacing " + std::to_string(dx) +
+                       " m; make it larger or the spacing smaller");
+    }
+    sites.push_back(std::move(world));
+  }
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    if (!scene.bodies[b].fill_around_bodies) continue;
+    std::vector<Vector3d> others;
+    for (std::size_t o = 0; o < sites.size(); ++o) {
+      if (o != b) others.insert(others.end(), sites[o].begin(), sites[o].end());
+    }
+    sites[b] = sites_clear_of(sites[b], others, dx);
+    if (sites[b].empty()) {
+      throw InputError(scene.source_file + ": /bodies/" + scene.bodies[b].name +
+                       "/fill_around_bodies: no particle of the fluid is left once it leaves room for the other "
+                       "bodies");
+    }
+  }
+  return sites;
+}
+
 }  // namespace
 
 ParticleSetup build_particles(const Scene& scene) {
@@ -113,20 +146,17 @@ ParticleSetup build_particles(const Scene& scene) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   const double jitter = sim.jitter * sim.particle_spacing;
   std::vector<Vector3d> lattice_site;  // every particle's position before jitter
+  const std::vector<std::vector<Vector3d>> sites = lattice_sites(scene);
 
-  for (const BodyConfig& config : scene.bodies) {
-    const std::vector<Vector3d> local = sample_shape(config.shape, sim.particle_spacing);
-    if (local.empty()) {
-      throw InputError(scene.source_file + ": /bodies/" + config.name +
-                       "/shape: the shape holds no particle at particle_spacing " +
-                       std::to_string(sim.particle_spacing) + " m; make it larger or the spacing smaller");
-    }
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const BodyConfig& config = scene.bodies[b];
+    const std::vector<Vector3d>& body_sites = sites[b];
     BodySetup body;
     body.name = config.name;
     body.kind = config.kind;
     body.material = config.material;
     body.first = setup.size();
-    body.count = local.size();
+    body.count = body_sites.size();
     body.orientation = config.orientation;
     body.velocity = config.velocity;
     body.angular_velocity = config.angular_velocity;
@@ -134,9 +164,8 @@ ParticleSetup build_particles(const Scene& scene) {
 
     const Eigen::Matrix3d rotation = config.orientation.toRotationMatrix();
     std::vector<Vector3d> world;
-    world.reserve(local.size());
-    for (const Vector3d& p : local) {
-      Vector3d x = config.position + rotation * p;
+    world.reserve(body_sites.size());
+    for (Vector3d x : body_sites) {
       lattice_site.push_back(x);
       if (jitter > 0.0) x += jitter * Vector3d(unit(random), unit(random), unit(random));
       world.push_back(x);

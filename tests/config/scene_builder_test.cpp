@@ -283,5 +283,52 @@ TEST(SceneBuilder, OverlapMeansCloserThanHalfASpacing) {
   EXPECT_THROW(build_particles(with_gap(0.45 * kDx)), InputError);
 }
 
+// A fluid that fills around bodies leaves out exactly its sites closer than one spacing to another
+// body's (here a ball whose lattice is offset by 0.27 spacings, so that no pair is exactly one
+// spacing apart), keeps every other site where it was, and the scene then builds; without the key
+// the same scene overlaps.
+TEST(SceneBuilder, FluidFillingAroundABodyLeavesOutTheSitesWithinASpacing) {
+  const double shift = 0.27 * kDx;
+  const json ball = body("rigid", {{"type", "sphere"}, {"radius", 0.05}}, {shift, shift, shift});
+  json water = body("fluid", box({0.3, 0.3, 0.3}));
+  EXPECT_THAT(input_error_of([&] {
+                build_particles(scene_of({{"water", water}, {"ball", ball}}));
+              }),
+              HasSubstr("overlap"));
+
+  const ParticleSetup alone = build_particles(scene_of({{"water", water}}));
+  const ParticleSetup ball_alone = build_particles(scene_of({{"ball", ball}}));
+  water["fill_around_bodies"] = true;
+  const ParticleSetup filled = build_particles(scene_of({{"water", water}, {"ball", ball}}));
+  const std::vector<Vector3d> ball_sites = positions_of(ball_alone, ball_alone.bodies[0]);
+  // Bodies come in the order of their names: "ball", then "water".
+  ASSERT_EQ(filled.bodies[1].name, "water");
+  const std::vector<Vector3d> kept = positions_of(filled, filled.bodies[1]);
+  std::size_t expected_kept = 0;
+  for (const Vector3d& x : positions_of(alone, alone.bodies[0])) {
+    const bool near =
+        std::any_of(ball_sites.begin(), ball_sites.end(), [&](const Vector3d& y) { return (x - y).norm() < kDx; });
+    if (!near) {
+      ++expected_kept;
+      EXPECT_TRUE(std::find(kept.begin(), kept.end(), x) != kept.end()) << "a clear site was left out";
+    }
+  }
+  EXPECT_EQ(kept.size(), expected_kept);
+  EXPECT_LT(kept.size(), alone.bodies[0].count);
+  for (const Vector3d& x : kept) {
+    for (const Vector3d& y : ball_sites) ASSERT_GE((x - y).norm(), kDx);
+  }
+  EXPECT_EQ(filled.bodies[0].count, ball_alone.bodies[0].count);
+}
+
+TEST(SceneBuilder, FillAroundBodiesIsAFluidKey) {
+  json block = body("rigid", box({0.1, 0.1, 0.1}));
+  block["fill_around_bodies"] = true;
+  EXPECT_THAT(input_error_of([&] {
+                scene_of({{"block", block}});
+              }),
+              HasSubstr("/bodies/block/fill_around_bodies: applies to fluid bodies only"));
+}
+
 }  // namespace
 }  // namespace mssph
