@@ -37,7 +37,7 @@ run_gate() {
 }
 
 for _ in $(seq 1 $((2 * $(nproc)))); do
-  timeout 1800 sh -c 'while :; do :; done' &
+  timeout $((900 * loaded_runs)) sh -c 'while :; do :; done' &
   hogs+=($!)
 done
 for i in $(seq 1 "$loaded_runs"); do run_gate "loaded_$i" 0 MSSPH="$MSSPH"; done
