@@ -17,6 +17,8 @@ const std::vector<ValidationCase>& all_cases() {
        run_hydrostatic_case},
       {"physics", "archimedes", "physics/archimedes", "floating depth of spheres of density 500 and 700 in water",
        run_archimedes_case},
+      {"physics", "rotating_sphere", "physics/rotating_sphere",
+       "viscous torque on a sphere turning in a closed cube vs Stokes, two viscosities", run_rotating_sphere_case},
       {"physics", "torque_free_spin", "physics/torque_free_spin", "a tumbling box keeps its angular momentum",
        run_torque_free_spin_case},
       {"physics", "rotation_invariance", "physics/rotation_invariance",

@@ -3,6 +3,7 @@
 #include "backend_factory/backend_factory.hpp"
 #include "framework/fits.hpp"
 #include "model/scene_builder.hpp"
+#include "stepping.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,22 +12,6 @@
 #include <stdexcept>
 
 namespace mssph::validation {
-namespace {
-
-std::size_t body_index(const ParticleSetup& setup, const std::string& name, const Scene& scene) {
-  for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
-    if (setup.bodies[b].name == name) return b;
-  }
-  throw std::runtime_error(scene.source_file + ": this measurement needs a body \"" + name + "\"");
-}
-
-std::size_t steps_for(double seconds, double dt) { return static_cast<std::size_t>(std::llround(seconds / dt)); }
-
-void run_steps(Backend& backend, std::size_t steps) {
-  for (std::size_t s = 0; s < steps; ++s) backend.step();
-}
-
-}  // namespace
 
 HydrostaticMeasurement measure_hydrostatic(const std::string& backend_name, const Scene& scene) {
   const ParticleSetup setup = build_particles(scene);

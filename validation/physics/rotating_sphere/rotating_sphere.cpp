@@ -1,0 +1,91 @@
+#include "rotating_sphere.hpp"
+
+#include "backend_factory/backend_factory.hpp"
+#include "framework/backends.hpp"
+#include "model/scene_builder.hpp"
+#include "physics/stepping.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace mssph::validation {
+
+std::pair<double, double> cube_wall_factor_bracket(double radius, double half_width) {
+  const auto concentric = [&](double container) { return 1.0 / (1.0 - std::pow(radius / container, 3)); };
+  return {concentric(std::sqrt(3.0) * half_width), concentric(half_width)};
+}
+
+Scene rotating_sphere_scene(double dx, double mu, double omega) {
+  const double rho = 1000.0;
+  const double radius = 0.05;
+  const double h = 2.0 * dx;
+  const double nu = mu / rho;
+  const double c = std::max(100.0 * omega * radius, std::sqrt(100.0 * mu * omega / rho));
+  const double dt = 0.8 * std::min(0.125 * h * h / nu, 0.25 * h / c);
+  const std::vector<std::string> overrides{"simulation/particle_spacing=" + exact(dx),
+                                           "simulation/dt=" + exact(dt),
+                                           "simulation/duration=" + exact(6.0 * radius * radius / nu),
+                                           "materials/fluid/viscosity=" + exact(mu),
+                                           "materials/fluid/pressure_stiffness=" + exact(c * c),
+                                           "bodies/sphere/angular_velocity=[0, 0, " + exact(omega) + "]"};
+  return case_scene("physics/rotating_sphere", overrides);
+}
+
+RotatingSphereMeasurement measure_rotating_sphere(const std::string& backend_name, const Scene& scene, double omega) {
+  const ParticleSetup setup = build_particles(scene);
+  const std::size_t sphere = body_index(setup, "sphere", scene);
+  const BodySetup& fluid = setup.bodies[body_index(setup, "fluid", scene)];
+  const BodyConfig& box = scene.bodies[body_index(setup, "box", scene)];
+  const BodySetup ball = setup.bodies[sphere];
+  const double dx = setup.spacing;
+  const double mu = fluid.material.viscosity;
+  const double rho = fluid.material.rest_density;
+
+  RotatingSphereMeasurement m;
+  m.particles = setup.size();
+  m.radius = std::cbrt(3.0 * static_cast<double>(ball.count) * dx * dx * dx / (4.0 * std::numbers::pi));
+  m.reynolds = rho * omega * m.radius * m.radius / mu;
+  const double half_width = 0.5 * box.shape.size.minCoeff();
+  std::tie(m.wall_factor_low, m.wall_factor_high) = cube_wall_factor_bracket(m.radius, half_width);
+  m.wall_factor = 0.5 * (m.wall_factor_low + m.wall_factor_high);
+  m.expected_torque = -8.0 * std::numbers::pi * mu * std::pow(m.radius, 3) * omega * m.wall_factor;
+
+  std::unique_ptr<Backend> backend = make_backend(backend_name, setup);
+  const double dt = setup.dt;
+  const double rate = 1.0 / (10.0 * dt);  // the controller's approach rate [1/s]
+  const double inertia = ball.inertia_body(2, 2);
+  const Eigen::Vector3d target(0.0, 0.0, omega);
+  const Eigen::Vector3d centre = ball.centre_of_mass;
+  const std::size_t steps = steps_for(scene.simulation.duration, dt);
+  const std::size_t sample_every = std::max<std::size_t>(1, steps / 100);
+  const std::size_t window_start = steps - 2 * steps / 5;
+  const std::size_t earlier_start = steps - 3 * steps / 5;
+  double window_sum = 0.0, earlier_sum = 0.0;
+  BodyState s = backend->rigid_body_state(sphere);
+  for (std::size_t step = 0; step < steps; ++step) {
+    const Eigen::Vector3d velocity = s.linear_momentum / s.mass;
+    const Eigen::Vector3d force =
+        -s.interaction_force - s.mass * rate * rate * (s.centre_of_mass - centre) - 2.0 * s.mass * rate * velocity;
+    const Eigen::Vector3d torque = -s.interaction_torque + inertia * rate * (target - s.angular_velocity);
+    backend->set_external_wrench(sphere, force, torque);
+    backend->step();
+    s = backend->rigid_body_state(sphere);
+    const double fluid_torque = s.interaction_torque.z();
+    if (step >= window_start) {
+      window_sum += fluid_torque;
+      m.omega_deviation = std::max(m.omega_deviation, std::abs(s.angular_velocity.z() - omega) / omega);
+    } else if (step >= earlier_start) {
+      earlier_sum += fluid_torque;
+    }
+    if ((step + 1) % sample_every == 0) {
+      m.time.push_back(backend->time());
+      m.torque_history.push_back(fluid_torque);
+    }
+  }
+  m.torque = window_sum / static_cast<double>(steps - window_start);
+  m.torque_earlier = earlier_sum / static_cast<double>(window_start - earlier_start);
+  return m;
+}
+
+}  // namespace mssph::validation

@@ -1,0 +1,28 @@
+#pragma once
+// What the measuring code of several cases shares: a body found by name, and steps counted in time.
+#include "backend/backend.hpp"
+#include "config/scene.hpp"
+#include "model/particle_setup.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace mssph::validation {
+
+// The index of the body `name`; a scene without it is a broken case (std::runtime_error).
+inline std::size_t body_index(const ParticleSetup& setup, const std::string& name, const Scene& scene) {
+  for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
+    if (setup.bodies[b].name == name) return b;
+  }
+  throw std::runtime_error(scene.source_file + ": this measurement needs a body \"" + name + "\"");
+}
+
+// Whole steps of `dt` in `seconds`.
+inline std::size_t steps_for(double seconds, double dt) { return static_cast<std::size_t>(std::llround(seconds / dt)); }
+
+inline void run_steps(Backend& backend, std::size_t steps) {
+  for (std::size_t s = 0; s < steps; ++s) backend.step();
+}
+
+}  // namespace mssph::validation
