@@ -72,29 +72,14 @@ DeviceRecording read_device_recording(const std::string& path, const RecordingLi
   return out;
 }
 
-void write_device_recording(const std::string& path, const DeviceRecording& recording) {
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
+std::string device_recording_bytes(const std::string& path, const DeviceRecording& recording) {
   RawRecording raw;
   raw.time = recording.time;
   for (const Pose& p : recording.pose) {
     const Eigen::Quaterniond& q = p.orientation;
     raw.pose.push_back({p.position.x(), p.position.y(), p.position.z(), q.x(), q.y(), q.z(), q.w()});
   }
-  // Written whole under a temporary name, then renamed: `path` never holds half a recording.
-  const std::string partial = path + ".partial";
-  try {
-    if (format_of(path) == Format::csv) {
-      write_csv_recording(partial, raw);
-    } else {
-      write_hdf5_recording(partial, raw);
-    }
-    std::filesystem::rename(partial, path);
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(partial, ignored);
-    throw;
-  }
+  return format_of(path) == Format::csv ? csv_recording_text(raw) : hdf5_recording_image(raw);
 }
 
 }  // namespace mssph
