@@ -57,6 +57,10 @@ struct Tag {
   nlohmann::json value;
 };
 
+// The longest tag name: an attribute's name lives in its object's header, whose messages HDF5
+// caps at 64 KiB; 255 bytes is as long as any file name.
+constexpr std::size_t kMaxTagNameBytes = 255;
+
 // NAME=VALUE; NAME becomes an attribute name, so it is not empty and has no '/' (which h5py
 // tools read as a path).
 std::vector<Tag> parse_tags(const std::vector<std::string>& tags) {
@@ -64,8 +68,11 @@ std::vector<Tag> parse_tags(const std::vector<std::string>& tags) {
   for (const std::string& tag : tags) {
     const auto equals = tag.find('=');
     const std::string name = tag.substr(0, equals);
-    if (equals == std::string::npos || name.empty() || name.find('/') != std::string::npos) {
-      throw InputError("--tag " + tag + ": expected NAME=VALUE with a NAME without '/'");
+    if (equals == std::string::npos || name.empty() || name.find('/') != std::string::npos ||
+        name.size() > kMaxTagNameBytes) {
+      const std::string shown = tag.size() > 60 ? tag.substr(0, 60) + "..." : tag;
+      throw InputError("--tag " + shown + ": expected NAME=VALUE with a NAME of at most " +
+                       std::to_string(kMaxTagNameBytes) + " bytes, without '/'");
     }
     const std::string text = tag.substr(equals + 1);
     nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
