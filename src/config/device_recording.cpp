@@ -2,6 +2,9 @@
 
 #include "config/recording_formats.hpp"
 #include "util/errors.hpp"
+#include "util/file_kind.hpp"
+
+#include <sys/stat.h>
 
 #include <cctype>
 #include <charconv>
@@ -62,7 +65,11 @@ Pose checked_pose(const RawRecording& raw, std::size_t i, const std::string& pat
 void check_recording_path(const std::string& path) { format_of(path); }
 
 DeviceRecording read_device_recording(const std::string& path, const RecordingLimits& limits) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": no such device recording file");
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) throw InputError(path + ": no such device recording file");
+  if (!S_ISREG(st.st_mode)) {
+    throw InputError(path + ": is " + file_kind(st) + ", not a device recording file (a regular .csv or .h5 file)");
+  }
   const RawRecording raw = format_of(path) == Format::csv ? read_csv_recording(path) : read_hdf5_recording(path);
   if (raw.time.empty()) throw InputError(path + ": the device recording holds no sample");
   DeviceRecording out;

@@ -27,6 +27,8 @@ struct RecordingLimits {
 // in norm); beyond this the row is malformed (a zero or mistyped quaternion), not rounded.
 inline constexpr double kQuaternionNormTolerance = 1e-3;
 
+// Throws InputError naming `path` when there is no such file or it is not a regular file (a FIFO
+// is never opened: reading one would wait for a writer).
 DeviceRecording read_device_recording(const std::string& path, const RecordingLimits& limits);
 // The bytes of the file `path` holding `recording`, in the format its extension names.
 std::string device_recording_bytes(const std::string& path, const DeviceRecording& recording);

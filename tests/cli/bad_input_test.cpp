@@ -127,5 +127,19 @@ TEST_F(BadInput, ATagNameTooLongForAnAttribute) {
                   {"--tag nnnn", "at most 255 bytes"});
 }
 
+// A recorded trajectory that exists but is no regular file says what it is; a FIFO is not opened
+// (which would wait for a writer forever).
+TEST_F(BadInput, ARecordedTrajectoryThatIsNoRegularFile) {
+  ASSERT_EQ(mkfifo(work("fifo.csv").c_str(), 0644), 0);
+  std::filesystem::create_directory(work("folder.csv"));
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {work("fifo.csv"), "is a FIFO"}, {work("folder.csv"), "is a directory"}, {"/dev/null", "is a device"}};
+  for (const auto& [file, what] : cases) {
+    const std::string trajectory = nlohmann::json{{"source", "recorded"}, {"file", file}}.dump();
+    expect_rejected({"run", kTinyDrop, "--out", work("o.h5"), "--set", "proxy/trajectory=" + trajectory},
+                    {file + ": " + what});
+  }
+}
+
 }  // namespace
 }  // namespace mssph::test
