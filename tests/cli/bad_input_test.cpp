@@ -121,6 +121,13 @@ TEST_F(BadInput, ASceneNameTooLongForAFileName) {
   expect_rejected({"run", scene}, {"results/runs/nnn", "255 bytes"});
 }
 
+// An empty --out or --record-device is a mistake, not a request for the default (or for none).
+TEST_F(BadInput, AnEmptyOutputPath) {
+  expect_rejected({"run", kTinyDrop, "--out", ""}, {"--out", "expected a file name"});
+  expect_rejected({"run", kTinyDrop, "--out", work("o.h5"), "--record-device", ""},
+                  {"--record-device", "expected a file name"});
+}
+
 // An attribute name HDF5 cannot store (its object header messages hold at most 64 KiB).
 TEST_F(BadInput, ATagNameTooLongForAnAttribute) {
   expect_rejected({"run", kTinyDrop, "--out", work("o.h5"), "--tag", std::string(70000, 'n') + "=1"},
