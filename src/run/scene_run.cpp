@@ -356,6 +356,12 @@ std::string command_line_of(const SceneRunRequest& request) {
   return line;
 }
 
+void check_scene_run(const SceneRunRequest& request) {
+  const Scene scene = load_scene(request.scene_path, request.overrides);
+  parse_tags(request.tags);
+  check_outputs(request, scene, output_of(request, scene, resolve_backend_name(request.backend)));
+}
+
 SceneRunResult run_scene(const SceneRunRequest& request) {
   if (!request.restart.empty()) return continue_run(request);
   // Signals are caught from the start, so that one arriving during set-up ends the run cleanly
