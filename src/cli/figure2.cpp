@@ -6,7 +6,7 @@
 #include "io/run_log.hpp"
 #include "model/block_scene.hpp"
 #include "model/scene_builder.hpp"
-#include "run/python_script.hpp"
+#include "run/script_outputs.hpp"
 #include "run/step_timing.hpp"
 #include "util/build_info.hpp"
 #include "util/errors.hpp"
@@ -164,6 +164,9 @@ int make_figure2(const Figure2Options& options, const std::string& command_line)
   if (!(options.min_seconds > 0.0)) throw InputError("--min-time: expected a positive number of seconds");
   const std::string backend_name = resolve_backend_name(options.backend);
   const std::string path = (std::filesystem::path(options.out) / "figure2.h5").string();
+  check_script_outputs(options.out,
+                       {"figure2.csv", "figure2.png", "figure2.svg", "figure2_loglog.png", "figure2_loglog.svg"},
+                       options.force);
 
   // The backend's own description (device name) names the file's machine: build the smallest
   // scene once to ask it.
@@ -182,7 +185,9 @@ int make_figure2(const Figure2Options& options, const std::string& command_line)
     time_all_sizes(log, options, media, sizes, geometry, backend_name, timing);
   }  // closed: the plotting script reads it
   std::cout << "figure 2: timings in " << path << std::endl;
-  return run_python_script("figures/figure2.py", {path, "--out", options.out}) == 0 ? kExitOk : kExitOther;
+  const auto arguments = [&](const std::string& folder) { return std::vector<std::string>{path, "--out", folder}; };
+  return run_python_script_into("figures/figure2.py", arguments, options.out, options.force) == 0 ? kExitOk
+                                                                                                  : kExitOther;
 }
 
 }  // namespace mssph::cli

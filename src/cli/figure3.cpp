@@ -2,10 +2,9 @@
 // simulated Virtuose, dropped on a 50 x 50 x 20 cm rigid, deformable and fluid block. Each drop is
 // an ordinary run with its own HDF5 log; scripts/figures/figure3.py draws the three force curves
 // on one graph and checks their shapes against physics.
-#include "config/scene_loader.hpp"
 #include "figure_command.hpp"
-#include "run/python_script.hpp"
 #include "run/scene_run.hpp"
+#include "run/script_outputs.hpp"
 #include "util/errors.hpp"
 
 #include <cstdio>
@@ -63,14 +62,10 @@ int make_figure3(const Figure3Options& options) {
     r.overrides.insert(r.overrides.end(), options.overrides.begin(), options.overrides.end());
     requests.push_back(std::move(r));
   }
-  // Every scene is loaded with its overrides, and every output checked, before the first run
-  // starts: a bad --set or an earlier figure in the way fails at once.
-  for (const SceneRunRequest& r : requests) {
-    load_scene(r.scene_path, r.overrides);
-    if (!options.force && fs::exists(r.output)) {
-      throw InputError("--out " + options.out + ": " + r.output + " exists; pass --force to replace it");
-    }
-  }
+  // Every scene is loaded with its overrides, and every output checked as its run will check it,
+  // before the first run starts: a bad --set or an earlier figure in the way fails at once.
+  for (const SceneRunRequest& r : requests) check_scene_run(r);
+  check_script_outputs(options.out, {"figure3.png", "figure3.svg", "figure3_checks.json"}, options.force);
   for (std::size_t m = 0; m < requests.size(); ++m) {
     std::fprintf(stderr, "figure 3: run %zu of 3, %s block at %s resolution (%.0f cm)\n", m + 1, media[m].c_str(),
                  options.resolution.c_str(), 100.0 * spacing);
@@ -81,9 +76,13 @@ int make_figure3(const Figure3Options& options) {
       return result.exit_code;
     }
   }
-  std::vector<std::string> arguments{"--out", options.out, "--resolution", options.resolution};
-  for (const SceneRunRequest& r : requests) arguments.push_back(r.output);
-  return run_python_script("figures/figure3.py", arguments) == 0 ? kExitOk : kExitOther;
+  const auto arguments = [&](const std::string& folder) {
+    std::vector<std::string> list{"--out", folder, "--resolution", options.resolution};
+    for (const SceneRunRequest& r : requests) list.push_back(r.output);
+    return list;
+  };
+  return run_python_script_into("figures/figure3.py", arguments, options.out, options.force) == 0 ? kExitOk
+                                                                                                  : kExitOther;
 }
 
 }  // namespace mssph::cli

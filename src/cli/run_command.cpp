@@ -7,6 +7,7 @@
 #include "util/errors.hpp"
 
 #include <iostream>
+#include <utility>
 
 namespace mssph::cli {
 
@@ -90,15 +91,24 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "would have, bit for bit, on the same backend and machine (root attribute `restarts` lists each).\n"
       "\n"
       "Exit codes: 0 completed (or --dry-run); 1 other error (disk full or another I/O failure: the\n"
-      "log is kept as <file>.partial, marked \"failed: ...\" where the disk allowed it); 2 bad input\n"
+      "log is kept as <file>.partial, marked \"failed: ...\" where the disk allowed it; or a completed\n"
+      "run whose --record-device file could not be written, which it says); 2 bad input\n"
       "(scene file, --set, --backend, --out, --record-device, a run too large for this machine): no\n"
       "output is written; 3 simulation failure (blow-up): <file>.partial is kept, marked \"failed:\n"
       "...\"; 130, 143, 129 interrupted by SIGINT, SIGTERM, SIGHUP: <file>.partial is kept, marked\n"
       "\"interrupted: ...\".");
-  cmd->callback([args, &exit_code] {
+  cmd->callback([args, cmd, &exit_code] {
     guarded(exit_code, [&] {
       if (args->scene_path.empty() && args->restart.empty()) {
         throw InputError("run: a scene file is required (or --restart LOG to continue an unfinished run)");
+      }
+      // An empty path (an unset shell variable, say) is a mistake, not a request for the default.
+      const std::pair<const char*, const std::string*> paths[] = {{"--out", &args->output},
+                                                                  {"--record-device", &args->record_device}};
+      for (const auto& [option, path] : paths) {
+        if (cmd->count(option) > 0 && path->empty()) {
+          throw InputError(std::string(option) + ": expected a file name, got an empty one");
+        }
       }
       return run_scene(*args).exit_code;
     });

@@ -5,7 +5,8 @@
 #include "framework/backends.hpp"
 #include "framework/report.hpp"
 #include "guarded.hpp"
-#include "run/python_script.hpp"
+#include "io/output_file.hpp"
+#include "run/script_outputs.hpp"
 #include "util/build_info.hpp"
 #include "util/errors.hpp"
 #include "util/host_info.hpp"
@@ -29,6 +30,7 @@ struct ValidateArgs {
   std::vector<std::string> cases;
   std::string out = "results/runs/validation";
   std::uint64_t seed = 0;  // 0: fresh
+  bool force = false;      // replace an earlier report's files in `out`
 };
 
 std::string utc_now() {
@@ -70,6 +72,34 @@ std::vector<const ValidationCase*> selected_cases(const ValidateArgs& args) {
   return chosen;
 }
 
+// The files of the report, checked before any case runs: an earlier report's are replaced only with
+// --force (regular files only), so a refused validation changes nothing in the folder. The plots
+// are <suite>_<case>_<series>.png, and kernels_errors.png for the kernels suite; the cases' run
+// logs go under runs/.
+void check_report_outputs(const ValidateArgs& args, const std::vector<const ValidationCase*>& cases) {
+  namespace fs = std::filesystem;
+  const fs::path out(args.out);
+  std::vector<std::string> names{"report.json", "validation.h5", "report.md"};
+  if (std::any_of(cases.begin(), cases.end(), [](const ValidationCase* c) { return c->suite == "kernels"; })) {
+    names.push_back("kernels_errors.png");
+  }
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(out, error)) {
+    const std::string name = entry.path().filename().string();
+    for (const ValidationCase* c : cases) {
+      const std::string prefix = c->suite + "_" + c->name + "_";
+      if (name.rfind(prefix, 0) == 0 && entry.path().extension() == ".png") names.push_back(name);
+    }
+  }
+  for (const std::string& name : names) check_output_file("--out", (out / name).string(), args.force);
+  const fs::path runs = out / "runs";
+  if (!args.force && fs::is_directory(runs, error) && !fs::is_empty(runs, error)) {
+    throw InputError("--out " + args.out + ": " + runs.string() +
+                     " holds the run logs of an earlier validation; pass --force to replace them, or choose another "
+                     "folder");
+  }
+}
+
 std::string command_line(const ValidateArgs& args) {
   std::string line = "mssph validate";
   if (args.quick) line += " --quick";
@@ -82,12 +112,14 @@ std::string command_line(const ValidateArgs& args) {
 
 int run_validate(const ValidateArgs& args) {
   const std::vector<const ValidationCase*> cases = selected_cases(args);
+  check_report_outputs(args, cases);
 
   CaseContext context;
   context.quick = args.quick;
   context.seed = args.seed ? args.seed : std::random_device{}();
   context.validation_dir = validation_dir();
   context.work_dir = (std::filesystem::path(args.out) / "runs").string();
+  context.replace_logs = args.force;
   if (args.backend == "auto") {
     context.physics_backend = resolve_backend_name("auto");
   } else {
@@ -142,9 +174,14 @@ int run_validate(const ValidateArgs& args) {
   print_table(info, runs);
   const std::string json_path = (std::filesystem::path(args.out) / "report.json").string();
   const std::string h5_path = (std::filesystem::path(args.out) / "validation.h5").string();
-  write_report_json(json_path, info, runs);
-  write_report_hdf5(h5_path, info, runs);
-  const int plotted = run_python_script("validation/report.py", {json_path, h5_path, args.out});
+  OutputFile(json_path, args.force).write(report_json_text(info, runs));
+  OutputFile(h5_path, args.force).write(report_hdf5_image(info, runs));
+  const int plotted = run_python_script_into(
+      "validation/report.py",
+      [&](const std::string& folder) {
+        return std::vector<std::string>{json_path, h5_path, folder};
+      },
+      args.out, args.force);
   if (plotted != 0) {
     std::cerr << "error: scripts/validation/report.py failed (exit " << plotted << "): " << args.out
               << "/report.md is missing or incomplete\n";
@@ -174,13 +211,18 @@ void add_validate_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", args->out, "Output folder for report.md, report.json, validation.h5 and plots")
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Seed of the random perturbations (default: fresh, printed)");
+  cmd->add_flag("--force", args->force,
+                "Replace an earlier report's files and run logs in --out (regular files only, never a directory, "
+                "device or symbolic link)");
   cmd->footer(
       "Each case states its expectation (formula and source), tolerance and reason in\n"
       "validation/<suite>/<case>/README.md. A case that cannot run here (e.g. cuda without a GPU) is\n"
       "SKIPPED with the reason, never PASS.\n"
       "\n"
+      "An earlier report in --out is replaced only with --force.\n"
+      "\n"
       "Exit codes: 0 every case passed or was skipped; 1 a case failed (or the report could not be\n"
-      "written); 2 bad arguments.");
+      "written); 2 bad arguments, or an earlier report in the way (nothing is run).");
   cmd->callback([args, &exit_code] { guarded(exit_code, [&] { return run_validate(*args); }); });
 }
 

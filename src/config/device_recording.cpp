@@ -2,6 +2,9 @@
 
 #include "config/recording_formats.hpp"
 #include "util/errors.hpp"
+#include "util/file_kind.hpp"
+
+#include <sys/stat.h>
 
 #include <cctype>
 #include <charconv>
@@ -62,7 +65,11 @@ Pose checked_pose(const RawRecording& raw, std::size_t i, const std::string& pat
 void check_recording_path(const std::string& path) { format_of(path); }
 
 DeviceRecording read_device_recording(const std::string& path, const RecordingLimits& limits) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": no such device recording file");
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) throw InputError(path + ": no such device recording file");
+  if (!S_ISREG(st.st_mode)) {
+    throw InputError(path + ": is " + file_kind(st) + ", not a device recording file (a regular .csv or .h5 file)");
+  }
   const RawRecording raw = format_of(path) == Format::csv ? read_csv_recording(path) : read_hdf5_recording(path);
   if (raw.time.empty()) throw InputError(path + ": the device recording holds no sample");
   DeviceRecording out;
@@ -72,29 +79,14 @@ DeviceRecording read_device_recording(const std::string& path, const RecordingLi
   return out;
 }
 
-void write_device_recording(const std::string& path, const DeviceRecording& recording) {
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
+std::string device_recording_bytes(const std::string& path, const DeviceRecording& recording) {
   RawRecording raw;
   raw.time = recording.time;
   for (const Pose& p : recording.pose) {
     const Eigen::Quaterniond& q = p.orientation;
     raw.pose.push_back({p.position.x(), p.position.y(), p.position.z(), q.x(), q.y(), q.z(), q.w()});
   }
-  // Written whole under a temporary name, then renamed: `path` never holds half a recording.
-  const std::string partial = path + ".partial";
-  try {
-    if (format_of(path) == Format::csv) {
-      write_csv_recording(partial, raw);
-    } else {
-      write_hdf5_recording(partial, raw);
-    }
-    std::filesystem::rename(partial, path);
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(partial, ignored);
-    throw;
-  }
+  return format_of(path) == Format::csv ? csv_recording_text(raw) : hdf5_recording_image(raw);
 }
 
 }  // namespace mssph

@@ -4,7 +4,8 @@
 //   .csv          header t,x,y,z,qx,qy,qz,qw (any column order), one row per sample;
 //   .h5 / .hdf5   datasets /device/t [N] (s) and /device/pose [N, 7] (x, y, z, qx, qy, qz, qw).
 // Reading validates every row and names the file and the row of the first problem (InputError).
-// Writing uses the same formats, so a run's own trajectory can be replayed (`--record-device`).
+// Writing uses the same formats, so a run's own trajectory can be replayed (`--record-device`):
+// this layer makes the file's bytes, which the run writes as any output (io/output_file.hpp).
 #include "util/pose.hpp"
 
 #include <string>
@@ -26,8 +27,11 @@ struct RecordingLimits {
 // in norm); beyond this the row is malformed (a zero or mistyped quaternion), not rounded.
 inline constexpr double kQuaternionNormTolerance = 1e-3;
 
+// Throws InputError naming `path` when there is no such file or it is not a regular file (a FIFO
+// is never opened: reading one would wait for a writer).
 DeviceRecording read_device_recording(const std::string& path, const RecordingLimits& limits);
-void write_device_recording(const std::string& path, const DeviceRecording& recording);
+// The bytes of the file `path` holding `recording`, in the format its extension names.
+std::string device_recording_bytes(const std::string& path, const DeviceRecording& recording);
 
 // Throws InputError unless `path` names a format above (by extension).
 void check_recording_path(const std::string& path);

@@ -11,6 +11,20 @@
 namespace mssph {
 namespace {
 
+// A message as a terminal can show it: a key may hold a NUL character ("\u0000" in JSON), which
+// would otherwise end the message where it is printed as a C string.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '\0') {
+      out += "\\u0000";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 std::string format_number(double x) {
   std::ostringstream out;
   out << x;
@@ -103,11 +117,11 @@ JsonReader::JsonReader(const nlohmann::json& value, std::string file, std::strin
 std::string JsonReader::key_pointer(const std::string& key) const { return pointer_ + "/" + escape_pointer_token(key); }
 
 void JsonReader::fail(const std::string& key, const std::string& message) const {
-  throw InputError(file_ + ": " + key_pointer(key) + ": " + message, key_pointer(key));
+  throw InputError(printable(file_ + ": " + key_pointer(key) + ": " + message), key_pointer(key));
 }
 
 void JsonReader::fail_here(const std::string& message) const {
-  throw InputError(file_ + ": " + (pointer_.empty() ? std::string("/") : pointer_) + ": " + message,
+  throw InputError(printable(file_ + ": " + (pointer_.empty() ? std::string("/") : pointer_) + ": " + message),
                    pointer_.empty() ? std::string("/") : pointer_);
 }
 

@@ -9,7 +9,6 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <stdexcept>
 
 namespace mssph {
 namespace {
@@ -100,9 +99,8 @@ RawRecording read_csv_recording(const std::string& path) {
   return out;
 }
 
-void write_csv_recording(const std::string& path, const RawRecording& recording) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot write the device recording");
+std::string csv_recording_text(const RawRecording& recording) {
+  std::ostringstream out;
   for (std::size_t k = 0; k < kRecordingColumns.size(); ++k) out << (k ? "," : "") << kRecordingColumns[k];
   out << "\n";
   // Shortest round-trip decimal form (std::to_chars): a replay reads back the same doubles.
@@ -119,7 +117,7 @@ void write_csv_recording(const std::string& path, const RawRecording& recording)
     }
     out << '\n';
   }
-  if (!out) throw std::runtime_error(path + ": writing the device recording failed");
+  return out.str();
 }
 
 }  // namespace mssph

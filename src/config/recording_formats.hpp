@@ -29,9 +29,11 @@ inline constexpr std::size_t kMaxRecordingSamples = 10'000'000;
 inline const std::array<const char*, 8> kRecordingColumns = {"t", "x", "y", "z", "qx", "qy", "qz", "qw"};
 
 RawRecording read_csv_recording(const std::string& path);
-void write_csv_recording(const std::string& path, const RawRecording& recording);
+// The text of a CSV recording: the header, then one line per sample.
+std::string csv_recording_text(const RawRecording& recording);
 
 RawRecording read_hdf5_recording(const std::string& path);
-void write_hdf5_recording(const std::string& path, const RawRecording& recording);
+// The bytes of an HDF5 recording, built in memory (h5::in_memory_file).
+std::string hdf5_recording_image(const RawRecording& recording);
 
 }  // namespace mssph

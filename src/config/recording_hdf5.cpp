@@ -213,9 +213,9 @@ RawRecording read_hdf5_recording(const std::string& path) {
   throw std::runtime_error(message);
 }
 
-void write_hdf5_recording(const std::string& path, const RawRecording& recording) {
+std::string hdf5_recording_image(const RawRecording& recording) {
   h5::silence_error_printing();
-  h5::Handle file = h5::file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create " + path);
+  h5::Handle file = h5::in_memory_file("device recording");
   h5::open_or_create_group(file.id(), "/device");
   const hsize_t n = recording.time.size();
   std::vector<double> flat;
@@ -224,9 +224,12 @@ void write_hdf5_recording(const std::string& path, const RawRecording& recording
   write_dataset(file.id(), kTimePath, recording.time, {n}, "s", "time of each device sample");
   write_dataset(file.id(), kPosePath, flat, {n, 7}, "m, m, m, 1, 1, 1, 1",
                 "handle pose in the device frame: position and unit quaternion (scalar last)");
-  std::vector<std::string> columns(kRecordingColumns.begin() + 1, kRecordingColumns.end());
-  h5::Handle pose = h5::dataset(H5Dopen2(file.id(), kPosePath, H5P_DEFAULT), std::string("open ") + kPosePath);
-  h5::write_attribute(pose.id(), "columns", columns);
+  {
+    std::vector<std::string> columns(kRecordingColumns.begin() + 1, kRecordingColumns.end());
+    h5::Handle pose = h5::dataset(H5Dopen2(file.id(), kPosePath, H5P_DEFAULT), std::string("open ") + kPosePath);
+    h5::write_attribute(pose.id(), "columns", columns);
+  }
+  return h5::file_image(file.id());
 }
 
 }  // namespace mssph

@@ -189,9 +189,12 @@ BodyConfig read_body(const std::string& name, const JsonReader& reader,
                      "fixed_regions",
                      "fill_around_bodies",
                      "description"});
-  // The name becomes the run log's HDF5 group /bodies/<name>, where '/' would nest groups.
-  if (name.empty() || name.find('/') != std::string::npos) {
-    reader.fail_here("expected a body name that is non-empty and has no '/' (it names the HDF5 group /bodies/<name>)");
+  // The name becomes the run log's HDF5 group /bodies/<name>, where '/' would nest groups, "."
+  // would be /bodies itself, and a NUL character would end the name.
+  if (name.empty() || name == "." || name.find_first_of(std::string("/\0", 2)) != std::string::npos) {
+    reader.fail_here(
+        "expected a body name that is non-empty and has no '/' or NUL character, and is not \".\" (it names the "
+        "HDF5 group /bodies/<name>)");
   }
   reader.string_or("description", "");  // documentation only, but a string like everywhere else
   BodyConfig body;
@@ -504,6 +507,8 @@ Scene parse_scene(const nlohmann::json& document, const std::string& file) {
   if (scene.name.empty() || scene.name.find_first_of("/\\ ") != std::string::npos) {
     root.fail("name", "expected a non-empty name without spaces or slashes (it names output files)");
   }
+  // A NUL character would end the name where a file name is made of it.
+  if (scene.name.find('\0') != std::string::npos) root.fail("name", "expected a name without a NUL character");
   scene.description = root.string_or("description", "");
   scene.simulation = read_simulation(root);
   const auto materials = read_materials(root);

@@ -1,6 +1,7 @@
 #include "haptics/haptics_run.hpp"
 
 #include "haptics/coupling_stability.hpp"
+#include "io/output_file.hpp"
 #include "util/errors.hpp"
 
 #include <algorithm>
@@ -31,10 +32,13 @@ void check_device_recording_request(const Scene& scene, const std::string& path)
   check_recording_path(path);
 }
 
-HapticsRun::HapticsRun(const Scene& scene, const ParticleSetup& setup, RunLog& log, std::string record_device)
-    : session_(scene.proxy->haptics, proxy_model_of(scene, setup), setup.dt),
+HapticsRun::HapticsRun(const Scene& scene, const ParticleSetup& setup, RunLog& log, std::string record_device,
+                       bool replace)
+    : run_log_(log),
+      session_(scene.proxy->haptics, proxy_model_of(scene, setup), setup.dt),
       log_(log),
       record_device_(std::move(record_device)),
+      replace_recording_(replace),
       dt_(setup.dt) {
   session_.add_sink(log_);
   session_.add_sink(metrics_);
@@ -44,20 +48,37 @@ HapticsRun::HapticsRun(const Scene& scene, const ParticleSetup& setup, RunLog& l
   log.set_attribute("/haptics", "haptic_period_s", session_.period());
 }
 
-void HapticsRun::write_results(std::size_t steps, double wall_seconds) {
+void HapticsRun::write_summary(std::size_t steps, double wall_seconds) {
   log_.write_summary(metrics_,
                      HapticRunTotals{steps, session_.state_queries(), static_cast<double>(steps) * dt_, wall_seconds});
-  if (!record_device_.empty()) write_device_recording(record_device_, recorder_.recording());
+}
+
+void HapticsRun::write_recording() {
+  if (record_device_.empty()) return;
+  const DeviceRecording& recording = recorder_.recording();
+  const std::string head = "--record-device " + record_device_ + ": the recording of " +
+                           std::to_string(recording.time.size()) + " haptic ticks ";
+  try {
+    OutputFile(record_device_, replace_recording_).write(device_recording_bytes(record_device_, recording));
+  } catch (const OutputKeptAside& e) {
+    recording_error_ = head + "is whole but not at its name: " + e.what() + "; nothing is lost";
+  } catch (const std::exception& e) {
+    recording_error_ = head + "was not written (" + e.what() +
+                       "); only that file is lost: the simulation completed, and its log holds the same poses, one "
+                       "per tick, in /haptics/device/position and /haptics/device/orientation";
+  }
+  if (!recording_error_.empty()) run_log_.set_attribute("/", "record_device_error", recording_error_);
 }
 
 void HapticsRun::finish(Backend& backend, std::size_t steps, double wall_seconds) {
   session_.finish(backend, steps);
-  write_results(steps, wall_seconds);
+  write_summary(steps, wall_seconds);
+  write_recording();
 }
 
 void HapticsRun::finish_failed(std::size_t steps, double wall_seconds) noexcept {
   try {
-    write_results(steps, wall_seconds);
+    write_summary(steps, wall_seconds);
   } catch (const std::exception&) {
     // The run already failed for a reason the caller reports; its log says so.
   }

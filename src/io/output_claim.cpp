@@ -1,6 +1,7 @@
 #include "io/output_claim.hpp"
 
 #include "util/errors.hpp"
+#include "util/file_kind.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -9,25 +10,23 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <climits>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 namespace mssph {
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string what_is(const struct stat& st) {
-  if (S_ISDIR(st.st_mode)) return "a directory";
-  if (S_ISLNK(st.st_mode)) return "a symbolic link";
-  if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return "a device";
-  if (S_ISFIFO(st.st_mode)) return "a FIFO";
-  if (S_ISSOCK(st.st_mode)) return "a socket";
-  return "not a regular file";
-}
+// Bytes a claim adds to its output's name: ".partial".
+constexpr std::size_t kPartialSuffixBytes = 8;
+// The longest name of one file or folder (Linux file systems).
+constexpr std::size_t kNameMax = NAME_MAX;
 
 // Renames without replacing an existing `to` (Linux renameat2; link + unlink where the file
 // system lacks it). False when `to` exists.
@@ -45,26 +44,117 @@ bool rename_no_replace(const std::string& from, const std::string& to) {
   return true;
 }
 
-void sync_directory_of(const std::string& path) {
-  const fs::path parent = fs::path(path).parent_path();
-  const int dir = open(parent.empty() ? "." : parent.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dir < 0) return;  // durability of the rename only; the file itself is synced
-  fsync(dir);
-  close(dir);
+// Removes directories a claim created, deepest first; one that is no longer empty stays.
+void remove_directories(const std::vector<fs::path>& created) noexcept {
+  for (auto it = created.rbegin(); it != created.rend(); ++it) rmdir(it->c_str());
+}
+
+// Creates the missing directories above `path`, shallowest first, and returns those it created,
+// so that a claim refused after them can remove them again.
+std::vector<fs::path> create_parents(const std::string& option, const std::string& path) {
+  std::vector<fs::path> missing;
+  std::error_code error;
+  for (fs::path p = fs::path(path).parent_path(); !p.empty() && !fs::exists(fs::symlink_status(p, error));
+       p = p.parent_path()) {
+    missing.push_back(p);
+  }
+  std::vector<fs::path> created;
+  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+    if (mkdir(it->c_str(), 0777) == 0) {
+      created.push_back(*it);
+    } else if (errno != EEXIST) {
+      const std::string why = std::strerror(errno);
+      remove_directories(created);
+      throw InputError(option + " " + path + ": cannot create " + it->string() + ": " + why);
+    }
+  }
+  return created;
+}
+
+// Whether the file descriptor `fd` is the file `path` names now.
+bool names_file(const std::string& path, int fd) {
+  struct stat open_file {};
+  struct stat named {};
+  return fstat(fd, &open_file) == 0 && lstat(path.c_str(), &named) == 0 && open_file.st_ino == named.st_ino &&
+         open_file.st_dev == named.st_dev;
 }
 
 }  // namespace
+
+bool locked_by_another_run(const std::string& path) {
+  const int fd = open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return false;
+  struct stat st {};
+  const bool busy =
+      fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  close(fd);
+  return busy;
+}
 
 void check_replaceable(const std::string& option, const std::string& path, bool replace) {
   struct stat st {};
   if (lstat(path.c_str(), &st) != 0) return;  // nothing there (or unreachable: creating it will say)
   const std::string head = option + " " + path + ": ";
   if (!S_ISREG(st.st_mode)) {
-    throw InputError(head + "is " + what_is(st) + "; mssph writes only regular files" +
+    throw InputError(head + "is " + file_kind(st) + "; mssph writes only regular files" +
                      (S_ISLNK(st.st_mode) ? " and does not follow links (give the link's target)" : "") +
                      ", and never replaces anything else, even with --force");
   }
+  if (locked_by_another_run(path)) {
+    throw InputError(head + "another run is writing it (it holds the file locked); never replaced, even with --force");
+  }
   if (!replace) throw InputError(head + "exists; pass --force to replace it, or choose another name");
+}
+
+void check_file_name(const std::string& option, const std::string& path, std::size_t suffix_bytes) {
+  const fs::path p(path);
+  const std::string head = option + " " + path + ": ";
+  for (const fs::path& part : p.parent_path()) {
+    if (part.native().size() > kNameMax) {
+      throw InputError(head + "a folder name there is " + std::to_string(part.native().size()) +
+                       " bytes, more than the " + std::to_string(kNameMax) + " bytes a file name may have");
+    }
+  }
+  const std::size_t name = p.filename().native().size();
+  if (name + suffix_bytes > kNameMax) {
+    throw InputError(head + "its file name is " + std::to_string(name) + " bytes; with the " +
+                     std::to_string(suffix_bytes) + " bytes mssph adds to name its temporary file, that passes the " +
+                     std::to_string(kNameMax) + " bytes a file name may have");
+  }
+}
+
+std::string rename_into_place(const std::string& from, const std::string& to, bool replace) {
+  if (!replace) return rename_no_replace(from, to) ? "" : "appeared while the run was writing";
+  const int there = open(to.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (there < 0 && errno == ELOOP) return "is now a symbolic link, which mssph never replaces";
+  if (there >= 0) {
+    struct stat st {};
+    std::string refused;
+    if (fstat(there, &st) != 0 || !S_ISREG(st.st_mode)) {
+      refused = "is now " + file_kind(st) + ", which mssph never replaces";
+    } else if (flock(there, LOCK_SH | LOCK_NB) != 0) {
+      // A writer holds it (a claim's exclusive lock); readers, which share theirs, keep the file
+      // they opened.
+      refused = "is being written by another run, which holds it locked";
+    }
+    if (!refused.empty()) {
+      close(there);
+      return refused;
+    }
+  }
+  const bool moved = std::rename(from.c_str(), to.c_str()) == 0;
+  const int error = errno;
+  if (there >= 0) close(there);  // the lock goes with it, on the replaced file
+  if (!moved) throw std::runtime_error("cannot rename " + from + " to " + to + ": " + std::strerror(error));
+  return "";
+}
+
+void sync_parent_directory(const std::string& path) {
+  const fs::path parent = fs::path(path).parent_path();
+  const int dir = open(parent.empty() ? "." : parent.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir < 0) return;  // durability of the rename only; the file itself is synced
+  fsync(dir);
+  close(dir);
 }
 
 bool same_file(const std::string& a, const std::string& b) {
@@ -75,16 +165,16 @@ bool same_file(const std::string& a, const std::string& b) {
 
 void check_claimable(const std::string& path, bool replace) {
   const std::string partial = path + ".partial";
+  check_file_name("--out", path, kPartialSuffixBytes);
   check_replaceable("--out", path, replace);
   struct stat st {};
   if (lstat(partial.c_str(), &st) != 0) return;
   if (!S_ISREG(st.st_mode)) {
-    throw InputError("--out " + path + ": " + partial + " (where the run would write) is " + what_is(st));
+    throw InputError("--out " + path + ": " + partial + " (where the run would write) is " + file_kind(st));
   }
-  const int existing = open(partial.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-  const bool busy = existing >= 0 && flock(existing, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
-  if (existing >= 0) close(existing);
-  if (busy) throw InputError("--out " + path + ": another run is writing it (it holds " + partial + ")");
+  if (locked_by_another_run(partial)) {
+    throw InputError("--out " + path + ": another run is writing it (it holds " + partial + ")");
+  }
   if (!replace) {
     throw InputError("--out " + path + ": " + partial +
                      " is the log of an earlier run that did not finish; pass --force to replace it, or move it away");
@@ -94,30 +184,29 @@ void check_claimable(const std::string& path, bool replace) {
 OutputClaim::OutputClaim(const std::string& path, bool replace) : path_(path), replace_(replace) {
   const std::string partial = partial_path();
   check_claimable(path, replace);
-  struct stat st {};
-  const fs::path parent = fs::path(path).parent_path();
-  if (!parent.empty()) {
-    std::error_code error;
-    fs::create_directories(parent, error);
-    if (error) throw InputError("--out " + path + ": cannot create " + parent.string() + ": " + error.message());
-  }
-  fd_ = open(partial.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw InputError("--out " + path + ": cannot create " + partial + ": " + std::strerror(errno));
-  // The lock, then a check that the name still leads to the locked file: another run may have
-  // published (renamed) it between our open and our lock.
-  struct stat locked {};
-  const bool got_lock = flock(fd_, LOCK_EX | LOCK_NB) == 0;
-  if (!got_lock || fstat(fd_, &locked) != 0 || lstat(partial.c_str(), &st) != 0 || locked.st_ino != st.st_ino ||
-      locked.st_dev != st.st_dev) {
-    close(fd_);
+  const std::vector<fs::path> created = create_parents("--out", path);
+  const auto refuse = [&](const std::string& why) {
+    if (fd_ >= 0) close(fd_);
     fd_ = -1;
-    throw InputError("--out " + path + ": another run is writing it (it holds " + partial + ")");
+    remove_directories(created);
+    throw InputError("--out " + path + ": " + why);
+  };
+  const std::string busy = "another run is writing it (it holds " + partial + ")";
+  // A leftover partial file (check_claimable let it through: `replace` is set) is removed, not
+  // emptied, while a shared lock on it shows that no run is writing it: any other name of the
+  // file (a hard link) keeps its contents.
+  const int leftover = open(partial.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (leftover >= 0) {
+    const bool locked = flock(leftover, LOCK_SH | LOCK_NB) == 0;
+    if (locked) unlink(partial.c_str());
+    close(leftover);
+    if (!locked) refuse(busy);
   }
-  if (ftruncate(fd_, 0) != 0) {
-    const std::string why = std::strerror(errno);
-    release();
-    throw InputError("--out " + path + ": cannot empty " + partial + ": " + why);
-  }
+  fd_ = open(partial.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (fd_ < 0) refuse(errno == EEXIST ? busy : "cannot create " + partial + ": " + std::strerror(errno));
+  // The lock, then a check that the name still leads to the locked file: another run may have
+  // taken the new file for a leftover of its own between our open and our lock.
+  if (flock(fd_, LOCK_EX | LOCK_NB) != 0 || !names_file(partial, fd_)) refuse(busy);
 }
 
 OutputClaim OutputClaim::resume(const std::string& path) {
@@ -126,7 +215,7 @@ OutputClaim OutputClaim::resume(const std::string& path) {
   const std::string partial = claim.partial_path();
   struct stat st {};
   if (lstat(partial.c_str(), &st) != 0) throw InputError("--restart " + partial + ": no such file");
-  if (!S_ISREG(st.st_mode)) throw InputError("--restart " + partial + ": is " + what_is(st));
+  if (!S_ISREG(st.st_mode)) throw InputError("--restart " + partial + ": is " + file_kind(st));
   if (lstat(path.c_str(), &st) == 0) {
     throw InputError("--restart " + partial + ": " + path + " exists, where the finished log would go; move it away");
   }
@@ -187,17 +276,19 @@ void OutputClaim::publish() {
   if (fsync(fd_) != 0) {
     throw std::runtime_error("cannot sync " + partial_path() + " to disk: " + std::strerror(errno));
   }
-  if (replace_) {
-    if (std::rename(partial_path().c_str(), path_.c_str()) != 0) {
-      throw std::runtime_error("cannot rename " + partial_path() + " to " + path_ + ": " + std::strerror(errno));
-    }
-  } else if (!rename_no_replace(partial_path(), path_)) {
+  if (!names_file(partial_path(), fd_)) {
+    keep_partial_ = true;  // what lies at the name now is not this run's to remove
+    throw std::runtime_error(partial_path() + " was replaced by another program during the run: this run's log is " +
+                             "lost, and " + path_ + " is not written");
+  }
+  const std::string refused = rename_into_place(partial_path(), path_, replace_);
+  if (!refused.empty()) {
     keep_partial_ = true;
-    throw std::runtime_error(path_ + " appeared while the run was writing; its finished log is kept at " +
-                             partial_path() + " (pass --force to replace files)");
+    throw std::runtime_error(path_ + " " + refused + "; its finished log is kept at " + partial_path() +
+                             (replace_ ? "" : " (pass --force to replace files)"));
   }
   published_ = true;
-  sync_directory_of(path_);
+  sync_parent_directory(path_);
   release();
 }
 

@@ -2,12 +2,13 @@
 
 #include "util/errors.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -105,6 +106,10 @@ RunLogHeader read_run_log_header(const std::string& path) {
   header.config_path = h5::read_string_attribute(file, "config_path");
   header.backend = h5::read_string_attribute(file, "backend");
   header.record_device = h5::read_string_attribute(file, "record_device");
+  // Logs written before the attribute existed: their relative paths are taken as they are.
+  if (H5Aexists(file, "working_directory") > 0) {
+    header.working_directory = h5::read_string_attribute(file, "working_directory");
+  }
   header.phase_timing = h5::read_double_attribute(file, "phase_timing") != 0.0;
   header.checkpoint_interval = h5::read_double_attribute(file, "checkpoint_interval");
   return header;
@@ -114,7 +119,9 @@ RunLog::RunLog(const std::string& path, const RunMetadata& metadata, bool replac
     : RunLog(OutputClaim(path, replace), metadata) {}
 
 RunLog::RunLog(OutputClaim claim, const RunMetadata& metadata)
-    : claim_(std::move(claim)), path_(claim_.partial_path()) {
+    : claim_(std::move(claim)),
+      path_(claim_.partial_path()),
+      partial_sidecar_(path_ + ".xdmf", claim_.replaces(), /*durable=*/false) {
   h5::silence_error_printing();
   // The default (oldest compatible) file format matters: it has no "open for writing" flag, which
   // newer formats leave set in a killed run's file, making readers refuse it until h5clear is run.
@@ -140,30 +147,34 @@ RunLog::RunLog(OutputClaim claim, const RunMetadata& metadata)
   claim_.keep_partial();
 }
 
-RunLog::RunLog(OutputClaim claim, const Restart& restart) : claim_(std::move(claim)), path_(claim_.partial_path()) {
+RunLog::RunLog(OutputClaim claim, const Restart& restart)
+    : claim_(std::move(claim)),
+      path_(claim_.partial_path()),
+      // The sidecar of the log being continued, which its earlier process wrote.
+      partial_sidecar_(path_ + ".xdmf", /*replace=*/true, /*durable=*/false),
+      restart_command_(restart.command_line),
+      writing_(false) {
   h5::silence_error_printing();
   const std::string head = "--restart " + path_ + ": ";
-  const hid_t file = H5Fopen(path_.c_str(), H5F_ACC_RDWR, unlocked_file_access().id());
+  const hid_t file = H5Fopen(path_.c_str(), H5F_ACC_RDONLY, unlocked_file_access().id());
   if (file < 0) throw InputError(head + "not an HDF5 file this build can open");
   file_ = h5::file(file, "open " + path_);
   if (H5Aexists(file, "status") <= 0 || H5Aexists(file, "config") <= 0) throw InputError(head + "not an mssph run log");
   if (h5::read_string_attribute(file, "status") == "completed") throw InputError(head + "the run completed");
-  restart_ = read_latest_checkpoint(file);
+  try {
+    restart_ = read_latest_checkpoint(file);
+    if (restart_) read_snapshots_up_to(restart_->step);
+  } catch (const h5::Error& e) {
+    throw InputError(head + "damaged, cannot be continued (" + e.what() + ")");
+  }
   if (!restart_) {
     throw InputError(head +
                      "holds no checkpoint to continue from (runs write one with --checkpoint-interval, and on "
                      "SIGINT, SIGTERM or SIGHUP)");
   }
-  std::string restarts = H5Aexists(file, "restarts") > 0 ? h5::read_string_attribute(file, "restarts") : "";
-  restarts += "step " + std::to_string(restart_->step) + " at " + utc_now() + ": " + restart.command_line + "\n";
-  h5::write_attribute(file, "restarts", restarts);
-  set_status("running");
-  keep_snapshots_up_to(restart_->step);
-  ensure_space(0);
-  flush();
 }
 
-void RunLog::keep_snapshots_up_to(long long step) {
+void RunLog::read_snapshots_up_to(long long step) {
   if (!h5::object_exists(file_.id(), "/snapshots")) return;
   h5::Handle group = h5::group(H5Gopen2(file_.id(), "/snapshots", H5P_DEFAULT), "open /snapshots");
   std::vector<std::string> names;
@@ -177,8 +188,7 @@ void RunLog::keep_snapshots_up_to(long long step) {
     h5::Handle snapshot = h5::group(H5Gopen2(file_.id(), path.c_str(), H5P_DEFAULT), "open " + path);
     const auto snapshot_step = static_cast<long long>(h5::read_double_attribute(snapshot.id(), "step"));
     if (snapshot_step > step) {
-      snapshot.reset();
-      h5::check(H5Ldelete(file_.id(), path.c_str(), H5P_DEFAULT), "remove " + path);
+      later_snapshots_.push_back(path);
       continue;
     }
     const std::size_t n = h5::dataset_shape(file_.id(), path + "/density").front();
@@ -186,14 +196,41 @@ void RunLog::keep_snapshots_up_to(long long step) {
         h5::object_exists(file_.id(), kBodyPath) && h5::dataset_shape(file_.id(), kBodyPath) == std::vector<hsize_t>{n};
     snapshots_.push_back({snapshot_step, h5::read_double_attribute(snapshot.id(), "time"), n, with_body});
   }
+}
+
+void RunLog::start_writing() {
+  if (writing_) return;
+  // Every handle on the read-only file goes before the file is opened again for writing.
+  for (Series& s : series_) s.dataset.reset();
+  file_.reset();
+  ensure_space(0);
+  file_ = h5::file(H5Fopen(path_.c_str(), H5F_ACC_RDWR, unlocked_file_access().id()), "open " + path_);
+  writing_ = true;
+  const hid_t file = file_.id();
+  std::string restarts = H5Aexists(file, "restarts") > 0 ? h5::read_string_attribute(file, "restarts") : "";
+  restarts += "step " + std::to_string(restart_->step) + " at " + utc_now() + ": " + restart_command_ + "\n";
+  h5::write_attribute(file, "restarts", restarts);
+  set_status("running");
+  for (const std::string& path : later_snapshots_)
+    h5::check(H5Ldelete(file, path.c_str(), H5P_DEFAULT), "remove " + path);
+  later_snapshots_.clear();
+  for (const auto& write : waiting_) write();
+  waiting_.clear();
+  // Each series cut back to its rows at the checkpoint, appended from there.
+  for (Series& s : series_) {
+    s.dataset = h5::dataset(H5Dopen2(file, s.path.c_str(), H5P_DEFAULT), "open " + s.path);
+    const hsize_t size[2] = {s.rows_written, s.columns};
+    h5::check(H5Dset_extent(s.dataset.id(), size), "cut back " + s.path);
+  }
+  if (!snapshots_.empty()) partial_sidecar_.write(xdmf_text(path_));
   structure_changed_ = true;
-  if (!snapshots_.empty()) write_xdmf(path_);
 }
 
 RunLog::~RunLog() {
   // A log destroyed without finish_*() keeps status "running": whoever reads it knows the run
-  // did not end normally. Pending rows are still written so nothing logged is lost.
-  if (!file_) return;
+  // did not end normally. Pending rows are still written so nothing logged is lost; a reopened
+  // log that was never written to stays as it was.
+  if (!file_ || !writing_) return;
   try {
     flush();
   } catch (const std::exception&) {
@@ -203,7 +240,11 @@ RunLog::~RunLog() {
 
 std::size_t RunLog::add_series(const std::string& dataset_path, std::size_t columns, const std::string& units,
                                const std::string& description, const std::vector<std::string>& column_names) {
-  h5::open_or_create_group(file_.id(), parent_path(dataset_path));
+  if (!writing_ && !h5::object_exists(file_.id(), dataset_path)) {
+    throw InputError("--restart " + path_ + ": no " + dataset_path +
+                     ", which the scene logs: the log is of another scene");
+  }
+  if (writing_) h5::open_or_create_group(file_.id(), parent_path(dataset_path));
   const int rank = columns == 1 ? 1 : 2;
   const hsize_t initial[2] = {0, columns};
   const hsize_t maximum[2] = {H5S_UNLIMITED, columns};
@@ -215,7 +256,8 @@ std::size_t RunLog::add_series(const std::string& dataset_path, std::size_t colu
   series.path = dataset_path;
   series.columns = columns;
   if (restart_ && h5::object_exists(file_.id(), dataset_path)) {
-    // A restarted run's series: cut back to its rows at the checkpoint, appended from there.
+    // A restarted run's series: appended from its rows at the checkpoint (start_writing() cuts it
+    // back to them).
     const auto rows = restart_->series_rows.find(dataset_path);
     if (rows == restart_->series_rows.end() ||
         h5::dataset_shape(file_.id(), dataset_path).size() != static_cast<std::size_t>(rank) ||
@@ -224,8 +266,10 @@ std::size_t RunLog::add_series(const std::string& dataset_path, std::size_t colu
     }
     series.dataset = h5::dataset(H5Dopen2(file_.id(), dataset_path.c_str(), H5P_DEFAULT), "open " + dataset_path);
     series.rows_written = rows->second;
-    const hsize_t size[2] = {rows->second, columns};
-    h5::check(H5Dset_extent(series.dataset.id(), size), "cut back " + dataset_path);
+    if (writing_) {
+      const hsize_t size[2] = {rows->second, columns};
+      h5::check(H5Dset_extent(series.dataset.id(), size), "cut back " + dataset_path);
+    }
     series_.push_back(std::move(series));
     structure_changed_ = true;
     return series_.size() - 1;
@@ -275,7 +319,11 @@ void RunLog::write_pending(Series& s) {
 
 void RunLog::write_array(const std::string& dataset_path, std::span<const int> values, const std::string& units,
                          const std::string& description) {
-  h5::open_or_create_group(file_.id(), parent_path(dataset_path));
+  if (!writing_ && !h5::object_exists(file_.id(), dataset_path)) {
+    throw InputError("--restart " + path_ + ": no " + dataset_path +
+                     ", which the scene writes: the log is of another scene");
+  }
+  if (writing_) h5::open_or_create_group(file_.id(), parent_path(dataset_path));
   const hsize_t dims[1] = {values.size()};
   if (restart_ && h5::object_exists(file_.id(), dataset_path)) {
     // A restarted run writes the same array again: it must be the one already there.
@@ -295,21 +343,17 @@ void RunLog::write_array(const std::string& dataset_path, std::span<const int> v
 }
 
 void RunLog::set_attribute(const std::string& object_path, const std::string& name, const std::string& value) {
-  h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, value);
-  structure_changed_ = true;
+  write_attribute_when_writing(object_path, name, value);
 }
 void RunLog::set_attribute(const std::string& object_path, const std::string& name, double value) {
-  h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, value);
-  structure_changed_ = true;
+  write_attribute_when_writing(object_path, name, value);
 }
 void RunLog::set_attribute(const std::string& object_path, const std::string& name, long long value) {
-  h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, value);
-  structure_changed_ = true;
+  write_attribute_when_writing(object_path, name, value);
 }
 void RunLog::set_attribute(const std::string& object_path, const std::string& name,
                            const std::vector<std::string>& values) {
-  h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, values);
-  structure_changed_ = true;
+  write_attribute_when_writing(object_path, name, values);
 }
 
 void RunLog::add_snapshot(long long step, double time, const SnapshotFields& fields) {
@@ -320,6 +364,7 @@ void RunLog::add_snapshot(long long step, double time, const SnapshotFields& fie
                                 std::to_string(fields.velocity.size()) + " velocity and " +
                                 std::to_string(fields.pressure.size()) + " pressure values");
   }
+  start_writing();
   ensure_space(static_cast<long long>(n * 8 * sizeof(float)));
   const std::string group_path = snapshot_group(step);
   h5::Handle group = h5::open_or_create_group(file_.id(), group_path);
@@ -334,53 +379,39 @@ void RunLog::add_snapshot(long long step, double time, const SnapshotFields& fie
       h5::object_exists(file_.id(), kBodyPath) && h5::dataset_shape(file_.id(), kBodyPath) == std::vector<hsize_t>{n};
   snapshots_.push_back({step, time, n, with_body});
   flush();
-  write_xdmf(path_);
+  partial_sidecar_.write(xdmf_text(path_));
 }
 
 // XDMF 3: a temporal collection of polyvertex grids whose heavy data are the HDF5 datasets,
 // named relative to the sidecar, which lies next to the HDF5 file.
-void RunLog::write_xdmf(const std::string& h5_path) const {
+std::string RunLog::xdmf_text(const std::string& h5_path) const {
   const std::string h5_name = xml_escape(std::filesystem::path(h5_path).filename().string());
-  const std::string xdmf = h5_path + ".xdmf";
-  const std::string partial = xdmf + ".partial";
-  {
-    std::ofstream out(partial);
-    out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
-        << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-    for (const SnapshotRecord& s : snapshots_) {
-      const std::string group = snapshot_group(s.step);
-      const std::string n = std::to_string(s.particles);
-      const auto item = [&](const std::string& path, bool vector, const char* type) {
-        return "<DataItem Dimensions=\"" + n + (vector ? " 3" : "") + "\" NumberType=\"" + type +
-               "\" Precision=\"4\" Format=\"HDF\">" + h5_name + ":" + path + "</DataItem>";
-      };
-      const auto attribute = [&](const char* name, bool vector, const std::string& data_item) {
-        return std::string("    <Attribute Name=\"") + name + "\" AttributeType=\"" + (vector ? "Vector" : "Scalar") +
-               "\" Center=\"Node\">" + data_item + "</Attribute>\n";
-      };
-      out << "   <Grid Name=\"step" << s.step << "\" GridType=\"Uniform\">\n"
-          << "    <Time Value=\"" << std::setprecision(17) << s.time << "\"/>\n"
-          << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\"/>\n"
-          << "    <Geometry GeometryType=\"XYZ\">" << item(group + "/position", true, "Float") << "</Geometry>\n"
-          << attribute("velocity", true, item(group + "/velocity", true, "Float"))
-          << attribute("density", false, item(group + "/density", false, "Float"))
-          << attribute("pressure", false, item(group + "/pressure", false, "Float"));
-      if (s.with_body) out << attribute("body", false, item(kBodyPath, false, "Int"));
-      out << "   </Grid>\n";
-    }
-    out << "  </Grid>\n </Domain>\n</Xdmf>\n";
-    errno = 0;
-    out.close();
-    if (!out) {
-      const int error = errno;
-      std::error_code ignored;
-      std::filesystem::remove(partial, ignored);
-      errno = error;
-      throw std::runtime_error((errno == ENOSPC ? "disk full writing " : "cannot write ") + partial +
-                               (errno != 0 && errno != ENOSPC ? std::string(": ") + std::strerror(errno) : ""));
-    }
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+      << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const SnapshotRecord& s : snapshots_) {
+    const std::string group = snapshot_group(s.step);
+    const std::string n = std::to_string(s.particles);
+    const auto item = [&](const std::string& path, bool vector, const char* type) {
+      return "<DataItem Dimensions=\"" + n + (vector ? " 3" : "") + "\" NumberType=\"" + type +
+             "\" Precision=\"4\" Format=\"HDF\">" + h5_name + ":" + path + "</DataItem>";
+    };
+    const auto attribute = [&](const char* name, bool vector, const std::string& data_item) {
+      return std::string("    <Attribute Name=\"") + name + "\" AttributeType=\"" + (vector ? "Vector" : "Scalar") +
+             "\" Center=\"Node\">" + data_item + "</Attribute>\n";
+    };
+    out << "   <Grid Name=\"step" << s.step << "\" GridType=\"Uniform\">\n"
+        << "    <Time Value=\"" << std::setprecision(17) << s.time << "\"/>\n"
+        << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\"/>\n"
+        << "    <Geometry GeometryType=\"XYZ\">" << item(group + "/position", true, "Float") << "</Geometry>\n"
+        << attribute("velocity", true, item(group + "/velocity", true, "Float"))
+        << attribute("density", false, item(group + "/density", false, "Float"))
+        << attribute("pressure", false, item(group + "/pressure", false, "Float"));
+    if (s.with_body) out << attribute("body", false, item(kBodyPath, false, "Int"));
+    out << "   </Grid>\n";
   }
-  std::filesystem::rename(partial, xdmf);  // never leave a half-written sidecar
+  out << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  return out.str();
 }
 
 void RunLog::ensure_space(long long bytes) {
@@ -393,6 +424,7 @@ void RunLog::ensure_space(long long bytes) {
 }
 
 void RunLog::flush() {
+  start_writing();
   long long pending_bytes = 0;
   for (const Series& s : series_) pending_bytes += static_cast<long long>(s.pending.size() * sizeof(double));
   ensure_space(pending_bytes);
@@ -412,6 +444,7 @@ void RunLog::write_checkpoint(long long step, double time, StateArrays state) {
 void RunLog::set_status(const std::string& status) { h5::write_attribute(file_.id(), "status", status); }
 
 void RunLog::finish_completed() {
+  start_writing();
   h5::write_attribute(file_.id(), "end_time", utc_now());
   set_status("completed");
   flush();
@@ -420,19 +453,26 @@ void RunLog::finish_completed() {
   // The sidecar first, so that the moment the log appears at its final path, its sidecar does.
   const std::string final_xdmf = final_path() + ".xdmf";
   if (!snapshots_.empty()) {
-    write_xdmf(final_path());
-  } else {
-    std::error_code ignored;  // a replaced log's sidecar would point at snapshots that no longer exist
-    std::filesystem::remove(final_xdmf, ignored);
+    OutputFile(final_xdmf, claim_.replaces()).write(xdmf_text(final_path()));
+  } else if (claim_.replaces()) {
+    // A replaced log's sidecar would name snapshots the new log lacks (a regular file only, as
+    // --force allows).
+    struct stat st {};
+    if (lstat(final_xdmf.c_str(), &st) == 0 && S_ISREG(st.st_mode)) unlink(final_xdmf.c_str());
   }
   claim_.publish();
   path_ = final_path();
-  std::error_code ignored;
-  std::filesystem::remove(claim_.partial_path() + ".xdmf", ignored);
+  partial_sidecar_.remove_written();
 }
 
 void RunLog::finish_unpublished(const std::string& status) noexcept {
   if (!file_) return;
+  if (!writing_) {
+    // A reopened log whose run ended before its first flush: left as it was.
+    file_.reset();
+    finished_ = true;
+    return;
+  }
   try {
     h5::write_attribute(file_.id(), "end_time", utc_now());
     set_status(status);

@@ -16,11 +16,19 @@
 // Checkpoints (io/checkpoint_io.hpp) make such a log continuable: write_checkpoint() stores the
 // run's whole state, and a RunLog reopened for a restart cuts every series back to its rows at
 // the latest checkpoint as the driver registers it again (add_series), removes the snapshots
-// taken after it, and appends from there.
+// taken after it, and appends from there. A reopened log is read only until its first flush,
+// which comes after the driver has set the run up again and restored the checkpoint: until then
+// its changes (status, `restarts`, attributes, the cuts) wait in memory, so that a restart
+// refused or failed before its first step leaves the file as it was, byte for byte.
+//
+// The sidecars are written whole (io/output_file.hpp): <path>.partial.xdmf while the log is
+// unfinished, <path>.xdmf once it is published.
 #include "io/checkpoint_io.hpp"
 #include "io/output_claim.hpp"
+#include "io/output_file.hpp"
 #include "util/hdf5_handle.hpp"
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -56,7 +64,8 @@ struct RunLogHeader {
   std::string config;       // the scene document (JSON)
   std::string config_path;  // the scene file it came from (locates a recorded trajectory)
   std::string backend;
-  std::string record_device;  // "" for none
+  std::string record_device;      // "" for none
+  std::string working_directory;  // where the run started, which relative paths above are from; "" when unknown
   bool phase_timing = false;
   double checkpoint_interval = 0.0;  // [s] wall clock; 0 for none
 };
@@ -76,8 +85,9 @@ class RunLog {
   // Claims `path` first (replacing an existing regular file only when `replace`).
   RunLog(const std::string& path, const RunMetadata& metadata, bool replace = false);
   // Reopens the claimed partial file (OutputClaim::resume) to continue the run from its latest
-  // checkpoint: status "running" again, `restart_command` added to the root's `restarts`. Throws
-  // InputError when the file is no run log, is completed, or holds no checkpoint.
+  // checkpoint: status "running" again, `restart_command` added to the root's `restarts`, at the
+  // first flush. Throws InputError, the file unchanged, when it is no run log, is completed, holds
+  // no checkpoint, or a snapshot or the checkpoint cannot be read (damaged).
   struct Restart {
     std::string command_line;
   };
@@ -91,6 +101,8 @@ class RunLog {
   const std::string& path() const { return path_; }
   // Where a completed log goes.
   const std::string& final_path() const { return claim_.path(); }
+  // Whether this process has changed the file: false for a reopened log until its first flush.
+  bool changed() const { return writing_; }
 
   // A time series at `dataset_path` with `columns` values per row (a 1-D dataset when 1). Returns
   // its handle for append(). `column_names` (optional) become the `columns` attribute.
@@ -123,10 +135,12 @@ class RunLog {
 
   // Final status; "completed" only for a run that reached its end. finish_completed() closes the
   // file and moves it (and its sidecar) to final_path(); it throws when that fails, leaving the
-  // file at its partial name.
+  // file at its partial name. A log without snapshots that replaced another (--force) removes the
+  // replaced log's sidecar, which would name snapshots the new log lacks.
   void finish_completed();
   // "failed: <reason>" or "interrupted: <reason>", as far as the disk allows: these never throw
-  // (the run's own failure is what gets reported), and the file stays at its partial name.
+  // (the run's own failure is what gets reported), and the file stays at its partial name. A
+  // reopened log not yet changed stays as it was.
   void finish_failed(const std::string& reason) noexcept;
   void finish_interrupted(const std::string& reason) noexcept;
   bool finished() const { return finished_; }
@@ -146,23 +160,40 @@ class RunLog {
     bool with_body;  // /particles/body holds one entry per particle of this snapshot
   };
   void write_pending(Series& series);
-  // The sidecar of the file at `h5_path`, written to <h5_path>.xdmf.
-  void write_xdmf(const std::string& h5_path) const;
+  // The XDMF text of the sidecar of the file at `h5_path`, which names its datasets.
+  std::string xdmf_text(const std::string& h5_path) const;
   void set_status(const std::string& status);
   // Throws h5::Error "disk full writing <file>" when `bytes` (plus the reserve) would not fit.
   void ensure_space(long long bytes);
   void finish_unpublished(const std::string& status) noexcept;
-  // After a restart: the snapshots up to the checkpoint are kept (and listed for the sidecar),
-  // later ones removed.
-  void keep_snapshots_up_to(long long step);
+  // After a restart, read only: lists the snapshots up to the checkpoint (for the sidecar) and
+  // those after it (which start_writing() removes).
+  void read_snapshots_up_to(long long step);
+  // A reopened log's first change: reopens the file for writing and applies what waited.
+  void start_writing();
+  // Writes an attribute now, or once the file is written to (a reopened log before its flush).
+  template <typename Value>
+  void write_attribute_when_writing(const std::string& object_path, const std::string& name, const Value& value) {
+    if (!writing_) {
+      waiting_.push_back([this, object_path, name, value] { write_attribute_when_writing(object_path, name, value); });
+      return;
+    }
+    h5::write_attribute(h5::open_or_create_group(file_.id(), object_path).id(), name, value);
+    structure_changed_ = true;
+  }
 
   OutputClaim claim_;  // declared before file_: the lock outlives the open file
   std::string path_;
   h5::Handle file_;
   std::vector<Series> series_;
   std::vector<SnapshotRecord> snapshots_;
-  std::optional<Checkpoint> restart_;  // what a reopened log continues from
-  bool structure_changed_ = false;     // since the last flush
+  OutputFile partial_sidecar_;                  // <path>.partial.xdmf
+  std::optional<Checkpoint> restart_;           // what a reopened log continues from
+  std::string restart_command_;                 // the command line of the restart, for `restarts`
+  std::vector<std::string> later_snapshots_;    // a reopened log's snapshots past its checkpoint
+  std::vector<std::function<void()>> waiting_;  // a reopened log's attribute writes before its flush
+  bool writing_ = true;                         // false for a reopened log until its first flush
+  bool structure_changed_ = false;              // since the last flush
   bool finished_ = false;
 };
 

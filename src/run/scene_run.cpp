@@ -5,6 +5,7 @@
 #include "haptics/haptics_run.hpp"
 #include "interrupt.hpp"
 #include "io/output_claim.hpp"
+#include "io/output_file.hpp"
 #include "model/scene_builder.hpp"
 #include "output_path.hpp"
 #include "run_estimate.hpp"
@@ -56,6 +57,10 @@ struct Tag {
   nlohmann::json value;
 };
 
+// The longest tag name: an attribute's name lives in its object's header, whose messages HDF5
+// caps at 64 KiB; 255 bytes is as long as any file name.
+constexpr std::size_t kMaxTagNameBytes = 255;
+
 // NAME=VALUE; NAME becomes an attribute name, so it is not empty and has no '/' (which h5py
 // tools read as a path).
 std::vector<Tag> parse_tags(const std::vector<std::string>& tags) {
@@ -63,8 +68,11 @@ std::vector<Tag> parse_tags(const std::vector<std::string>& tags) {
   for (const std::string& tag : tags) {
     const auto equals = tag.find('=');
     const std::string name = tag.substr(0, equals);
-    if (equals == std::string::npos || name.empty() || name.find('/') != std::string::npos) {
-      throw InputError("--tag " + tag + ": expected NAME=VALUE with a NAME without '/'");
+    if (equals == std::string::npos || name.empty() || name.find('/') != std::string::npos ||
+        name.size() > kMaxTagNameBytes) {
+      const std::string shown = tag.size() > 60 ? tag.substr(0, 60) + "..." : tag;
+      throw InputError("--tag " + shown + ": expected NAME=VALUE with a NAME of at most " +
+                       std::to_string(kMaxTagNameBytes) + " bytes, without '/'");
     }
     const std::string text = tag.substr(equals + 1);
     nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
@@ -94,15 +102,24 @@ std::optional<double> device_memory_for(const std::string& backend) {
   return std::nullopt;
 }
 
+// Where the log goes: --out, or the default path from the scene's name.
+std::string output_of(const SceneRunRequest& request, const Scene& scene, const std::string& backend_name) {
+  return request.output.empty() ? default_output_path(scene.name, backend_name) : request.output;
+}
+
 // No output may be one of the run's inputs or another of its outputs; none may replace anything
-// but a regular file, and that only with --force.
-void check_outputs(const SceneRunRequest& request, const Scene& scene, const std::string& output) {
+// but a regular file, and that only with --force. The outputs: the log and its partial file, the
+// sidecars of a run that takes snapshots (<out>.xdmf, <out>.partial.xdmf), the stale <out>.xdmf
+// that --force removes when the new log has none, and the recording.
+void check_output_paths(const SceneRunRequest& request, const Scene& scene, const std::string& output) {
   std::vector<std::pair<std::string, std::string>> inputs{{request.scene_path, "the scene file"}};
   if (scene.proxy && !scene.proxy->haptics.trajectory.file.empty()) {
     inputs.emplace_back(scene.proxy->haptics.trajectory.file, "the scene's recorded trajectory");
   }
+  const bool snapshots = scene.output.snapshot_interval > 0.0;
   std::vector<std::pair<std::string, std::string>> outputs{{output, "--out"}, {output + ".partial", "--out"}};
-  if (scene.output.snapshot_interval > 0.0) outputs.emplace_back(output + ".xdmf", "--out");
+  if (snapshots) outputs.emplace_back(output + ".partial.xdmf", "--out");
+  if (snapshots || request.force) outputs.emplace_back(output + ".xdmf", "--out");
   if (!request.record_device.empty()) outputs.emplace_back(request.record_device, "--record-device");
   for (const auto& [path, option] : outputs) {
     for (const auto& [input, what] : inputs) {
@@ -124,10 +141,25 @@ void check_outputs(const SceneRunRequest& request, const Scene& scene, const std
   }
   check_output_path(output);
   check_claimable(output, request.force);
-  if (scene.output.snapshot_interval > 0.0) check_replaceable("--out", output + ".xdmf", request.force);
+  if (snapshots) {
+    check_output_file("--out", output + ".partial.xdmf", request.force);
+    check_output_file("--out", output + ".xdmf", request.force);
+  } else if (request.force) {
+    check_replaceable("--out", output + ".xdmf", true);
+  }
   if (!request.record_device.empty()) {
     check_device_recording_request(scene, request.record_device);
-    check_replaceable("--record-device", request.record_device, request.force);
+    check_output_file("--record-device", request.record_device, request.force);
+  }
+}
+
+// As check_output_paths, saying where a default log path came from.
+void check_outputs(const SceneRunRequest& request, const Scene& scene, const std::string& output) {
+  try {
+    check_output_paths(request, scene, output);
+  } catch (const InputError& e) {
+    if (!request.output.empty()) throw;
+    throw InputError(std::string(e.what()) + " (the default --out, from /name of " + scene.source_file + ")");
   }
 }
 
@@ -162,27 +194,36 @@ std::string write_failure(const std::exception& e) { return e.what(); }
 SceneRunResult run_with_log(const Scene& scene, const ParticleSetup& setup, Backend& backend, RunLog& log,
                             const RunOptions& options, SceneRunResult result) {
   result.output = log.path();
+  // A restart that ended before its first flush has not changed its log.
+  const auto kept = [&log](const std::string& how) {
+    return log.changed() ? "the log is kept, " + how + ": " + log.path() : log.path() + " is unchanged";
+  };
   try {
     result.summary = run_simulation(scene, setup, backend, log, options);
     result.output = log.path();
-    result.exit_code = kExitOk;
     print_summary_line(result.output, result.summary, result.backend);
+    result.exit_code = kExitOk;
+    if (!result.summary.recording_error.empty()) {
+      std::cerr << "error: " << result.summary.recording_error << "\n";
+      result.exit_code = kExitOther;
+      result.error = result.summary.recording_error;
+    }
   } catch (const InputError&) {
     throw;  // a restart whose checkpoint does not fit the scene: the log stays as it was
   } catch (const SimulationFailure& e) {
-    std::cerr << "error: " << e.what() << "\n  the log is kept, marked failed: " << log.path() << "\n";
+    std::cerr << "error: " << e.what() << "\n  " << kept("marked failed") << "\n";
     result.exit_code = kExitSimulationFailure;
     result.error = e.what();
   } catch (const RunInterrupted& e) {
-    std::cerr << "interrupted: " << e.what() << "\n  the log is kept, marked interrupted: " << log.path() << "\n";
+    std::cerr << "interrupted: " << e.what() << "\n  " << kept("marked interrupted") << "\n";
     result.exit_code = e.exit_code();
     result.error = std::string("interrupted: ") + e.what();
   } catch (const std::exception& e) {
     // A write failure (disk full), or a failure setting up the series or the haptic session: the
     // log ends with its reason, as far as the disk allows, at its partial name.
     if (!log.finished()) log.finish_failed(write_failure(e));
-    std::cerr << "error: " << write_failure(e) << "\n  the log is kept at " << log.path()
-              << " (status \"failed: ...\" where the disk allowed writing it)\n";
+    std::cerr << "error: " << write_failure(e) << "\n  "
+              << kept("with status \"failed: ...\" where the disk allowed writing it") << "\n";
     result.exit_code = kExitOther;
     result.error = write_failure(e);
   }
@@ -210,6 +251,36 @@ void check_restart_request(const SceneRunRequest& request) {
   }
 }
 
+// A path the log recorded as the run was given it, taken from the folder where the run started
+// (`working_directory`, "" in logs older than that attribute: then from here).
+std::string from_run_folder(const std::string& path, const std::string& working_directory) {
+  if (path.empty() || working_directory.empty() || std::filesystem::path(path).is_absolute()) return path;
+  return (std::filesystem::path(working_directory) / path).string();
+}
+
+// What a restart writes besides its log, checked before the log is touched. A restart replaces
+// no file (it takes no --force), so a file that appeared at one of these names since the run
+// stopped is refused; the unfinished log's own sidecar is the restart's to rewrite.
+void check_restart_outputs(const std::string& partial, const std::string& output, const Scene& scene,
+                           const std::string& record_device) {
+  const std::string option = "--restart " + partial + ":";
+  std::vector<std::string> outputs;
+  if (scene.output.snapshot_interval > 0.0) {
+    check_replaceable(option, partial + ".xdmf", true);
+    outputs.push_back(output + ".xdmf");
+  }
+  if (!record_device.empty()) outputs.push_back(record_device);
+  for (const std::string& path : outputs) {
+    std::error_code error;
+    if (std::filesystem::exists(std::filesystem::symlink_status(path, error))) {
+      throw InputError(option + " " + path +
+                       ": exists, where the continued run writes; move it away (a restart "
+                       "replaces no file)");
+    }
+    check_output_file(option, path, false);
+  }
+}
+
 // `mssph run --restart LOG`: the run of LOG continued from its latest checkpoint, in the same
 // log, with the same scene, backend and options.
 SceneRunResult continue_run(const SceneRunRequest& request) {
@@ -229,7 +300,9 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
   // The lock first: a run still writing the log is refused before anything reads it.
   OutputClaim claim = OutputClaim::resume(output);
   const RunLogHeader header = read_run_log_header(partial);
-  const Scene scene = parse_scene_text(header.config, header.config_path);
+  const Scene scene = parse_scene_text(header.config, from_run_folder(header.config_path, header.working_directory));
+  const std::string record_device = from_run_folder(header.record_device, header.working_directory);
+  check_restart_outputs(partial, output, scene, record_device);
   const std::string backend_name = resolve_backend_name(header.backend);
   const RunEstimate estimate = estimate_run(scene, backend_name);
   check_run_fits(scene, backend_name, estimate, available_host_memory(), device_memory_for(backend_name));
@@ -256,7 +329,7 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
               << " of " << std::llround(estimate.steps) << " on " << backend_name << ", " << threads << " threads\n";
   }
   return run_with_log(scene, setup, *backend, log,
-                      RunOptions{request.quiet, header.record_device, header.phase_timing, checkpoint_interval},
+                      RunOptions{request.quiet, record_device, header.phase_timing, checkpoint_interval, false},
                       std::move(result));
 }
 
@@ -283,6 +356,12 @@ std::string command_line_of(const SceneRunRequest& request) {
   return line;
 }
 
+void check_scene_run(const SceneRunRequest& request) {
+  const Scene scene = load_scene(request.scene_path, request.overrides);
+  parse_tags(request.tags);
+  check_outputs(request, scene, output_of(request, scene, resolve_backend_name(request.backend)));
+}
+
 SceneRunResult run_scene(const SceneRunRequest& request) {
   if (!request.restart.empty()) return continue_run(request);
   // Signals are caught from the start, so that one arriving during set-up ends the run cleanly
@@ -293,7 +372,7 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   const std::string scene_text = read_text(request.scene_path);
   const std::string backend_name = resolve_backend_name(request.backend);
   const std::vector<Tag> tags = parse_tags(request.tags);
-  const std::string output = request.output.empty() ? default_output_path(scene.name, backend_name) : request.output;
+  const std::string output = output_of(request, scene, backend_name);
   check_outputs(request, scene, output);
   // Checks of what the scene builds, after loading: a rejected value may still come from --set.
   const auto noting_overrides = [&](auto&& check) {
@@ -363,6 +442,7 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
     log->set_attribute("/", "threads", static_cast<long long>(threads));
     // What a restart (--restart) takes from the log besides the scene and backend.
     log->set_attribute("/", "record_device", request.record_device);
+    log->set_attribute("/", "working_directory", std::filesystem::current_path().string());
     log->set_attribute("/", "phase_timing", static_cast<long long>(request.phase_timing));
     log->set_attribute("/", "checkpoint_interval", request.checkpoint_interval);
     write_tags(*log, tags);
@@ -376,10 +456,10 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
     return result;
   }
 
-  return run_with_log(
-      scene, setup_for_log, *backend, *log,
-      RunOptions{request.quiet, request.record_device, request.phase_timing, request.checkpoint_interval},
-      std::move(result));
+  return run_with_log(scene, setup_for_log, *backend, *log,
+                      RunOptions{request.quiet, request.record_device, request.phase_timing,
+                                 request.checkpoint_interval, request.force},
+                      std::move(result));
 }
 
 }  // namespace mssph::cli

@@ -48,6 +48,11 @@ struct SceneRunResult {
 // The command line that reproduces a request, recorded in the log.
 std::string command_line_of(const SceneRunRequest& request);
 
+// The checks run_scene makes of the scene, --set, --tag and every output path before it builds
+// anything: for a command that starts several runs, to refuse them all before the first starts.
+// Throws InputError.
+void check_scene_run(const SceneRunRequest& request);
+
 // Bad input (scene, --set, --out, --record-device, trajectory, a run the machine cannot hold, a
 // log that cannot be continued) throws InputError before any output exists or changes.
 // A run that starts ends in its log's status and the returned exit code; the one-line summary and

@@ -161,7 +161,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
   CompressionWatch compression(log, setup);
   LostMassWatch lost_mass(log, setup);
   std::optional<HapticsRun> haptics;
-  if (scene.proxy) haptics.emplace(scene, setup, log, options.record_device);
+  if (scene.proxy) haptics.emplace(scene, setup, log, options.record_device, options.replace_recording);
 
   RunSummary summary;
   summary.force_body = force_body < setup.bodies.size() ? setup.bodies[force_body].name : "";
@@ -187,12 +187,17 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
   };
   std::size_t first_step = 1;
   if (const Checkpoint* restart = log.restart_point()) {
-    backend.restore_state(restart->state.part("backend"));
-    if (haptics) haptics->restore_state(restart->state.part("haptics"));
-    compression.restore_state(restart->state.part("compression"));
-    lost_mass.restore_state(restart->state.part("lost_mass"));
-    summary.peak_force = restart->state.scalar("run/peak_force");
-    earlier_wall_seconds = restart->state.scalar("run/wall_seconds");
+    try {
+      backend.restore_state(restart->state.part("backend"));
+      if (haptics) haptics->restore_state(restart->state.part("haptics"));
+      compression.restore_state(restart->state.part("compression"));
+      lost_mass.restore_state(restart->state.part("lost_mass"));
+      summary.peak_force = restart->state.scalar("run/peak_force");
+      earlier_wall_seconds = restart->state.scalar("run/wall_seconds");
+    } catch (const InputError& e) {
+      throw InputError("--restart " + log.path() + ": the checkpoint of step " + std::to_string(restart->step) +
+                       " does not fit the scene and backend: " + e.what());
+    }
     summary.steps = static_cast<std::size_t>(restart->step);
     first_step = summary.steps + 1;
   }
@@ -298,6 +303,7 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
   if (haptics) {
     haptics->finish(backend, summary.steps, summary.wall_seconds);
     summary.peak_rendered_force = haptics->peak_rendered_force();
+    summary.recording_error = haptics->recording_error();
   }
 
   summary.fraction_outside_valid_range = compression.finish();

@@ -14,11 +14,13 @@ namespace mssph {
 
 struct RunOptions {
   bool quiet = false;
-  std::string record_device;  // write the haptic device's trajectory here (.csv or .h5); "" for none
+  // Write the haptic device's trajectory here (.csv or .h5) when the run completes; "" for none.
+  std::string record_device;
   bool phase_timing = false;  // log /timing/phases (Backend::set_phase_timing)
   // Wall-clock seconds between checkpoints (RunLog::write_checkpoint); 0 for none. SIGINT,
   // SIGTERM and SIGHUP write one either way before the run stops.
   double checkpoint_interval = 0.0;
+  bool replace_recording = false;  // --force: the recording may replace an existing regular file
 };
 
 struct RunSummary {
@@ -35,11 +37,15 @@ struct RunSummary {
   // Bodies that lost particles out of the simulation domain (sim/lost_mass_watch.hpp):
   // "block 2 particles (0.03 %), ..." ("" if none).
   std::string left_domain;
+  // Why the device recording of the completed run was not written, and what that loses; "" when
+  // it was written or none was asked for (HapticsRun::recording_error).
+  std::string recording_error;
 };
 
 // Runs to the end of the scene. On a blow-up the log is marked "failed: ..." and the
 // SimulationFailure propagates. A log reopened for a restart (RunLog::restart_point) continues
-// from its checkpoint: `backend` must be fresh, of the setup and backend kind that wrote it.
+// from its checkpoint: `backend` must be fresh, of the setup and backend kind that wrote it; a
+// checkpoint that does not fit throws InputError naming the log, before the log is changed.
 RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backend& backend, RunLog& log,
                           const RunOptions& options);
 

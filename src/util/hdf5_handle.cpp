@@ -56,6 +56,21 @@ void throw_error(const std::string& what) {
   throw Error(cause + " (HDF5: " + what + ")", failure.error);
 }
 
+Handle in_memory_file(const std::string& what) {
+  Handle access = property_list(H5Pcreate(H5P_FILE_ACCESS), "file access properties");
+  check(H5Pset_fapl_core(access.id(), 1 << 16, false), "keep " + what + " in memory");
+  return file(H5Fcreate(what.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.id()), "create " + what + " in memory");
+}
+
+std::string file_image(hid_t file) {
+  check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush a file in memory");
+  const ssize_t size = H5Fget_file_image(file, nullptr, 0);
+  if (size < 0) throw_error("size of a file in memory");
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  if (H5Fget_file_image(file, bytes.data(), bytes.size()) < 0) throw_error("copy a file in memory");
+  return bytes;
+}
+
 Handle open_or_create_group(hid_t file, const std::string& path) {
   std::string partial;
   std::istringstream parts(path);

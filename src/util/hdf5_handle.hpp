@@ -71,6 +71,13 @@ inline Handle datatype(hid_t id, const std::string& what) { return Handle(id, H5
 inline Handle attribute(hid_t id, const std::string& what) { return Handle(id, H5Aclose, what); }
 inline Handle property_list(hid_t id, const std::string& what) { return Handle(id, H5Pclose, what); }
 
+// A new file that lives in memory only (the core driver without a backing store), named `what`
+// in errors: built there, then taken whole with file_image(), so that it reaches the disk at once
+// as any output does.
+Handle in_memory_file(const std::string& what);
+// The bytes of an open file as they would lie on disk (flushed first).
+std::string file_image(hid_t file);
+
 // Opens the group at `path`, creating it and any missing parents.
 Handle open_or_create_group(hid_t file, const std::string& path);
 

@@ -99,5 +99,54 @@ TEST_F(BadInput, OutInAnUnwritableDirectory) {
   std::filesystem::permissions(work("locked"), std::filesystem::perms::owner_all);  // so it can be removed
 }
 
+// tiny_drop with its "name" replaced, written into the working directory as `file`.
+std::string tiny_drop_named(const std::string& directory, const std::string& file, const std::string& name) {
+  nlohmann::json scene = read_json(kTinyDrop);
+  scene["name"] = name;
+  const std::string path = directory + "/" + file;
+  std::ofstream(path) << scene.dump(2);
+  return path;
+}
+
+// The default log path (results/runs/<scene>_<backend>.h5) would be cut at the NUL, so that the
+// run took another file for its own.
+TEST_F(BadInput, ASceneNameWithANulCharacter) {
+  const std::string scene = tiny_drop_named(work_.path().string(), "nul.json", std::string("ok\0base", 7));
+  expect_rejected({"run", scene}, {"nul.json", "/name", "NUL"});
+}
+
+// A name too long for a file name: refused before the default path's folders are created.
+TEST_F(BadInput, ASceneNameTooLongForAFileName) {
+  const std::string scene = tiny_drop_named(work_.path().string(), "long.json", std::string(300, 'n'));
+  expect_rejected({"run", scene}, {"results/runs/nnn", "255 bytes"});
+}
+
+// An empty --out or --record-device is a mistake, not a request for the default (or for none).
+TEST_F(BadInput, AnEmptyOutputPath) {
+  expect_rejected({"run", kTinyDrop, "--out", ""}, {"--out", "expected a file name"});
+  expect_rejected({"run", kTinyDrop, "--out", work("o.h5"), "--record-device", ""},
+                  {"--record-device", "expected a file name"});
+}
+
+// An attribute name HDF5 cannot store (its object header messages hold at most 64 KiB).
+TEST_F(BadInput, ATagNameTooLongForAnAttribute) {
+  expect_rejected({"run", kTinyDrop, "--out", work("o.h5"), "--tag", std::string(70000, 'n') + "=1"},
+                  {"--tag nnnn", "at most 255 bytes"});
+}
+
+// A recorded trajectory that exists but is no regular file says what it is; a FIFO is not opened
+// (which would wait for a writer forever).
+TEST_F(BadInput, ARecordedTrajectoryThatIsNoRegularFile) {
+  ASSERT_EQ(mkfifo(work("fifo.csv").c_str(), 0644), 0);
+  std::filesystem::create_directory(work("folder.csv"));
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {work("fifo.csv"), "is a FIFO"}, {work("folder.csv"), "is a directory"}, {"/dev/null", "is a device"}};
+  for (const auto& [file, what] : cases) {
+    const std::string trajectory = nlohmann::json{{"source", "recorded"}, {"file", file}}.dump();
+    expect_rejected({"run", kTinyDrop, "--out", work("o.h5"), "--set", "proxy/trajectory=" + trajectory},
+                    {file + ": " + what});
+  }
+}
+
 }  // namespace
 }  // namespace mssph::test

@@ -5,6 +5,8 @@
 #include "h5_read.hpp"
 #include "temp_dir.hpp"
 
+#include <sys/stat.h>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -37,6 +39,12 @@ inline const std::string kTinyDrop = data_file("tiny_drop.json");
 
 inline nlohmann::json read_json(const std::string& path) { return nlohmann::json::parse(read_file(path)); }
 
+// Whether a file is at `path` and holds at least one byte: a run's log once it is being written.
+inline bool non_empty_file(const std::string& path) {
+  std::error_code error;
+  return std::filesystem::file_size(path, error) > 0 && !error;
+}
+
 class Cli : public ::testing::Test {
  protected:
   std::string work(const std::string& name) const { return (work_ / name).string(); }
@@ -62,6 +70,26 @@ class Cli : public ::testing::Test {
     }
     std::sort(entries.begin(), entries.end());
     return entries;
+  }
+
+  // Runs mssph, expects exit 2 with `fragment` on stderr, and `path` afterwards exactly as before
+  // (the same inode and mode and, for a regular file, the same contents).
+  void expect_refused_and_untouched(const std::vector<std::string>& args, const std::string& path,
+                                    const std::string& fragment) const {
+    struct stat before {};
+    const bool existed = lstat(path.c_str(), &before) == 0;
+    const std::string content = existed && S_ISREG(before.st_mode) ? read_file(path) : "";
+    const ProcessResult r = mssph(args);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(fragment), std::string::npos) << "\"" << fragment << "\" in\n" << r.err;
+    struct stat after {};
+    ASSERT_EQ(lstat(path.c_str(), &after) == 0, existed) << path;
+    if (!existed) return;
+    EXPECT_EQ(after.st_ino, before.st_ino) << path << " was replaced";
+    EXPECT_EQ(after.st_mode, before.st_mode) << path;
+    if (S_ISREG(before.st_mode)) {
+      EXPECT_EQ(read_file(path), content) << path;
+    }
   }
 
   std::string status_of(const std::string& h5_path) const {

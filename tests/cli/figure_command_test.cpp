@@ -4,6 +4,7 @@
 #include "python_tools.hpp"
 
 #include <filesystem>
+#include <fstream>
 
 namespace mssph::test {
 namespace {
@@ -135,6 +136,19 @@ TEST_F(FigureCommand, Figure3RejectsBadArgumentsBeforeRunning) {
     EXPECT_NE(r.err.find(extra[0] == "--set" ? "simulation/dt" : extra[0]), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(work("fig3"))) << "nothing written for " << extra[0];
   }
+}
+
+// Fg03: every drop's outputs, its log's partial file included, are checked before the first drop
+// runs; here the fluid drop's leftover <out>.partial.
+TEST_F(FigureCommand, Figure3ChecksEveryDropsOutputsBeforeTheFirst) {
+  fs::create_directory(work("fig3"));
+  const std::string leftover = work("fig3/sphere_drop_fluid.h5.partial");
+  std::ofstream(leftover) << "a killed run's log";
+  const ProcessResult r = mssph({"figure", "3", "--backend", "cpu", "--resolution", "coarse", "--set",
+                                 "simulation/duration=0.01", "--out", work("fig3"), "-q"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(leftover), std::string::npos) << r.err;
+  EXPECT_EQ(work_entries(), (std::vector<std::string>{"fig3", "fig3/sphere_drop_fluid.h5.partial"})) << "no drop ran";
 }
 
 TEST_F(FigureCommand, HelpDescribesOutputsAndExitCodes) {

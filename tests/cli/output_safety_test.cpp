@@ -28,27 +28,7 @@ std::string recorded_trajectory(const std::string& file) {
   return "proxy/trajectory=" + nlohmann::json{{"source", "recorded"}, {"file", file}}.dump();
 }
 
-class OutputSafety : public Cli {
- protected:
-  // Runs mssph, expects exit 2 with `fragment` on stderr, and `path` afterwards exactly as before.
-  void expect_refused_and_untouched(const std::vector<std::string>& args, const std::string& path,
-                                    const std::string& fragment) {
-    struct stat before {};
-    const bool existed = lstat(path.c_str(), &before) == 0;
-    const std::string content = existed && S_ISREG(before.st_mode) ? read_file(path) : "";
-    const ProcessResult r = mssph(args);
-    EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_NE(r.err.find(fragment), std::string::npos) << "\"" << fragment << "\" in\n" << r.err;
-    struct stat after {};
-    ASSERT_EQ(lstat(path.c_str(), &after) == 0, existed) << path;
-    if (!existed) return;
-    EXPECT_EQ(after.st_ino, before.st_ino) << path << " was replaced";
-    EXPECT_EQ(after.st_mode, before.st_mode) << path;
-    if (S_ISREG(before.st_mode)) {
-      EXPECT_EQ(read_file(path), content) << path;
-    }
-  }
-};
+using OutputSafety = Cli;
 
 TEST_F(OutputSafety, AnExistingLogIsReplacedOnlyWithForce) {
   const std::string out = work("run.h5");
@@ -126,6 +106,26 @@ TEST_F(OutputSafety, TwoRunsCannotWriteOnePathAndSigintEndsTheFirstWith130) {
   EXPECT_EQ(r.exit_code, 130) << r.err;
   EXPECT_EQ(status_of(out + ".partial").rfind("interrupted: SIGINT after step ", 0), 0u) << status_of(out + ".partial");
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// `--out <another run's out>.partial --force` would rename its log over the file that run holds
+// locked: refused, and the other run goes on writing (and finishing) its own log.
+TEST_F(OutputSafety, ThePartialFileAnotherRunHoldsIsNeverReplacedEvenWithForce) {
+  const std::string out = work("x.h5");
+  const auto first = start({"run", kTinyDrop, "--out", out, "-q", "--set", "simulation/duration=1000"});
+  ASSERT_TRUE(wait_for([&] { return non_empty_file(out + ".partial"); }, 60s));
+  const ProcessResult second = mssph({"run", kTinyDrop, "--out", out + ".partial", "-q", "--force"});
+  EXPECT_EQ(second.exit_code, 2) << second.err;
+  EXPECT_NE(second.err.find("--out " + out + ".partial: another run is writing it"), std::string::npos) << second.err;
+  EXPECT_FALSE(std::filesystem::exists(out + ".partial.partial"));
+  ASSERT_TRUE(first->running());
+  first->send(SIGINT);
+  const ProcessResult r = first->wait();
+  EXPECT_EQ(r.exit_code, 130) << r.err;
+  const h5::Handle log = open_read_only(out + ".partial");
+  EXPECT_EQ(h5::read_string_attribute(log.id(), "status").rfind("interrupted: SIGINT", 0), 0u);
+  EXPECT_NE(h5::read_string_attribute(log.id(), "command_line").find("--out " + out + " "), std::string::npos)
+      << "the first run's own log";
 }
 
 TEST_F(OutputSafety, SighupEndsTheRunWith129) {

@@ -8,6 +8,7 @@
 
 #include <csignal>
 #include <cstring>
+#include <fstream>
 #include <map>
 #include <thread>
 
@@ -189,6 +190,109 @@ TEST_F(RestartRefusal, ARunStillWritingItsLog) {
   EXPECT_NE(r.err.find("another run is writing it"), std::string::npos) << r.err;
   run->send(SIGKILL);
   run->wait();
+}
+
+// A refused or failed restart leaves the log as it was, byte for byte: each case below is a log
+// stopped by SIGTERM (so it holds a checkpoint), then altered, then given to --restart.
+class RestartLeavesTheLogAsItWas : public Cli {
+ protected:
+  const std::string log = work("stopped.h5");
+  const std::string partial = log + ".partial";
+
+  // tiny_drop with snapshots and a recording of its (free) device, stopped by SIGTERM.
+  void stop_a_run() {
+    auto run = start({"run", kTinyDrop, "--backend", "cpu", "--threads", "1", "--out", log, "--record-device",
+                      work("hand.csv"), "--set", "output/snapshot_interval=0.005", "--set", "simulation/duration=20"});
+    ASSERT_TRUE(wait_for([&] { return non_empty_file(partial); }, 60s)) << run->stderr_so_far();
+    std::this_thread::sleep_for(200ms);
+    run->send(SIGTERM);
+    const ProcessResult stopped = run->wait();
+    ASSERT_EQ(stopped.exit_code, 143) << stopped.err;
+    EXPECT_FALSE(std::filesystem::exists(work("hand.csv"))) << "a recording is written only by a completed run";
+  }
+
+  // Removes the dataset or group at each path that exists (HDF5 C API, read-write).
+  void remove_objects(const std::vector<std::string>& paths) const {
+    const h5::Handle file = h5::file(H5Fopen(partial.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "open " + partial);
+    for (const std::string& path : paths) {
+      if (h5::object_exists(file.id(), path)) h5::check(H5Ldelete(file.id(), path.c_str(), H5P_DEFAULT), path);
+    }
+  }
+
+  // --restart exits 2 naming the log and `fragment`, and the log's bytes are what they were.
+  void expect_refused(const std::string& fragment) const {
+    const std::string before = read_file(partial);
+    const ProcessResult r = mssph({"run", "--restart", partial, "-q"});
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(partial), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(fragment), std::string::npos) << "\"" << fragment << "\" in\n" << r.err;
+    EXPECT_TRUE(read_file(partial) == before) << "the log was changed";
+    EXPECT_FALSE(std::filesystem::exists(log));
+  }
+};
+
+// K22: the checkpoint lacks an array the backend needs.
+TEST_F(RestartLeavesTheLogAsItWas, ACheckpointThatCannotBeRestored) {
+  ASSERT_NO_FATAL_FAILURE(stop_a_run());
+  remove_objects({"/checkpoint/a/state/backend/position", "/checkpoint/b/state/backend/position"});
+  expect_refused("no array \"position\"");
+}
+
+// K05: a snapshot the restart keeps is damaged.
+TEST_F(RestartLeavesTheLogAsItWas, ADamagedSnapshot) {
+  ASSERT_NO_FATAL_FAILURE(stop_a_run());
+  remove_objects({"/snapshots/00000000/density"});
+  expect_refused("damaged");
+}
+
+// K29: a file appeared at the recording's name since the run stopped.
+TEST_F(RestartLeavesTheLogAsItWas, AFileAtTheRecordingsName) {
+  ASSERT_NO_FATAL_FAILURE(stop_a_run());
+  { std::ofstream(work("hand.csv")) << "precious"; }
+  expect_refused(work("hand.csv") + ": exists");
+  EXPECT_EQ(read_file(work("hand.csv")), "precious");
+}
+
+// K30: a file appeared at the finished log's sidecar name since the run stopped.
+TEST_F(RestartLeavesTheLogAsItWas, AFileAtTheSidecarsName) {
+  ASSERT_NO_FATAL_FAILURE(stop_a_run());
+  { std::ofstream(log + ".xdmf") << "precious"; }
+  expect_refused(log + ".xdmf: exists");
+  EXPECT_EQ(read_file(log + ".xdmf"), "precious");
+}
+
+using RestartFromAnotherFolder = Cli;
+
+// K25: a run started in one folder, with a recorded trajectory and a recording given relative to
+// it, continued from another folder: both resolve where the run started.
+TEST_F(RestartFromAnotherFolder, FindsTheRunsRelativeFiles) {
+  const std::filesystem::path folder = work_.path() / "started_here";
+  std::filesystem::create_directory(folder);
+  const auto in_folder = [&](const std::vector<std::string>& args) {
+    std::vector<std::string> argv{MSSPH_BINARY};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return argv;
+  };
+  // A recording to replay, then the scene that replays it, next to each other.
+  ASSERT_EQ(run_process(in_folder({"run", kTinyDrop, "--out", "first.h5", "-q", "--record-device", "hand.csv", "--set",
+                                   "simulation/duration=0.05"}),
+                        folder)
+                .exit_code,
+            0);
+  nlohmann::json scene = read_json(kTinyDrop);
+  scene["proxy"]["trajectory"] = {{"source", "recorded"}, {"file", "hand.csv"}};
+  std::ofstream(folder / "scene.json") << scene.dump(2);
+  ChildProcess run(in_folder({"run", "scene.json", "--backend", "cpu", "--threads", "1", "--out", "replay.h5",
+                              "--record-device", "again.csv", "--set", "simulation/duration=2"}),
+                   folder, capture_.path());
+  ASSERT_TRUE(wait_for([&] { return non_empty_file((folder / "replay.h5.partial").string()); }, 60s));
+  run.send(SIGTERM);
+  ASSERT_EQ(run.wait().exit_code, 143) << "the run ended before the signal?";
+  const ProcessResult continued = mssph({"run", "--restart", "started_here/replay.h5.partial", "-q"});
+  EXPECT_EQ(continued.exit_code, 0) << continued.err;
+  EXPECT_EQ(status_of((folder / "replay.h5").string()), "completed");
+  EXPECT_TRUE(std::filesystem::is_regular_file(folder / "again.csv")) << "the recording lands where it was asked";
+  EXPECT_FALSE(std::filesystem::exists(work("again.csv")));
 }
 
 }  // namespace

@@ -8,6 +8,8 @@
 
 #include <gmock/gmock.h>
 
+#include <fstream>
+
 namespace mssph::test {
 namespace {
 
@@ -88,6 +90,25 @@ TEST_F(Validate, BadArgumentsExit2AndWriteNothing) {
   const ProcessResult r = mssph({"validate", "--case", "no_such_case"});
   EXPECT_THAT(r.err, HasSubstr("--case no_such_case: no such case"));
   EXPECT_THAT(r.err, HasSubstr("hydrostatic"));  // the known cases are listed
+}
+
+// V08: the report's files are replaced only with --force, like every output of mssph; refused,
+// nothing is run and nothing in the folder changes.
+TEST_F(Validate, AnEarlierReportIsReplacedOnlyWithForce) {
+  std::filesystem::create_directory(work("report"));
+  for (const char* name : {"report.json", "report.md"}) std::ofstream(work("report/") + name) << "precious";
+  const std::vector<std::string> args{"validate", "--case", "wrong_expectation", "--out", work("report")};
+  for (const char* name : {"report.json", "report.md"}) {
+    SCOPED_TRACE(name);
+    expect_refused_and_untouched(args, work("report/") + name, "exists; pass --force");
+  }
+  EXPECT_EQ(work_entries(), (std::vector<std::string>{"report", "report/report.json", "report/report.md"}));
+  std::vector<std::string> forced = args;
+  forced.push_back("--force");
+  const ProcessResult r = mssph(forced);
+  EXPECT_EQ(r.exit_code, 1) << r.err;  // the case fails on purpose
+  EXPECT_EQ(read_json(work("report/report.json"))["cases"][0]["status"], "FAIL");
+  EXPECT_THAT(read_file(work("report/report.md")), HasSubstr("wrong_expectation"));
 }
 
 // The Timoshenko correction the cantilever frequency case quotes is what its script computes.

@@ -6,8 +6,10 @@
 
 #include <cmath>
 #include <exception>
+#include <fstream>
 #include <iostream>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 
 int main(int argc, char** argv) {
@@ -26,7 +28,10 @@ int main(int argc, char** argv) {
   }
   try {
     for (const char* name : {"valid.csv", "valid.h5"}) {
-      mssph::write_device_recording(std::string(argv[1]) + "/" + name, recording);
+      const std::string path = std::string(argv[1]) + "/" + name;
+      std::ofstream file(path, std::ios::binary);
+      file << mssph::device_recording_bytes(path, recording);
+      if (!file.flush()) throw std::runtime_error(path + ": cannot write");
     }
   } catch (const std::exception& e) {
     std::cerr << e.what() << "\n";

@@ -8,6 +8,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 namespace mssph::test {
 namespace {
 
@@ -110,7 +112,8 @@ TEST(HapticsConfig, RecordedFilesResolveAgainstTheSceneFolderAndAreValidatedAtLo
   TempDir dir;
   DeviceRecording recording{{0.0, 0.001},
                             {Pose{}, Pose{Eigen::Vector3d(0.01, 0.0, 0.0), Eigen::Quaterniond::Identity()}}};
-  write_device_recording((dir / "hand.csv").string(), recording);
+  const std::string hand = (dir / "hand.csv").string();
+  std::ofstream(hand, std::ios::binary) << device_recording_bytes(hand, recording);
   const nlohmann::json proxy = {{"body", "probe"}, {"trajectory", {{"source", "recorded"}, {"file", "hand.csv"}}}};
   const HapticsConfig c = parse(proxy, (dir / "scene.json").string());
   EXPECT_EQ(c.trajectory.file, (dir / "hand.csv").string());

@@ -153,7 +153,7 @@ TEST(DeviceRecordingFiles, BothFormatsRoundTripExactly) {
              Eigen::Quaterniond(Eigen::AngleAxisd(3.0 * t, Eigen::Vector3d(1, 2, 3).normalized()))});
   }
   for (const char* name : {"trajectory.csv", "trajectory.h5"}) {
-    write_device_recording((dir / name).string(), recording);
+    std::ofstream((dir / name).string(), std::ios::binary) << device_recording_bytes(name, recording);
     const DeviceRecording back = read_device_recording((dir / name).string(), kVirtuose);
     ASSERT_EQ(back.time, recording.time) << name;
     for (std::size_t i = 0; i < back.pose.size(); ++i) {

@@ -6,8 +6,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <stdexcept>
 
 namespace mssph::validation {
 namespace {
@@ -107,7 +105,7 @@ void print_table(const RunInfo& info, const std::vector<CaseRun>& runs) {
   std::fflush(stdout);
 }
 
-void write_report_json(const std::string& path, const RunInfo& info, const std::vector<CaseRun>& runs) {
+std::string report_json_text(const RunInfo& info, const std::vector<CaseRun>& runs) {
   nlohmann::json cases = nlohmann::json::array();
   for (const CaseRun& run : runs) {
     nlohmann::json checks = nlohmann::json::array();
@@ -146,13 +144,11 @@ void write_report_json(const std::string& path, const RunInfo& info, const std::
                      {"checks", checks},
                      {"series", series}});
   }
-  std::ofstream out(path);
-  out << nlohmann::json{{"run", info_json(info)}, {"cases", cases}}.dump(2) << "\n";
-  if (!out) throw std::runtime_error(path + ": cannot write");
+  return nlohmann::json{{"run", info_json(info)}, {"cases", cases}}.dump(2) + "\n";
 }
 
-void write_report_hdf5(const std::string& path, const RunInfo& info, const std::vector<CaseRun>& runs) {
-  h5::Handle file = h5::file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create " + path);
+std::string report_hdf5_image(const RunInfo& info, const std::vector<CaseRun>& runs) {
+  h5::Handle file = h5::in_memory_file("validation.h5");
   write_info_attributes(file.id(), info);
   for (const CaseRun& run : runs) {
     const std::string case_path = "/" + run.which->suite + "/" + run.which->name;
@@ -170,6 +166,7 @@ void write_report_hdf5(const std::string& path, const RunInfo& info, const std::
       }
     }
   }
+  return h5::file_image(file.id());
 }
 
 }  // namespace mssph::validation

@@ -36,7 +36,9 @@ struct CaseRun {
 Status case_status(const CaseRun& run);
 
 void print_table(const RunInfo& info, const std::vector<CaseRun>& runs);
-void write_report_json(const std::string& path, const RunInfo& info, const std::vector<CaseRun>& runs);
-void write_report_hdf5(const std::string& path, const RunInfo& info, const std::vector<CaseRun>& runs);
+// The contents of report.json and of validation.h5 (built in memory), which `mssph validate`
+// writes as it writes every output (io/output_file.hpp).
+std::string report_json_text(const RunInfo& info, const std::vector<CaseRun>& runs);
+std::string report_hdf5_image(const RunInfo& info, const std::vector<CaseRun>& runs);
 
 }  // namespace mssph::validation

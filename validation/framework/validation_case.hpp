@@ -64,6 +64,7 @@ struct CaseContext {
   std::uint64_t seed = 0;                  // fresh per run, printed; drives the random perturbations
   std::string validation_dir;              // the folder holding the cases' scenes
   std::string work_dir;                    // where cases may write run logs (inside --out)
+  bool replace_logs = false;               // --force: a case's run may replace an earlier log in work_dir
 };
 
 struct ValidationCase {

@@ -11,7 +11,8 @@
 namespace mssph::validation {
 
 HapticAgreement haptic_scene_agreement(const std::string& backend, const std::string& scene,
-                                       const std::vector<std::string>& overrides, const std::string& work_dir) {
+                                       const std::vector<std::string>& overrides, const std::string& work_dir,
+                                       bool replace) {
   const auto run = [&](const std::string& name) {
     cli::SceneRunRequest request;
     request.scene_path = std::string(MSSPH_SOURCE_DIR) + "/configs/" + scene + ".json";
@@ -19,6 +20,7 @@ HapticAgreement haptic_scene_agreement(const std::string& backend, const std::st
     request.backend = name;
     request.output = work_dir + "/" + scene + "_" + name + ".h5";
     request.quiet = true;
+    request.force = replace;
     const cli::SceneRunResult result = cli::run_scene(request);
     if (result.exit_code != kExitOk) throw std::runtime_error(request.output + ": the run failed: " + result.error);
     return result.output;

@@ -13,8 +13,10 @@ struct HapticAgreement {
   std::vector<double> time, force_reference, force_candidate;  // per haptic tick; |F| [N]
 };
 
-// Runs configs/<scene>.json with the overrides on both backends, logs under `work_dir`.
+// Runs configs/<scene>.json with the overrides on both backends, logs under `work_dir`
+// (replacing earlier ones when `replace`).
 HapticAgreement haptic_scene_agreement(const std::string& backend, const std::string& scene,
-                                       const std::vector<std::string>& overrides, const std::string& work_dir);
+                                       const std::vector<std::string>& overrides, const std::string& work_dir,
+                                       bool replace);
 
 }  // namespace mssph::validation

@@ -34,7 +34,7 @@ CaseResult run_haptic_scenes_case(const CaseContext& context) {
       std::cerr << "validate: haptic scene " << s.name << ", " << backend << " vs reference\n";
       std::vector<std::string> overrides{"simulation/particle_spacing=" + spacing};
       if (context.quick) overrides.push_back("simulation/duration=" + exact(s.quick_duration));
-      const HapticAgreement a = haptic_scene_agreement(backend, s.name, overrides, work_dir);
+      const HapticAgreement a = haptic_scene_agreement(backend, s.name, overrides, work_dir, context.replace_logs);
       for (Check c : {bound_check(prefix + "proxy force NRMS", "-", a.force_error, s.tolerance),
                       bound_check(prefix + "proxy path NRMS", "-", a.path_error, s.tolerance)}) {
         c.backend = backend;
