@@ -1,6 +1,7 @@
 #include "scene_run.hpp"
 
 #include "backend_factory/backend_factory.hpp"
+#include "config/input_file.hpp"
 #include "config/scene_loader.hpp"
 #include "haptics/haptics_run.hpp"
 #include "interrupt.hpp"
@@ -17,21 +18,11 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
 namespace mssph::cli {
 namespace {
-
-// The scene file as the user wrote it, recorded next to the parsed scene.
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // A closed stdout (`mssph run ... | head -0`) makes these writes fail with EPIPE (SIGPIPE is
 // ignored): the run they describe has completed all the same, so their failure is not an error.
@@ -289,8 +280,9 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   // too (nothing is written then).
   install_interrupt_handlers();
   // Everything that can be wrong with the input is found before the log file exists.
-  const Scene scene = load_scene(request.scene_path, request.overrides);
-  const std::string scene_text = read_text(request.scene_path);
+  // Read once: the text parsed is the text recorded, even from a pipe (/dev/stdin).
+  const std::string scene_text = read_input_file(request.scene_path, "scene file");
+  const Scene scene = parse_scene_text(scene_text, request.scene_path, request.overrides);
   const std::string backend_name = resolve_backend_name(request.backend);
   const std::vector<Tag> tags = parse_tags(request.tags);
   const std::string output = request.output.empty() ? default_output_path(scene.name, backend_name) : request.output;

@@ -5,6 +5,8 @@
 
 #include <gmock/gmock.h>
 
+#include <fstream>
+
 namespace mssph::test {
 namespace {
 
@@ -20,12 +22,21 @@ class SweepBadInput : public SweepCli {
  protected:
   void expect_rejected(const nlohmann::json& document, const std::vector<std::string>& expected,
                        const std::vector<std::string>& extra_args = {}) {
-    const std::string file = write_json(files_, "bad_sweep.json", document);
+    expect_file_rejected(write_json(files_, "bad_sweep.json", document), expected, extra_args);
+  }
+  // A sweep file whose text no JSON value dumps to: deep, overflowing, with a key twice.
+  void expect_text_rejected(const std::string& text, const std::vector<std::string>& expected) {
+    const std::string file = (files_ / "bad_sweep.json").string();
+    std::ofstream(file) << text;
+    expect_file_rejected(file, expected, {});
+  }
+  void expect_file_rejected(const std::string& file, const std::vector<std::string>& expected,
+                            const std::vector<std::string>& extra_args) {
     std::vector<std::string> args{"sweep", file, "--out", out(), "--backend", "cpu"};
     args.insert(args.end(), extra_args.begin(), extra_args.end());
     const ProcessResult r = mssph(args);
-    EXPECT_EQ(r.exit_code, 2) << r.err;
-    for (const std::string& e : expected) EXPECT_THAT(r.err, HasSubstr(e)) << document.dump();
+    EXPECT_EQ(r.exit_code, 2) << "signal " << r.signal << "\n" << r.err;
+    for (const std::string& e : expected) EXPECT_THAT(r.err, HasSubstr(e)) << file;
     EXPECT_TRUE(work_entries().empty()) << "nothing may be written before every point is accepted";
   }
   TempDir files_;
@@ -57,6 +68,19 @@ TEST_F(SweepBadInput, AValueTheSceneLoaderRejects) {
 TEST_F(SweepBadInput, UnknownMetric) {
   expect_rejected(tiny_sweep(nlohmann::json::array({kDensity}), {{"metrics", {"time_to_peak", "peak_force"}}}),
                   {"bad_sweep.json: /metrics/1: unknown metric \"peak_force\"; known metrics: peak_interaction_force"});
+}
+
+// The sweep file through the one strict JSON reader: a value list nested 100000 deep crashed the
+// sweep (SIGSEGV), 1e400 and a key twice gave raw library errors (exit 1) or the last value.
+TEST_F(SweepBadInput, JsonThatIsDeepOverflowsOrRepeatsAKey) {
+  const std::string head = "{\"name\": \"s\", \"scene\": \"" + tiny_scene() + "\", \"parameters\": [";
+  expect_text_rejected(head + "{\"path\": \"bodies/ball/density\", \"values\": [" + std::string(100000, '[') +
+                           std::string(100000, ']') + "]}]}",
+                       {"bad_sweep.json: /parameters/0/values/0/0/0/", "nested more than 64 levels"});
+  expect_text_rejected(head + "{\"path\": \"bodies/ball/density\", \"values\": [1e400]}]}",
+                       {"bad_sweep.json: /parameters/0/values/0: [json.exception.out_of_range.406]"});
+  expect_text_rejected(head + "{\"path\": \"bodies/ball/density\", \"path\": \"x\", \"values\": [1]}]}",
+                       {"bad_sweep.json: /parameters/0/path: duplicate key 'path'"});
 }
 
 TEST_F(SweepBadInput, CommandLineSetOfASweptPath) {
