@@ -217,6 +217,8 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
     throw InputError("--restart " + request.restart + ": the run completed (its log is " + output +
                      "); there is nothing to continue");
   }
+  // Until the log is reopened for writing, a signal ends the process at once: the log is as it was.
+  end_at_once_on_signal("before the run continued; " + partial + " is unchanged");
   // The lock first: a run still writing the log is refused before anything reads it.
   OutputClaim claim = OutputClaim::resume(output);
   const RunLogHeader header = read_run_log_header(partial);
@@ -231,6 +233,7 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
 
   SceneRunResult result;
   result.backend = backend->info();
+  stop_after_step_on_signal();
   if (const int signal = interrupt_signal()) {
     std::cerr << "error: " << signal_name(signal) << " before the run continued; " << partial << " is unchanged\n";
     result.exit_code = 128 + signal;
@@ -276,9 +279,10 @@ std::string command_line_of(const SceneRunRequest& request) {
 
 SceneRunResult run_scene(const SceneRunRequest& request) {
   if (!request.restart.empty()) return continue_run(request);
-  // Signals are caught from the start, so that one arriving during set-up ends the run cleanly
-  // too (nothing is written then).
+  // Signals are caught from the start: one arriving while the scene loads or the particles and
+  // the backend are set up ends the process at once (nothing is written then).
   install_interrupt_handlers();
+  end_at_once_on_signal("before the run started; nothing was written");
   // Everything that can be wrong with the input is found before the log file exists.
   // Read once: the text parsed is the text recorded, even from a pipe (/dev/stdin).
   const std::string scene_text = read_input_file(request.scene_path, "scene file");
@@ -324,6 +328,7 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   std::unique_ptr<Backend> backend = make_backend(backend_name, std::move(setup));
   result.backend = backend->info();
 
+  stop_after_step_on_signal();
   if (const int signal = interrupt_signal()) {
     std::cerr << "error: " << signal_name(signal) << " before the run started; nothing was written\n";
     result.exit_code = 128 + signal;
