@@ -83,6 +83,42 @@ TEST_F(SweepBadInput, JsonThatIsDeepOverflowsOrRepeatsAKey) {
                        {"bad_sweep.json: /parameters/0/path: duplicate key 'path'"});
 }
 
+// 2^64 points wrapped the count to 0 ("0 points, every one accepted", exit 0); 1e10 points
+// exhausted memory. Both are refused with their true count, the dry run too.
+TEST_F(SweepBadInput, MorePointsThanTheLimit) {
+  const nlohmann::json range = {{"from", 1.0}, {"to", 2.0}, {"count", 65536}};
+  nlohmann::json four = nlohmann::json::array();
+  for (const char* path : {"bodies/ball/density", "materials/contact/viscosity", "materials/contact/pressure_stiffness",
+                           "simulation/max_speed"}) {
+    four.push_back({{"path", path}, {"linear", range}});
+  }
+  expect_rejected(tiny_sweep(four),
+                  {"bad_sweep.json: /parameters: the sweep has 18446744073709551616 points (65536 density x 65536 "
+                   "viscosity x 65536 pressure_stiffness x 65536 max_speed); at most 100000 are allowed"},
+                  {"--dry-run"});
+  const nlohmann::json wide = {{"from", 1.0}, {"to", 2.0}, {"count", 100000}};
+  expect_rejected(tiny_sweep({{{"path", "bodies/ball/density"}, {"linear", wide}},
+                              {{"path", "materials/contact/viscosity"}, {"linear", wide}}},
+                             {{"repetitions", {{"seeds", {1, 2}}}}}),
+                  {"the sweep has 20000000000 points (100000 density x 100000 viscosity x 2 seeds)"});
+}
+
+// Range values that round to equal ones at 10 digits were reported as a hash collision, exit 1.
+TEST_F(SweepBadInput, ARangeWhoseValuesRoundToEqualOnes) {
+  expect_rejected(
+      tiny_sweep({{{"path", "bodies/ball/density"}, {"linear", {{"from", 400.0}, {"to", 400.0000001}, {"count", 5}}}}}),
+      {"bad_sweep.json: /parameters/0/linear/count: 5 values from 400.0 to 400.0000001 round to equal "
+       "values at 10 significant digits"});
+}
+
+// A sweep named ".." wrote points/ and summary.* into results/ itself.
+TEST_F(SweepBadInput, ANameThatIsAFoldersParent) {
+  for (const char* name : {"..", "."}) {
+    expect_rejected(tiny_sweep(nlohmann::json::array({kDensity}), {{"name", name}}),
+                    {"bad_sweep.json: /name: expected a name of letters, digits"});
+  }
+}
+
 TEST_F(SweepBadInput, CommandLineSetOfASweptPath) {
   expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--set bodies/ball/density=1", "is swept by"},
                   {"--set", "bodies/ball/density=1"});
