@@ -73,6 +73,13 @@ bool same_file(const std::string& a, const std::string& b) {
   return fs::weakly_canonical(a, error) == fs::weakly_canonical(b, error);
 }
 
+bool held_by_another_run(const std::string& path) {
+  const int existing = open((path + ".partial").c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+  const bool busy = existing >= 0 && flock(existing, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  if (existing >= 0) close(existing);
+  return busy;
+}
+
 void check_claimable(const std::string& path, bool replace) {
   const std::string partial = path + ".partial";
   check_replaceable("--out", path, replace);
@@ -81,10 +88,8 @@ void check_claimable(const std::string& path, bool replace) {
   if (!S_ISREG(st.st_mode)) {
     throw InputError("--out " + path + ": " + partial + " (where the run would write) is " + what_is(st));
   }
-  const int existing = open(partial.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-  const bool busy = existing >= 0 && flock(existing, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
-  if (existing >= 0) close(existing);
-  if (busy) throw InputError("--out " + path + ": another run is writing it (it holds " + partial + ")");
+  if (held_by_another_run(path))
+    throw InputError("--out " + path + ": another run is writing it (it holds " + partial + ")");
   if (!replace) {
     throw InputError("--out " + path + ": " + partial +
                      " is the log of an earlier run that did not finish; pass --force to replace it, or move it away");

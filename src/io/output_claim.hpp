@@ -67,6 +67,9 @@ void check_replaceable(const std::string& option, const std::string& path, bool 
 // path before it spends time building its particles.
 void check_claimable(const std::string& path, bool replace);
 
+// Whether another process holds the claim on `path` (the lock on <path>.partial): a run writing it.
+bool held_by_another_run(const std::string& path);
+
 // Whether two paths name the same file: the same inode when both exist, else the same
 // absolute, normalized path.
 bool same_file(const std::string& a, const std::string& b);
