@@ -119,6 +119,20 @@ TEST_F(SweepBadInput, ANameThatIsAFoldersParent) {
   }
 }
 
+// A damaged DIR/sweep.json gave a Python traceback and exit 1.
+TEST_F(SweepBadInput, MergeOfADamagedManifest) {
+  std::filesystem::create_directories(out());
+  for (const char* text : {"{\"name\": ", "[]", "{\"name\": \"s\"}",
+                           R"({"name": "s", "metrics": [], "seeds": [], "parameters": [], "command_line_overrides": [],
+                               "points": [7]})"}) {
+    std::ofstream(out() + "/sweep.json") << text;
+    const ProcessResult r = mssph({"sweep", "merge", out()});
+    EXPECT_EQ(r.exit_code, 2) << text << "\n" << r.err;
+    EXPECT_THAT(r.err, HasSubstr("sweep.json: damaged: ")) << text;
+    EXPECT_THAT(r.err, ::testing::Not(HasSubstr("Traceback"))) << text;
+  }
+}
+
 TEST_F(SweepBadInput, CommandLineSetOfASweptPath) {
   expect_rejected(tiny_sweep(nlohmann::json::array({kDensity})), {"--set bodies/ball/density=1", "is swept by"},
                   {"--set", "bodies/ball/density=1"});
