@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -226,6 +227,12 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
   const std::string backend_name = resolve_backend_name(header.backend);
   const RunEstimate estimate = estimate_run(scene, backend_name);
   check_run_fits(scene, backend_name, estimate, available_host_memory(), device_memory_for(backend_name));
+  // A damaged step would make the run continue past its end (or before its start) for ever.
+  if (header.checkpoint_step < -1 || header.checkpoint_step > std::llround(estimate.steps)) {
+    throw InputError("--restart " + request.restart + ": its latest checkpoint says step " +
+                     std::to_string(header.checkpoint_step) + ", outside the run's 0 to " +
+                     std::to_string(std::llround(estimate.steps)) + " steps: the log is damaged");
+  }
   const int threads = request.threads > 0 ? request.threads : default_thread_count();
   set_thread_count(threads);
   const ParticleSetup setup = build_particles(scene);
