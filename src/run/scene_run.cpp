@@ -78,14 +78,6 @@ void write_tags(RunLog& log, const std::vector<Tag>& tags) {
   }
 }
 
-std::optional<double> device_memory_for(const std::string& backend) {
-  if (backend == "cuda") {
-    const std::vector<GpuDevice> devices = gpu_devices();
-    if (!devices.empty()) return static_cast<double>(devices.front().total_memory);
-  }
-  return std::nullopt;
-}
-
 // No output may be one of the run's inputs or another of its outputs; none may replace anything
 // but a regular file, and that only with --force.
 void check_outputs(const SceneRunRequest& request, const Scene& scene, const std::string& output) {
@@ -226,7 +218,7 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
   const Scene scene = parse_scene_text(header.config, header.config_path);
   const std::string backend_name = resolve_backend_name(header.backend);
   const RunEstimate estimate = estimate_run(scene, backend_name);
-  check_run_fits(scene, backend_name, estimate, available_host_memory(), device_memory_for(backend_name));
+  check_run_fits(scene, backend_name, estimate, available_host_memory(), gpu_memory_for(backend_name));
   // A damaged step would make the run continue past its end (or before its start) for ever.
   if (header.checkpoint_step < -1 || header.checkpoint_step > std::llround(estimate.steps)) {
     throw InputError("--restart " + request.restart + ": its latest checkpoint says step " +
@@ -308,7 +300,7 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   };
   const RunEstimate estimate = noting_overrides([&] { return estimate_run(scene, backend_name); });
   noting_overrides(
-      [&] { check_run_fits(scene, backend_name, estimate, available_host_memory(), device_memory_for(backend_name)); });
+      [&] { check_run_fits(scene, backend_name, estimate, available_host_memory(), gpu_memory_for(backend_name)); });
   const int threads = request.threads > 0 ? request.threads : default_thread_count();
   set_thread_count(threads);
 
