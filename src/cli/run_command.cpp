@@ -2,6 +2,7 @@
 #include "backend_factory/backend_factory.hpp"
 #include "commands.hpp"
 #include "guarded.hpp"
+#include "option_checks.hpp"
 #include "run/output_path.hpp"
 #include "run/scene_run.hpp"
 #include "util/errors.hpp"
@@ -22,7 +23,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--checkpoint-interval", args->checkpoint_interval,
                   "Write a checkpoint into the log every SECONDS of wall-clock time, for --restart (SIGINT, SIGTERM "
                   "and SIGHUP write one anyway)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite_number());
   std::string built;
   for (const std::string& name : available_backends()) built += (built.empty() ? "" : ", ") + name;
   cmd->add_option("--backend", args->backend,

@@ -4,6 +4,7 @@
 #include "backend_factory/backend_factory.hpp"
 #include "commands.hpp"
 #include "guarded.hpp"
+#include "option_checks.hpp"
 #include "run/python_script.hpp"
 #include "sweep/point_runner.hpp"
 #include "sweep/point_status.hpp"
@@ -354,7 +355,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
          "--checkpoint-interval", args->checkpoint_interval,
          "Each point's run writes a checkpoint every SECONDS of wall-clock time (as mssph run; a signal writes "
          "one anyway), so a point killed with its node loses at most that much")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite_number());
   cmd->add_flag("--dry-run", args->dry_run, "Validate every point and list them with their logs' state; run nothing");
   cmd->add_flag(
       "--emit-slurm", args->emit_slurm,
