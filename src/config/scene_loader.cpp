@@ -112,6 +112,11 @@ SimulationConfig read_simulation(const JsonReader& root) {
   }
   sim.gravity = s.vec3_or("gravity", sim.gravity);
   sim.particle_spacing = s.number("particle_spacing", Interval::positive());
+  // At most 1 km: beyond, the smoothing length, particle volumes and memory figures derived from
+  // it overflow (a spacing of 1e308 m made "about 1 particles need about inf EiB").
+  if (sim.particle_spacing > 1e3) {
+    s.fail("particle_spacing", "expected at most 1000 m, got " + std::to_string(sim.particle_spacing));
+  }
   sim.smoothing_length = s.number_or("smoothing_length", 2.0 * sim.particle_spacing, Interval::positive());
   if (sim.smoothing_length < sim.particle_spacing || sim.smoothing_length > 4.0 * sim.particle_spacing) {
     s.fail("smoothing_length", "expected a support radius h between 1 and 4 particle spacings (" +
@@ -399,8 +404,14 @@ Scene parse_scene(const nlohmann::json& document, const std::string& file) {
   scene.source_file = file;
   scene.document = document;
   scene.name = root.string("name");
-  if (scene.name.empty() || scene.name.find_first_of("/\\ ") != std::string::npos) {
-    root.fail("name", "expected a non-empty name without spaces or slashes (it names output files)");
+  // It names output files: a space, slash or control character (a newline, NUL) has no place there.
+  const bool plain = std::none_of(scene.name.begin(), scene.name.end(), [](char c) {
+    const auto byte = static_cast<unsigned char>(c);
+    return byte < 0x20 || byte == 0x7f || c == ' ' || c == '/' || c == '\\';
+  });
+  if (scene.name.empty() || !plain) {
+    root.fail("name",
+              "expected a non-empty name without spaces or slashes, nor control characters (it names output files)");
   }
   scene.description = root.string_or("description", "");
   scene.simulation = read_simulation(root);

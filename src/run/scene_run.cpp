@@ -1,6 +1,7 @@
 #include "scene_run.hpp"
 
 #include "backend_factory/backend_factory.hpp"
+#include "backend_support.hpp"
 #include "config/input_file.hpp"
 #include "config/scene_loader.hpp"
 #include "haptics/haptics_run.hpp"
@@ -219,6 +220,7 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
   const std::string backend_name = resolve_backend_name(header.backend);
   const RunEstimate estimate = estimate_run(scene, backend_name);
   check_run_fits(scene, backend_name, estimate, available_host_memory(), gpu_memory_for(backend_name));
+  check_backend_supports(scene, backend_name);
   // A damaged step would make the run continue past its end (or before its start) for ever.
   if (header.checkpoint_step < -1 || header.checkpoint_step > std::llround(estimate.steps)) {
     throw InputError("--restart " + request.restart + ": its latest checkpoint says step " +
@@ -301,6 +303,7 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   const RunEstimate estimate = noting_overrides([&] { return estimate_run(scene, backend_name); });
   noting_overrides(
       [&] { check_run_fits(scene, backend_name, estimate, available_host_memory(), gpu_memory_for(backend_name)); });
+  noting_overrides([&] { check_backend_supports(scene, backend_name); });
   const int threads = request.threads > 0 ? request.threads : default_thread_count();
   set_thread_count(threads);
 
