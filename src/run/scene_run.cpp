@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -324,7 +325,8 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
     }
     std::cerr << "), " << std::llround(estimate.steps) << " steps of " << scene.simulation.dt << " s on "
               << backend_name << ", " << threads << " threads ("
-              << (request.threads > 0 ? std::string("--threads") : default_thread_source()) << ")\n";
+              << (request.threads > 0 ? std::string("--threads") : default_thread_source()) << "), OMP_WAIT_POLICY "
+              << (std::getenv("OMP_WAIT_POLICY") ? std::getenv("OMP_WAIT_POLICY") : "unset") << "\n";
   }
   const ParticleSetup setup_for_log = setup;
   std::unique_ptr<Backend> backend = make_backend(backend_name, std::move(setup));
