@@ -51,7 +51,7 @@ extern "C" void on_signal(int signal) {
 
 }  // namespace
 
-void end_at_once_on_signal(const std::string& note) {
+EndAtOnceOnSignal::EndAtOnceOnSignal(const std::string& note) {
   g_end_at_once = 0;  // the handler reads the note only while this is set
   const std::size_t n = std::min(note.size(), sizeof g_note - 1);
   std::memcpy(g_note, note.data(), n);
@@ -61,7 +61,7 @@ void end_at_once_on_signal(const std::string& note) {
   if (g_signal != 0) on_signal(g_signal);
 }
 
-void stop_after_step_on_signal() { g_end_at_once = 0; }
+EndAtOnceOnSignal::~EndAtOnceOnSignal() { g_end_at_once = 0; }
 
 void install_interrupt_handlers() {
   struct sigaction action {};

@@ -26,13 +26,19 @@ class RunInterrupted : public std::runtime_error {
 // then shows as a failed write, which a finished run ignores, instead of killing the process) and
 // SIGXFSZ (a file size limit then fails a write with EFBIG, reported like a full disk).
 void install_interrupt_handlers();
-// From now on SIGINT, SIGTERM and SIGHUP end the process at once, from the handler, with exit code
-// 128 + the signal's number and "error: <signal> <note>" on stderr, e.g. note "before the run
-// started; nothing was written". For work that has written nothing yet: a blocked open or read,
-// or a long loop, ends within milliseconds. `note` is copied (at most 511 bytes are kept).
-void end_at_once_on_signal(const std::string& note);
-// Back to what install_interrupt_handlers() set: a signal is noted for the step loop to act on.
-void stop_after_step_on_signal();
+// While one lives, SIGINT, SIGTERM and SIGHUP end the process at once, from the handler, with
+// exit code 128 + the signal's number and "error: <signal> <note>" on stderr, e.g. note "before
+// the run started; nothing was written". For work that has written nothing yet: a blocked open or
+// read, or a long loop, ends within milliseconds. `note` is copied (at most 511 bytes are kept).
+// Its end (the log is about to be written, or the set-up threw) goes back to what
+// install_interrupt_handlers() set: a signal is noted for the step loop to act on.
+class EndAtOnceOnSignal {
+ public:
+  explicit EndAtOnceOnSignal(const std::string& note);
+  ~EndAtOnceOnSignal();
+  EndAtOnceOnSignal(const EndAtOnceOnSignal&) = delete;
+  EndAtOnceOnSignal& operator=(const EndAtOnceOnSignal&) = delete;
+};
 // The first interrupting signal received, 0 when none.
 int interrupt_signal();
 bool interrupt_requested();

@@ -22,6 +22,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace mssph::cli {
@@ -213,7 +214,8 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
                      "); there is nothing to continue");
   }
   // Until the log is reopened for writing, a signal ends the process at once: the log is as it was.
-  end_at_once_on_signal("before the run continued; " + partial + " is unchanged");
+  std::optional<EndAtOnceOnSignal> before_the_log;
+  before_the_log.emplace("before the run continued; " + partial + " is unchanged");
   // The lock first: a run still writing the log is refused before anything reads it.
   OutputClaim claim = OutputClaim::resume(output);
   const RunLogHeader header = read_run_log_header(partial);
@@ -235,7 +237,7 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
 
   SceneRunResult result;
   result.backend = backend->info();
-  stop_after_step_on_signal();
+  before_the_log.reset();
   if (const int signal = interrupt_signal()) {
     std::cerr << "error: " << signal_name(signal) << " before the run continued; " << partial << " is unchanged\n";
     result.exit_code = 128 + signal;
@@ -284,7 +286,8 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   // Signals are caught from the start: one arriving while the scene loads or the particles and
   // the backend are set up ends the process at once (nothing is written then).
   install_interrupt_handlers();
-  end_at_once_on_signal("before the run started; nothing was written");
+  std::optional<EndAtOnceOnSignal> before_the_log;
+  before_the_log.emplace("before the run started; nothing was written");
   // Everything that can be wrong with the input is found before the log file exists.
   // Read once: the text parsed is the text recorded, even from a pipe (/dev/stdin).
   const std::string scene_text = read_input_file(request.scene_path, "scene file");
@@ -332,7 +335,7 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   std::unique_ptr<Backend> backend = make_backend(backend_name, std::move(setup));
   result.backend = backend->info();
 
-  stop_after_step_on_signal();
+  before_the_log.reset();
   if (const int signal = interrupt_signal()) {
     std::cerr << "error: " << signal_name(signal) << " before the run started; nothing was written\n";
     result.exit_code = 128 + signal;
