@@ -39,7 +39,7 @@ double positive(const JsonReader& entry, const std::string& key) {
 BenchmarkResults read_benchmark_results(const std::string& path) {
   nlohmann::json document;
   try {
-    document = read_json_file(path, "benchmark results");
+    document = read_json_file(path, "benchmark results file");
   } catch (const JsonSyntaxError& e) {
     throw InputError(path + ": not JSON (" + e.what() + ")");
   }

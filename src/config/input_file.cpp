@@ -27,13 +27,6 @@ class OpenFile {
 
 std::string limit_text() { return std::to_string(kMaxInputFileBytes >> 20) + " MiB"; }
 
-// What kind of file `mode` is, for a refusal: "a directory", "a block device".
-const char* kind_of(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISBLK(mode)) return "a block device";
-  return "not a file mssph reads";
-}
-
 // Waits until `fd` has data or its end (a FIFO: until a writer has written or come and gone).
 void wait_readable(int fd) {
   pollfd request{fd, POLLIN, 0};
@@ -55,9 +48,10 @@ std::string read_input_file(const std::string& path, const std::string& what) {
   const OpenFile file(fd);
   struct stat info {};
   if (::fstat(fd, &info) != 0) throw InputError(path + ": cannot read " + what + " (" + std::strerror(errno) + ")");
-  const bool readable =
-      S_ISREG(info.st_mode) || S_ISFIFO(info.st_mode) || S_ISSOCK(info.st_mode) || S_ISCHR(info.st_mode);
-  if (!readable) throw InputError(path + ": " + kind_of(info.st_mode) + ", not a " + what);
+  // Anything but a directory or a block device (a disk: gigabytes that are no input file).
+  if (S_ISDIR(info.st_mode) || S_ISBLK(info.st_mode)) {
+    throw InputError(path + ": " + (S_ISDIR(info.st_mode) ? "a directory" : "a block device") + ", not a " + what);
+  }
   if (S_ISREG(info.st_mode) && static_cast<std::size_t>(info.st_size) > kMaxInputFileBytes) {
     throw InputError(path + ": " + std::to_string(info.st_size) + " bytes; a " + what + " may have at most " +
                      limit_text());
