@@ -17,7 +17,7 @@ still "running": in progress, or left by a killed run) or missing (no log yet). 
 from scripts/analysis/log_metrics.py, computed on whatever each log holds; a missing point's are
 NaN (empty in the CSV). The points that are not completed are listed on stdout.
 
-Exit codes: 0 written; 2 DIR is not a sweep's folder.
+Exit codes: 0 written; 2 DIR is not a sweep's folder, or its sweep.json is damaged.
 """
 import csv
 import datetime
@@ -127,6 +127,44 @@ def write_csv(path, columns):
     os.replace(partial, path)
 
 
+class DamagedManifest(Exception):
+    """sweep.json is not what `mssph sweep` writes."""
+
+
+def expect(condition, what):
+    if not condition:
+        raise DamagedManifest(what)
+
+
+def read_manifest(path):
+    """DIR/sweep.json, checked for every key this script reads: a damaged file is an error that says
+    what is wrong, not a traceback."""
+    try:
+        manifest = json.loads(path.read_text())
+    except (ValueError, UnicodeDecodeError) as error:
+        raise DamagedManifest(f"not JSON ({error})") from None
+    expect(isinstance(manifest, dict), "not a JSON object")
+    for key, kind in (("name", str), ("metrics", list), ("points", list), ("seeds", list),
+                      ("parameters", list), ("command_line_overrides", list)):
+        expect(isinstance(manifest.get(key), kind), f"no \"{key}\" {kind.__name__}")
+    for metric in manifest["metrics"]:
+        expect(metric in log_metrics.METRICS, f"/metrics: unknown metric {json.dumps(metric)}")
+    for i, parameter in enumerate(manifest["parameters"]):
+        expect(isinstance(parameter, dict) and all(isinstance(parameter.get(k), str) for k in ("name", "path", "scale")),
+               f"/parameters/{i}: expected an object with \"name\", \"path\" and \"scale\" strings")
+    names = [parameter["name"] for parameter in manifest["parameters"]]
+    for i, point in enumerate(manifest["points"]):
+        where = f"/points/{i}"
+        expect(isinstance(point, dict), f"{where}: expected an object")
+        expect(isinstance(point.get("index"), int) and isinstance(point.get("hash"), str) and
+               isinstance(point.get("log"), str) and isinstance(point.get("overrides"), list),
+               f"{where}: expected \"index\" (a number), \"hash\" and \"log\" (strings) and \"overrides\" (a list)")
+        expect(point.get("seed") is None or isinstance(point["seed"], int), f"{where}/seed: expected a number or null")
+        expect(isinstance(point.get("parameters"), dict) and all(n in point["parameters"] for n in names),
+               f"{where}/parameters: expected a value for each of {', '.join(names)}")
+    return manifest
+
+
 def main(argv):
     if len(argv) != 1:
         print("usage: summarize.py DIR", file=sys.stderr)
@@ -136,7 +174,12 @@ def main(argv):
     if not manifest_path.is_file():
         print(f"error: {directory}: no sweep.json: not the --out folder of an mssph sweep", file=sys.stderr)
         return 2
-    manifest = json.loads(manifest_path.read_text())
+    try:
+        manifest = read_manifest(manifest_path)
+    except DamagedManifest as error:
+        print(f"error: {manifest_path}: damaged: {error}; running the sweep again (mssph sweep SWEEP.json --out "
+              f"{directory}) rewrites it", file=sys.stderr)
+        return 2
     metrics = manifest["metrics"]
     points = manifest["points"]
 

@@ -53,6 +53,13 @@ std::vector<GpuDevice> gpu_devices() {
   return devices;
 }
 
+std::optional<double> gpu_memory_for(const std::string& name) {
+  if (!backend_runs_on_gpu(name)) return std::nullopt;
+  const std::vector<GpuDevice> devices = gpu_devices();
+  if (devices.empty()) return std::nullopt;
+  return static_cast<double>(devices.front().total_memory);
+}
+
 std::string why_backend_cannot_run(const std::string& name) {
   const std::vector<std::string> built = available_backends();
   if (std::find(built.begin(), built.end(), name) == built.end()) {

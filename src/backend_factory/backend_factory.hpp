@@ -38,6 +38,10 @@ struct GpuDevice {
 // The GPUs a backend of this binary can run on (empty without a GPU backend, driver or device).
 std::vector<GpuDevice> gpu_devices();
 
+// The memory of the GPU a run of the backend `name` would use [bytes]; nullopt for the host
+// backends, or when no GPU is found.
+std::optional<double> gpu_memory_for(const std::string& name);
+
 // "" when `name` can run here, else why not (not built, or no GPU for a GPU backend).
 std::string why_backend_cannot_run(const std::string& name);
 

@@ -1,49 +1,49 @@
 #include "bench/benchmark_results.hpp"
 
+#include "config/json_reader.hpp"
+#include "config/strict_json.hpp"
 #include "util/errors.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace mssph::bench {
 namespace {
 
-double seconds_per(const std::string& unit, const std::string& where) {
+double seconds_per(const std::string& unit) {
   if (unit == "ns") return 1e-9;
   if (unit == "us") return 1e-6;
   if (unit == "ms") return 1e-3;
-  if (unit == "s") return 1.0;
-  throw InputError(where + "/time_unit: expected ns, us, ms or s, got \"" + unit + "\"");
+  return 1.0;  // "s", the last choice read_benchmark_results allows
 }
 
-std::string as_text(const nlohmann::json& value) { return value.is_string() ? value.get<std::string>() : value.dump(); }
+// A context value as text: a string as it is, a number or true/false as JSON, an array or object
+// by describe_json (bounded, whatever its size or depth).
+std::string as_text(const nlohmann::json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  return value.is_structured() ? describe_json(value) : value.dump();
+}
 
 // A positive, finite number at entry[key], or InputError naming where.
-double positive(const nlohmann::json& entry, const std::string& key, const std::string& where) {
-  if (!entry[key].is_number()) throw InputError(where + "/" + key + ": expected a number");
-  const double value = entry[key].get<double>();
-  if (!(value > 0.0) || !std::isfinite(value)) {
-    throw InputError(where + "/" + key + ": expected a positive finite number, got " + entry[key].dump());
+double positive(const JsonReader& entry, const std::string& key) {
+  const nlohmann::json& value = entry.child(key).value();
+  if (!value.is_number() || !(value.get<double>() > 0.0) || !std::isfinite(value.get<double>())) {
+    entry.fail(key, "expected a positive finite number, got " + describe_json(value));
   }
-  return value;
+  return value.get<double>();
 }
 
 }  // namespace
 
 BenchmarkResults read_benchmark_results(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open benchmark results");
-  std::ostringstream text;
-  text << in.rdbuf();
   nlohmann::json document;
   try {
-    document = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
+    document = read_json_file(path, "benchmark results file");
+  } catch (const JsonSyntaxError& e) {
     throw InputError(path + ": not JSON (" + e.what() + ")");
   }
+  const JsonReader root(document, path);
   const std::string hint = " (expected Google Benchmark JSON, as `mssph bench --out FILE.json` writes)";
   if (!document.is_object() || !document.contains("context") || !document["context"].is_object()) {
     throw InputError(path + ": no \"context\" object" + hint);
@@ -53,39 +53,24 @@ BenchmarkResults read_benchmark_results(const std::string& path) {
   }
   BenchmarkResults results;
   results.path = path;
-  for (const auto& [key, value] : document["context"].items()) results.context[key] = as_text(value);
-  const nlohmann::json& entries = document["benchmarks"];
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    const nlohmann::json& entry = entries[i];
-    const std::string where = path + ": /benchmarks/" + std::to_string(i);
-    if (!entry.is_object() || !entry.contains("name") || !entry["name"].is_string()) {
-      throw InputError(where + ": expected an object with a \"name\" string");
-    }
+  for (const auto& [key, value] : root.child("context").members()) results.context[key] = as_text(value.value());
+  for (const JsonReader& entry : root.child("benchmarks").elements()) {
+    if (!entry.value().is_object()) entry.fail_here("expected an object with a \"name\" string");
+    const std::string full_name = entry.string("name");
     // Repetitions are "iteration" runs; "aggregate" runs summarise them.
-    if (entry.value("run_type", std::string("iteration")) != "iteration") continue;
-    const std::string name = entry.contains("run_name") && entry["run_name"].is_string()
-                                 ? entry["run_name"].get<std::string>()
-                                 : entry["name"].get<std::string>();
-    if (entry.value("error_occurred", false)) {
-      results.errors.push_back(name + ": " + entry.value("error_message", std::string("error")));
+    if (entry.string_or("run_type", "iteration") != "iteration") continue;
+    const std::string name = entry.string_or("run_name", full_name);
+    if (entry.boolean_or("error_occurred", false)) {
+      results.errors.push_back(name + ": " + entry.string_or("error_message", "error"));
       continue;
     }
-    if (!entry.contains("real_time") || !entry["real_time"].is_number()) {
-      throw InputError(where + "/real_time: expected a number");
-    }
-    if (!entry.contains("time_unit") || !entry["time_unit"].is_string()) {
-      throw InputError(where + "/time_unit: expected a string");
-    }
+    const std::string unit = entry.choice("time_unit", {"ns", "us", "ms", "s"});
     // Step benchmarks time batches of steps; their step_seconds counter is the same time per step.
     const double seconds =
-        entry.contains("step_seconds")
-            ? positive(entry, "step_seconds", where)
-            : positive(entry, "real_time", where) * seconds_per(entry["time_unit"].get<std::string>(), where);
-    if (entry.contains("instructions_per_step")) {
-      results.instructions_per_step[name] = positive(entry, "instructions_per_step", where);
-      if (entry.contains("ll_misses_per_step") && entry["ll_misses_per_step"].is_number()) {
-        results.ll_misses_per_step[name] = entry["ll_misses_per_step"].get<double>();
-      }
+        entry.has("step_seconds") ? positive(entry, "step_seconds") : positive(entry, "real_time") * seconds_per(unit);
+    if (entry.has("instructions_per_step")) {
+      results.instructions_per_step[name] = positive(entry, "instructions_per_step");
+      if (entry.has("ll_misses_per_step")) results.ll_misses_per_step[name] = entry.number("ll_misses_per_step");
     }
     auto [it, inserted] = results.seconds.try_emplace(name);
     if (inserted) results.names.push_back(name);

@@ -29,7 +29,8 @@ struct BenchmarkResults {
 
 // Throws InputError naming the file and what is wrong: unreadable, not JSON, not Google Benchmark
 // output (no "context" object or "benchmarks" array), an entry without name, time or unit, a
-// time or count that is not a positive finite number.
+// time or count that is not a positive finite number; duplicate keys, numbers beyond a double and
+// deep nesting, as for every JSON file mssph reads (config/strict_json.hpp).
 BenchmarkResults read_benchmark_results(const std::string& path);
 
 }  // namespace mssph::bench

@@ -65,10 +65,13 @@ double parse_threshold(const std::string& text) {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used == 0 || used != number.size() || !(value > 0.0)) {
-    throw InputError("--threshold " + text + ": expected a positive fraction or percentage, e.g. 10% or 0.1");
+  const double fraction = percent ? value / 100.0 : value;
+  // Above 10 (1000%) a gate could hardly fail, and inf or nan never would.
+  if (used == 0 || used != number.size() || !(fraction > 0.0) || !(fraction <= 10.0)) {
+    throw InputError("--threshold " + text +
+                     ": expected a positive fraction or percentage up to 10 (1000%), e.g. 10% or 0.1");
   }
-  return percent ? value / 100.0 : value;
+  return fraction;
 }
 
 // The Google Benchmark command line that the options stand for.

@@ -7,6 +7,7 @@
 #include "model/block_scene.hpp"
 #include "model/scene_builder.hpp"
 #include "run/script_outputs.hpp"
+#include "run/run_estimate.hpp"
 #include "run/step_timing.hpp"
 #include "util/build_info.hpp"
 #include "util/errors.hpp"
@@ -47,14 +48,34 @@ std::vector<long long> sizes_to_time(const Figure2Options& options, BlockGeometr
     throw InputError("--max " + std::to_string(options.max_particles) + ": below the largest of --sizes (" +
                      std::to_string(sizes.back()) + ")");
   }
-  for (long long decade = 10; decade <= options.max_particles; decade *= 10) {
+  for (long long decade = 10;; decade *= 10) {
     for (long long mantissa : {1, 2, 5}) {
       const long long n = mantissa * decade;
       if (n > sizes.back() && n <= options.max_particles) sizes.push_back(n);
     }
+    if (decade > options.max_particles / 10) break;  // the next decade is beyond --max (and long long)
   }
   if (options.max_particles > sizes.back()) sizes.push_back(options.max_particles);
   return sizes;
+}
+
+// The largest size of every medium must fit this machine (particle indices, memory) before
+// anything is built: a size of 3e9 is refused with its estimate, not met by std::bad_alloc.
+void check_largest_size_fits(const Figure2Options& options, const std::vector<BodyKind>& media, BlockGeometry geometry,
+                             const std::string& backend_name) {
+  const long long largest_size = *std::max_element(options.sizes.begin(), options.sizes.end());
+  const bool from_max = options.max_particles > largest_size;
+  const long long largest = from_max ? options.max_particles : largest_size;
+  const std::string option = (from_max ? "--max " : "--sizes ") + std::to_string(largest) + ": ";
+  for (const BodyKind medium : media) {
+    try {
+      const Scene scene = block_scene(medium, static_cast<std::size_t>(largest), geometry);
+      check_run_fits(scene, backend_name, estimate_run(scene, backend_name), available_host_memory(),
+                     gpu_memory_for(backend_name));
+    } catch (const InputError& e) {
+      throw InputError(option + e.what());
+    }
+  }
 }
 
 RunMetadata figure_metadata(const BackendInfo& info, const nlohmann::json& parameters,
@@ -160,9 +181,10 @@ int make_figure2(const Figure2Options& options, const std::string& command_line)
   for (const std::string& m : options.media) media.push_back(medium_of(m));
   if (media.empty()) throw InputError("--media: expected at least one of fluid, deformable, rigid");
   const BlockGeometry geometry = block_geometry_from_string(options.geometry);
-  const std::vector<long long> sizes = sizes_to_time(options, geometry);
-  if (!(options.min_seconds > 0.0)) throw InputError("--min-time: expected a positive number of seconds");
   const std::string backend_name = resolve_backend_name(options.backend);
+  const std::vector<long long> sizes = sizes_to_time(options, geometry);
+  check_largest_size_fits(options, media, geometry, backend_name);
+  if (!(options.min_seconds > 0.0)) throw InputError("--min-time: expected a positive number of seconds");
   const std::string path = (std::filesystem::path(options.out) / "figure2.h5").string();
   check_script_outputs(options.out,
                        {"figure2.csv", "figure2.png", "figure2.svg", "figure2_loglog.png", "figure2_loglog.svg"},

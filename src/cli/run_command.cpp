@@ -2,6 +2,7 @@
 #include "backend_factory/backend_factory.hpp"
 #include "commands.hpp"
 #include "guarded.hpp"
+#include "option_checks.hpp"
 #include "run/output_path.hpp"
 #include "run/scene_run.hpp"
 #include "util/errors.hpp"
@@ -23,7 +24,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--checkpoint-interval", args->checkpoint_interval,
                   "Write a checkpoint into the log every SECONDS of wall-clock time, for --restart (SIGINT, SIGTERM "
                   "and SIGHUP write one anyway)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite_number());
   std::string built;
   for (const std::string& name : available_backends()) built += (built.empty() ? "" : ", ") + name;
   cmd->add_option("--backend", args->backend,
@@ -42,8 +43,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
                 "Check everything, print particles per body, the memory estimate, the time-step bounds and the "
                 "step count, and write nothing");
   cmd->add_option("--threads", args->threads,
-                  "Host threads for the reference and cpu backends (default: $OMP_NUM_THREADS if set, else every "
-                  "CPU this process may use; give concurrent runs their share)")
+                  "Host threads for the reference and cpu backends (default: $OMP_NUM_THREADS if set, else the "
+                  "CPUs this process may use less the 1-minute load average, at least 1; give concurrent runs their "
+                  "share)")
       ->check(CLI::Range(1, 4096));
   // One PATH=VALUE per --set, so that `--set a=1 scene.json` leaves the scene file positional.
   cmd->add_option("--set", args->overrides,

@@ -4,6 +4,7 @@
 #include "backend_factory/backend_factory.hpp"
 #include "commands.hpp"
 #include "guarded.hpp"
+#include "option_checks.hpp"
 #include "run/python_script.hpp"
 #include "sweep/point_runner.hpp"
 #include "sweep/point_status.hpp"
@@ -160,6 +161,7 @@ PointTask make_task(const SweepPoint& point, std::size_t total, const SweepFile&
   PointTask task;
   task.label = point_label(point, total);
   task.log_path = folder + "/" + point.log_name();
+  task.point_hash = point.hash;
   task.output_path = folder + "/point-" + point.hash + ".out";
   if (continuable) {
     task.argv = {program, "run", "--restart", task.log_path + ".partial"};
@@ -221,7 +223,7 @@ int print_dry_run(const SweepFile& sweep, const std::vector<SweepPoint>& points,
             << "/\n";
   for (const SweepPoint& p : points) {
     if (shard && !shard->contains(p.index)) continue;
-    const PointStatus status = read_point_status(directory + "/" + kPointsFolder + "/" + p.log_name());
+    const PointStatus status = read_point_status(directory + "/" + kPointsFolder + "/" + p.log_name(), p.hash);
     std::cout << "  " << p.index << "  " << p.log_name() << "  " << to_string(status.state) << "  " << p.describe()
               << "\n";
   }
@@ -248,16 +250,22 @@ int run_sweep(const SweepArgs& args) {
   std::vector<std::pair<const SweepPoint*, bool>> to_run;  // with whether it continues from a checkpoint
   SweepCounts counts;
   std::vector<std::string> skipped_failures;
+  std::vector<std::string> not_started;  // another run (another sweep on this --out) is writing the log
+  std::vector<std::string> replaced;     // a log of another scene lies under the point's name
   for (const SweepPoint& p : points) {
     if (shard && !shard->contains(p.index)) continue;
     ++counts.total;
-    const PointStatus status = read_point_status(directory + "/" + kPointsFolder + "/" + p.log_name());
+    const PointStatus status = read_point_status(directory + "/" + kPointsFolder + "/" + p.log_name(), p.hash);
     if (status.state == PointState::completed) {
       ++counts.done;
     } else if (status.state == PointState::failed && !args.retry_failed) {
       ++counts.failed;
       skipped_failures.push_back(point_label(p, points.size()) + ": " + status.status);
+    } else if (status.state == PointState::busy) {
+      ++counts.interrupted;  // not completed by this invocation; the next one looks again
+      not_started.push_back(point_label(p, points.size()) + ": " + status.status);
     } else {
+      if (status.state == PointState::foreign) replaced.push_back(point_label(p, points.size()) + ": " + status.status);
       to_run.emplace_back(&p, status.continuable);
     }
   }
@@ -269,6 +277,8 @@ int run_sweep(const SweepArgs& args) {
                 " completed before, " + std::to_string(counts.failed) + " failed before, " +
                 std::to_string(to_run.size()) + " to run, " + std::to_string(slots.size()) + " at a time");
   for (const std::string& f : skipped_failures) progress.note("not rerun (--retry-failed reruns it): " + f);
+  for (const std::string& b : not_started) progress.note("not started, busy: " + b);
+  for (const std::string& r : replaced) progress.note("run again, its log replaced: " + r);
 
   const std::string program = point_program();
   std::vector<PointTask> tasks;
@@ -345,7 +355,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
          "--checkpoint-interval", args->checkpoint_interval,
          "Each point's run writes a checkpoint every SECONDS of wall-clock time (as mssph run; a signal writes "
          "one anyway), so a point killed with its node loses at most that much")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite_number());
   cmd->add_flag("--dry-run", args->dry_run, "Validate every point and list them with their logs' state; run nothing");
   cmd->add_flag(
       "--emit-slurm", args->emit_slurm,

@@ -12,10 +12,13 @@
 #include "util/host_info.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <memory>
+#include <optional>
 #include <random>
 
 namespace mssph::cli {
@@ -29,9 +32,19 @@ struct ValidateArgs {
   std::vector<std::string> suites;
   std::vector<std::string> cases;
   std::string out = "results/runs/validation";
-  std::uint64_t seed = 0;  // 0: fresh
-  bool force = false;      // replace an earlier report's files in `out`
+  std::optional<std::uint64_t> seed;  // none: a fresh one
+  bool force = false;                 // replace an earlier report's files in `out`
 };
+
+// "--seed 12": the digits of an unsigned 64-bit integer, nothing else (no sign, no fraction).
+std::uint64_t parse_seed(const std::string& text) {
+  std::uint64_t seed = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+    throw InputError("--seed " + text + ": expected an integer from 0 to 18446744073709551615");
+  }
+  return seed;
+}
 
 std::string utc_now() {
   const std::time_t now = std::time(nullptr);
@@ -112,11 +125,15 @@ std::string command_line(const ValidateArgs& args) {
 
 int run_validate(const ValidateArgs& args) {
   const std::vector<const ValidationCase*> cases = selected_cases(args);
+  std::error_code error;
+  if (std::filesystem::exists(args.out, error) && !std::filesystem::is_directory(args.out, error)) {
+    throw InputError("--out " + args.out + ": not a directory (the report, its plots and runs go into a folder)");
+  }
   check_report_outputs(args, cases);
 
   CaseContext context;
   context.quick = args.quick;
-  context.seed = args.seed ? args.seed : std::random_device{}();
+  context.seed = args.seed ? *args.seed : std::random_device{}();
   context.validation_dir = validation_dir();
   context.work_dir = (std::filesystem::path(args.out) / "runs").string();
   context.replace_logs = args.force;
@@ -149,7 +166,9 @@ int run_validate(const ValidateArgs& args) {
   info.fast_backends = context.fast_backends;
   info.seed = context.seed;
 
-  std::filesystem::create_directories(context.work_dir);
+  if (std::filesystem::create_directories(context.work_dir, error); error) {
+    throw InputError("--out " + args.out + ": cannot create " + context.work_dir + " (" + error.message() + ")");
+  }
   std::cerr << "mssph validate: " << cases.size() << " case(s), " << info.mode << ", physics on "
             << context.physics_backend << ", seed " << context.seed << "\n";
   std::vector<CaseRun> runs;
@@ -210,7 +229,9 @@ void add_validate_command(CLI::App& app, int& exit_code) {
                   "Run only the named case (repeatable); names are in the table and validation/");
   cmd->add_option("--out", args->out, "Output folder for report.md, report.json, validation.h5 and plots")
       ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the random perturbations (default: fresh, printed)");
+  // Read as text: CLI11 would wrap "-1" to 2^64 - 1 in an unsigned integer.
+  auto seed_text = std::make_shared<std::string>();
+  cmd->add_option("--seed", *seed_text, "Seed of the random perturbations, 0 to 2^64 - 1 (default: fresh, printed)");
   cmd->add_flag("--force", args->force,
                 "Replace an earlier report's files and run logs in --out (regular files only, never a directory, "
                 "device or symbolic link)");
@@ -223,7 +244,12 @@ void add_validate_command(CLI::App& app, int& exit_code) {
       "\n"
       "Exit codes: 0 every case passed or was skipped; 1 a case failed (or the report could not be\n"
       "written); 2 bad arguments, or an earlier report in the way (nothing is run).");
-  cmd->callback([args, &exit_code] { guarded(exit_code, [&] { return run_validate(*args); }); });
+  cmd->callback([args, seed_text, &exit_code] {
+    guarded(exit_code, [&] {
+      if (!seed_text->empty()) args->seed = parse_seed(*seed_text);
+      return run_validate(*args);
+    });
+  });
 }
 
 }  // namespace mssph::cli

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace mssph {
 namespace {
@@ -68,29 +68,6 @@ std::string Interval::describe() const {
   return "finite";
 }
 
-nlohmann::json read_json_file(const std::string& path, const std::string& what) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open " + what);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    std::size_t line = 1;
-    std::size_t column = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        column = 1;
-      } else {
-        ++column;
-      }
-    }
-    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: " + e.what());
-  }
-}
-
 std::string escape_pointer_token(const std::string& key) {
   std::string out;
   for (char c : key) {
@@ -106,8 +83,45 @@ std::string escape_pointer_token(const std::string& key) {
 }
 
 std::string describe_json(const nlohmann::json& value) {
-  std::string text = value.dump();
-  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  constexpr std::size_t kLimit = 40;
+  // JSON text of a scalar; bytes that are not UTF-8 (a string cut mid-character) shown as U+FFFD.
+  const auto escaped = [](const nlohmann::json& scalar) {
+    return scalar.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  };
+  // One entry per open array or object, with the next member to write.
+  struct Open {
+    const nlohmann::json* container;
+    nlohmann::json::const_iterator next;
+  };
+  std::vector<Open> open;
+  std::string text;
+  const auto write = [&](const nlohmann::json& v) {
+    if (v.is_structured()) {
+      text += v.is_object() ? '{' : '[';
+      open.push_back({&v, v.cbegin()});
+    } else if (v.is_string() && v.get_ref<const std::string&>().size() > kLimit) {
+      text += escaped(v.get_ref<const std::string&>().substr(0, kLimit));  // cut anyway below
+    } else {
+      text += escaped(v);
+    }
+  };
+  write(value);
+  while (!open.empty() && text.size() <= kLimit) {
+    Open& top = open.back();
+    if (top.next == top.container->cend()) {
+      text += top.container->is_object() ? '}' : ']';
+      open.pop_back();
+      continue;
+    }
+    if (top.next != top.container->cbegin()) text += ',';
+    if (top.container->is_object()) {
+      text += escaped(top.next.key()) + ":";
+    }
+    const nlohmann::json& member = *top.next;
+    ++top.next;  // before write(), which may grow `open` and move `top`
+    write(member);
+  }
+  if (text.size() > kLimit) text = text.substr(0, kLimit - 3) + "...";
   return std::string(value.type_name()) + " " + text;
 }
 

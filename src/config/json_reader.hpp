@@ -76,13 +76,12 @@ class JsonReader {
   std::string pointer_;
 };
 
-// Reads and parses a JSON file. Fails with an InputError naming the file ("cannot open <what>") or
-// the line and column of a syntax error, which is what an editor shows.
-nlohmann::json read_json_file(const std::string& path, const std::string& what);
-
 // JSON pointer escaping of one key ('~' -> "~0", '/' -> "~1").
 std::string escape_pointer_token(const std::string& key);
-// A short description of a JSON value's type and content for error messages.
+// A short description of a JSON value's type and content for error messages: the type and the
+// start of its compact text, at most 40 characters, written without recursing into the value and
+// stopping at the limit, so a value nested deeply or holding millions of elements costs no more
+// than a small one ("array [1,2]", "object {\"a\":[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[...").
 std::string describe_json(const nlohmann::json& value);
 
 }  // namespace mssph

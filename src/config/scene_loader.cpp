@@ -1,15 +1,14 @@
 #include "config/scene_loader.hpp"
 
 #include "config/haptics_config.hpp"
+#include "config/input_file.hpp"
 #include "config/json_reader.hpp"
+#include "config/strict_json.hpp"
 #include "util/errors.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <memory>
-#include <set>
 #include <sstream>
 
 namespace mssph {
@@ -113,6 +112,11 @@ SimulationConfig read_simulation(const JsonReader& root) {
   }
   sim.gravity = s.vec3_or("gravity", sim.gravity);
   sim.particle_spacing = s.number("particle_spacing", Interval::positive());
+  // At most 1 km: beyond, the smoothing length, particle volumes and memory figures derived from
+  // it overflow (a spacing of 1e308 m made "about 1 particles need about inf EiB").
+  if (sim.particle_spacing > 1e3) {
+    s.fail("particle_spacing", "expected at most 1000 m, got " + std::to_string(sim.particle_spacing));
+  }
   sim.smoothing_length = s.number_or("smoothing_length", 2.0 * sim.particle_spacing, Interval::positive());
   if (sim.smoothing_length < sim.particle_spacing || sim.smoothing_length > 4.0 * sim.particle_spacing) {
     s.fail("smoothing_length", "expected a support radius h between 1 and 4 particle spacings (" +
@@ -319,101 +323,6 @@ OutputConfig read_output(const JsonReader& root, const SimulationConfig& sim) {
   return out;
 }
 
-// Where the parser is, for naming a duplicate key by its JSON pointer: one frame per open
-// object or array, holding the keys seen so far (objects) or the element count (arrays).
-class DuplicateKeyCheck {
- public:
-  explicit DuplicateKeyCheck(std::string file) : file_(std::move(file)) {}
-
-  // The JSON pointer of the value being read.
-  std::string pointer_here() const {
-    std::string pointer;
-    for (const Frame& f : frames_) {
-      pointer += '/';
-      pointer += f.object ? escape_pointer_token(f.key) : std::to_string(f.index);
-    }
-    return pointer.empty() ? "/" : pointer;
-  }
-
-  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-    using Event = nlohmann::json::parse_event_t;
-    switch (event) {
-      case Event::object_start:
-        frames_.push_back({true, {}, "", 0});
-        break;
-      case Event::array_start:
-        frames_.push_back({false, {}, "", 0});
-        break;
-      case Event::key: {
-        Frame& top = frames_.back();
-        top.key = parsed.get<std::string>();
-        if (!top.keys.insert(top.key).second) {
-          const std::string pointer = pointer_here();
-          throw InputError(file_ + ": " + pointer + ": duplicate key '" + top.key +
-                               "' (JSON leaves its meaning undefined; keep one)",
-                           pointer);
-        }
-        break;
-      }
-      case Event::object_end:
-      case Event::array_end:
-        frames_.pop_back();
-        element_done();
-        break;
-      case Event::value:
-        element_done();
-        break;
-    }
-    return true;
-  }
-
- private:
-  struct Frame {
-    bool object;
-    std::set<std::string> keys;
-    std::string key;    // objects: the member being read
-    std::size_t index;  // arrays: the element being read
-  };
-  void element_done() {
-    if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
-  }
-
-  std::string file_;
-  std::vector<Frame> frames_;
-};
-
-// The line and column of a byte offset, which is what an editor shows.
-std::string line_and_column(const std::string& text, std::size_t byte) {
-  std::size_t line = 1;
-  std::size_t column = 1;
-  for (std::size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return std::to_string(line) + ":" + std::to_string(column);
-}
-
-nlohmann::json parse_json_text(const std::string& text, const std::string& path) {
-  // The parser copies its callback: the copy it calls reports through this one's state.
-  auto check = std::make_shared<DuplicateKeyCheck>(path);
-  try {
-    return nlohmann::json::parse(text, [check](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-      return (*check)(depth, event, parsed);
-    });
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path + ":" + line_and_column(text, e.byte) + ": invalid JSON: " + e.what());
-  } catch (const nlohmann::json::exception& e) {
-    // out_of_range 406: a number beyond a double's range, e.g. 1e400, in the value being read.
-    const std::string pointer = check->pointer_here();
-    throw InputError(path + ": " + pointer + ": " + e.what() + " (numbers must be finite doubles, |x| < 1.8e308)",
-                     pointer);
-  }
-}
-
 // A string is stored in the run log and printed; the JSON library requires UTF-8.
 bool is_valid_utf8(const std::string& text) {
   try {
@@ -474,12 +383,11 @@ void apply_override(nlohmann::json& document, const std::string& assignment) {
   }
   nlohmann::json value;
   try {
-    value = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error&) {
+    value = parse_strict_json(text, "--set " + path);
+  } catch (const JsonSyntaxError&) {
     value = text;  // a bare word, e.g. strain=cauchy
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError("--set " + assignment + ": " + e.what() + " (numbers must be finite doubles, |x| < 1.8e308)",
-                     path);
+  } catch (const InputError& e) {
+    throw InputError(e.what(), path);
   }
   nlohmann::json::json_pointer pointer;
   try {
@@ -504,8 +412,14 @@ Scene parse_scene(const nlohmann::json& document, const std::string& file) {
   scene.source_file = file;
   scene.document = document;
   scene.name = root.string("name");
-  if (scene.name.empty() || scene.name.find_first_of("/\\ ") != std::string::npos) {
-    root.fail("name", "expected a non-empty name without spaces or slashes (it names output files)");
+  // It names output files: a space, slash or control character (a newline, NUL) has no place there.
+  const bool plain = std::none_of(scene.name.begin(), scene.name.end(), [](char c) {
+    const auto byte = static_cast<unsigned char>(c);
+    return byte < 0x20 || byte == 0x7f || c == ' ' || c == '/' || c == '\\';
+  });
+  if (scene.name.empty() || !plain) {
+    root.fail("name",
+              "expected a non-empty name without spaces or slashes, nor control characters (it names output files)");
   }
   // A NUL character would end the name where a file name is made of it.
   if (scene.name.find('\0') != std::string::npos) root.fail("name", "expected a name without a NUL character");
@@ -523,15 +437,11 @@ Scene parse_scene(const nlohmann::json& document, const std::string& file) {
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open scene file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parse_scene_text(buffer.str(), path, overrides);
+  return parse_scene_text(read_input_file(path, "scene file"), path, overrides);
 }
 
 Scene parse_scene_text(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
-  nlohmann::json document = parse_json_text(text, path);
+  nlohmann::json document = parse_strict_json(text, path);
   for (const std::string& assignment : overrides) {
     try {
       apply_override(document, assignment);

@@ -112,6 +112,7 @@ RunLogHeader read_run_log_header(const std::string& path) {
   }
   header.phase_timing = h5::read_double_attribute(file, "phase_timing") != 0.0;
   header.checkpoint_interval = h5::read_double_attribute(file, "checkpoint_interval");
+  header.checkpoint_step = latest_checkpoint_step(file);
   return header;
 }
 

@@ -68,6 +68,7 @@ struct RunLogHeader {
   std::string working_directory;  // where the run started, which relative paths above are from; "" when unknown
   bool phase_timing = false;
   double checkpoint_interval = 0.0;  // [s] wall clock; 0 for none
+  long long checkpoint_step = -1;    // the step of the latest checkpoint, -1 when none is whole
 };
 // Throws InputError when `path` is no mssph run log.
 RunLogHeader read_run_log_header(const std::string& path);

@@ -1,6 +1,8 @@
 #include "scene_run.hpp"
 
 #include "backend_factory/backend_factory.hpp"
+#include "backend_support.hpp"
+#include "config/input_file.hpp"
 #include "config/scene_loader.hpp"
 #include "haptics/haptics_run.hpp"
 #include "interrupt.hpp"
@@ -16,23 +18,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace mssph::cli {
 namespace {
-
-// The scene file as the user wrote it, recorded next to the parsed scene.
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // A closed stdout (`mssph run ... | head -0`) makes these writes fail with EPIPE (SIGPIPE is
 // ignored): the run they describe has completed all the same, so their failure is not an error.
@@ -297,6 +292,9 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
     throw InputError("--restart " + request.restart + ": the run completed (its log is " + output +
                      "); there is nothing to continue");
   }
+  // Until the log is reopened for writing, a signal ends the process at once: the log is as it was.
+  std::optional<EndAtOnceOnSignal> before_the_log;
+  before_the_log.emplace("before the run continued; " + partial + " is unchanged");
   // The lock first: a run still writing the log is refused before anything reads it.
   OutputClaim claim = OutputClaim::resume(output);
   const RunLogHeader header = read_run_log_header(partial);
@@ -305,7 +303,14 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
   check_restart_outputs(partial, output, scene, record_device);
   const std::string backend_name = resolve_backend_name(header.backend);
   const RunEstimate estimate = estimate_run(scene, backend_name);
-  check_run_fits(scene, backend_name, estimate, available_host_memory(), device_memory_for(backend_name));
+  check_run_fits(scene, backend_name, estimate, available_host_memory(), gpu_memory_for(backend_name));
+  check_backend_supports(scene, backend_name);
+  // A damaged step would make the run continue past its end (or before its start) for ever.
+  if (header.checkpoint_step < -1 || header.checkpoint_step > std::llround(estimate.steps)) {
+    throw InputError("--restart " + request.restart + ": its latest checkpoint says step " +
+                     std::to_string(header.checkpoint_step) + ", outside the run's 0 to " +
+                     std::to_string(std::llround(estimate.steps)) + " steps: the log is damaged");
+  }
   const int threads = request.threads > 0 ? request.threads : default_thread_count();
   set_thread_count(threads);
   const ParticleSetup setup = build_particles(scene);
@@ -313,6 +318,7 @@ SceneRunResult continue_run(const SceneRunRequest& request) {
 
   SceneRunResult result;
   result.backend = backend->info();
+  before_the_log.reset();
   if (const int signal = interrupt_signal()) {
     std::cerr << "error: " << signal_name(signal) << " before the run continued; " << partial << " is unchanged\n";
     result.exit_code = 128 + signal;
@@ -364,12 +370,15 @@ void check_scene_run(const SceneRunRequest& request) {
 
 SceneRunResult run_scene(const SceneRunRequest& request) {
   if (!request.restart.empty()) return continue_run(request);
-  // Signals are caught from the start, so that one arriving during set-up ends the run cleanly
-  // too (nothing is written then).
+  // Signals are caught from the start: one arriving while the scene loads or the particles and
+  // the backend are set up ends the process at once (nothing is written then).
   install_interrupt_handlers();
+  std::optional<EndAtOnceOnSignal> before_the_log;
+  before_the_log.emplace("before the run started; nothing was written");
   // Everything that can be wrong with the input is found before the log file exists.
-  const Scene scene = load_scene(request.scene_path, request.overrides);
-  const std::string scene_text = read_text(request.scene_path);
+  // Read once: the text parsed is the text recorded, even from a pipe (/dev/stdin).
+  const std::string scene_text = read_input_file(request.scene_path, "scene file");
+  const Scene scene = parse_scene_text(scene_text, request.scene_path, request.overrides);
   const std::string backend_name = resolve_backend_name(request.backend);
   const std::vector<Tag> tags = parse_tags(request.tags);
   const std::string output = output_of(request, scene, backend_name);
@@ -384,7 +393,8 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   };
   const RunEstimate estimate = noting_overrides([&] { return estimate_run(scene, backend_name); });
   noting_overrides(
-      [&] { check_run_fits(scene, backend_name, estimate, available_host_memory(), device_memory_for(backend_name)); });
+      [&] { check_run_fits(scene, backend_name, estimate, available_host_memory(), gpu_memory_for(backend_name)); });
+  noting_overrides([&] { check_backend_supports(scene, backend_name); });
   const int threads = request.threads > 0 ? request.threads : default_thread_count();
   set_thread_count(threads);
 
@@ -405,12 +415,14 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
     }
     std::cerr << "), " << std::llround(estimate.steps) << " steps of " << scene.simulation.dt << " s on "
               << backend_name << ", " << threads << " threads ("
-              << (request.threads > 0 ? std::string("--threads") : default_thread_source()) << ")\n";
+              << (request.threads > 0 ? std::string("--threads") : default_thread_source()) << "), OMP_WAIT_POLICY "
+              << (std::getenv("OMP_WAIT_POLICY") ? std::getenv("OMP_WAIT_POLICY") : "unset") << "\n";
   }
   const ParticleSetup setup_for_log = setup;
   std::unique_ptr<Backend> backend = make_backend(backend_name, std::move(setup));
   result.backend = backend->info();
 
+  before_the_log.reset();
   if (const int signal = interrupt_signal()) {
     std::cerr << "error: " << signal_name(signal) << " before the run started; nothing was written\n";
     result.exit_code = 128 + signal;

@@ -178,7 +178,7 @@ RunnerReport run_point_tasks(const std::vector<PointTask>& tasks, const std::vec
       reaped = true;
       const PointTask& task = tasks[b->task];
       const double seconds = std::chrono::duration<double>(Clock::now() - b->start).count();
-      const PointStatus log = read_point_status(task.log_path);
+      const PointStatus log = read_point_status(task.log_path, task.point_hash);
       SweepCounts& counts = progress.counts();
       b.reset();
       counts.running = running_count();
@@ -192,6 +192,11 @@ RunnerReport run_point_tasks(const std::vector<PointTask>& tasks, const std::vec
         ++counts.failed;
         what += " FAILED (" + log.status + "); its output " + task.output_path + " ends:\n" +
                 indent(tail_of_file(task.output_path, 5));
+      } else if (log.state == PointState::busy) {
+        // Another run took the log first (another sweep on the same --out): not this input's fault.
+        ++report.interrupted;
+        ++counts.interrupted;
+        what += " did not start: " + log.status + "; it runs when the sweep is resumed after that run";
       } else if (done > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 2) {
         // The run rejected its input although the scene loader accepted the point (a backend
         // this build lacks, a scene the particle builder rejects): every point would.

@@ -20,6 +20,7 @@ struct PointTask {
   std::string label;              // how progress names the point
   std::vector<std::string> argv;  // argv[0] is the program's path
   std::string log_path;           // the run log the child writes
+  std::string point_hash;         // the point's name, which its log's scene must hash to
   std::string output_path;        // the child's stdout and stderr
 };
 

@@ -1,6 +1,7 @@
 #include "sweep/sweep_file.hpp"
 
 #include "config/json_reader.hpp"
+#include "config/strict_json.hpp"
 #include "util/errors.hpp"
 
 #include <algorithm>
@@ -8,13 +9,17 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <iomanip>
 #include <set>
+#include <sstream>
 
 namespace mssph::sweep {
 namespace {
 
-// Parameter and sweep names label table columns, file names and plot axes.
+// Parameter and sweep names label table columns, file names and plot axes: "." and ".." would
+// name a folder's self or parent (a sweep named ".." would write into results/ itself).
 bool is_plain_name(const std::string& name) {
+  if (name == "." || name == "..") return false;
   return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
   });
@@ -34,10 +39,19 @@ std::vector<nlohmann::json> read_range(const JsonReader& range, ValueScale scale
   const double from = range.number("from", allowed);
   const double to = range.number("to", allowed);
   if (from == to) range.fail("to", "expected a value other than \"from\" (a range of one value is a \"values\" list)");
-  const long long count = range.integer_or("count", 0, Interval::closed(2, 100000));
+  const long long count = range.integer_or("count", 0, Interval::closed(2, kMaxSweepPoints));
   if (count == 0) range.fail("count", "missing required key (the number of values, at least 2)");
   std::vector<nlohmann::json> values;
-  for (double v : range_values(scale, from, to, count)) values.emplace_back(v);
+  for (double v : range_values(scale, from, to, count)) {
+    // Values closer than the 10 digits kept would run one point twice under two names.
+    if (!values.empty() && values.back().get<double>() == v) {
+      range.fail("count", std::to_string(count) + " values from " + nlohmann::json(from).dump() + " to " +
+                              nlohmann::json(to).dump() + " round to equal values at 10 significant digits (" +
+                              std::to_string(values.size() - 1) + " and " + std::to_string(values.size()) +
+                              " are both " + nlohmann::json(v).dump() + "); give fewer values or a wider range");
+    }
+    values.emplace_back(v);
+  }
   return values;
 }
 
@@ -69,13 +83,12 @@ SweepParameter read_parameter(const JsonReader& reader) {
     const JsonReader list = reader.child("values");
     const std::vector<JsonReader> elements = list.elements();
     if (elements.empty()) list.fail_here("expected at least one value, got an empty list");
+    std::set<nlohmann::json> seen;  // one lookup per value: a list of a million values is read in a second
     for (const JsonReader& e : elements) {
       if (e.value().is_null() || e.value().is_object())
         e.fail_here("expected a scene value, got " + describe_json(e.value()));
-      for (const nlohmann::json& earlier : p.values) {
-        if (earlier == e.value())
-          e.fail_here("duplicate value " + e.value().dump() + " (it would run the same point twice)");
-      }
+      if (!seen.insert(e.value()).second)
+        e.fail_here("duplicate value " + describe_json(e.value()) + " (it would run the same point twice)");
       p.values.push_back(e.value());
     }
   } else if (reader.has("linear")) {
@@ -128,6 +141,29 @@ std::vector<std::string> read_metrics(const JsonReader& root, const std::vector<
   return metrics;
 }
 
+// The points of the sweep, counted before any is made: a grid of 1e10 points, or one whose count
+// overflows 64 bits, is refused with its count instead of exhausting memory.
+void check_point_count(const JsonReader& root, const SweepFile& sweep) {
+  long double count = 1.0L;  // exact up to 2^64 (a 64-bit significand)
+  std::string factors;
+  for (const SweepParameter& p : sweep.parameters) {
+    if (sweep.combine == Combine::zip && !factors.empty()) break;  // zip: as many as one parameter's values
+    count *= static_cast<long double>(p.values.size());
+    factors += (factors.empty() ? "" : " x ") + std::to_string(p.values.size()) + " " + p.name;
+  }
+  if (sweep.combine == Combine::zip) factors += " zipped";
+  if (!sweep.seeds.empty()) {
+    count *= static_cast<long double>(sweep.seeds.size());
+    factors += " x " + std::to_string(sweep.seeds.size()) + " seeds";
+  }
+  if (count > static_cast<long double>(kMaxSweepPoints)) {
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(0) << count;
+    root.fail("parameters", "the sweep has " + text.str() + " points (" + factors + "); at most " +
+                                std::to_string(kMaxSweepPoints) + " are allowed");
+  }
+}
+
 }  // namespace
 
 const char* to_string(ValueScale scale) {
@@ -167,7 +203,9 @@ SweepFile load_sweep_file(const std::string& path, const std::vector<std::string
   root.string_or("$schema", "");  // for editors only
   sweep.name = root.string("name");
   if (!is_plain_name(sweep.name))
-    root.fail("name", "expected a name of letters, digits, '_', '-' or '.' (it names jobs and files)");
+    root.fail("name",
+              "expected a name of letters, digits, '_', '-' or '.', other than \".\" and \"..\" (it names "
+              "jobs and files)");
   sweep.description = root.string_or("description", "");
 
   const std::string scene = root.string("scene");
@@ -212,6 +250,7 @@ SweepFile load_sweep_file(const std::string& path, const std::vector<std::string
     }
   }
   if (const auto repetitions = root.optional_child("repetitions")) sweep.seeds = read_seeds(*repetitions);
+  check_point_count(root, sweep);
   // A fixed value under a swept path would be overwritten at every point: almost surely a mistake.
   if (const auto fixed = root.optional_child("set")) {
     for (const auto& [key, value] : fixed->members()) {

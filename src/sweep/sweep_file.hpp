@@ -37,6 +37,10 @@ struct SweepFile {
   std::vector<std::string> metrics;  // the metrics to collect, in order
 };
 
+// The most points a sweep may have (parameter combinations times seeds), and the most values a
+// range may give: each point is a run, and each point's scene is loaded before any runs.
+inline constexpr long long kMaxSweepPoints = 100000;
+
 // The path every repetition's seed is written to.
 inline constexpr const char* kSeedPath = "simulation/seed";
 

@@ -117,6 +117,42 @@ TEST_F(BenchCompare, BadInputExitsTwoAndSaysWhy) {
   }
 }
 
+// Files no Google Benchmark run writes: exit 2 naming the file and the JSON path, never a raw
+// library exception (exit 1) or a crash; a threshold that can never fail is refused too.
+TEST_F(BenchCompare, HostileFilesAndThresholdsExitTwoNamingTheValue) {
+  const std::string a = file("a.json", benchmark_file({{"x", kBase}}));
+  const std::string text = benchmark_file({{"x", kBase}}).dump();
+  const auto variant = [&](const std::string& name, const std::string& from, const std::string& to) {
+    std::string changed = text;
+    changed.replace(changed.find(from), from.size(), to);
+    std::ofstream(work(name)) << changed;
+    return work(name);
+  };
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases{
+      // A context value 100000 arrays deep was serialised whole for its text: SIGSEGV.
+      {{"bench", "compare", a,
+        variant("deep.json", "\"Release\"", std::string(100000, '[') + std::string(100000, ']'))},
+       "deep.json: /context/mssph_build_type/0/0/"},
+      {{"bench", "compare", a, variant("overflow.json", "\"real_time\":100.0", "\"real_time\":1e400")},
+       "overflow.json: /benchmarks/0/real_time: [json.exception.out_of_range.406] number overflow"},
+      {{"bench", "compare", a, variant("run_type.json", "\"run_type\":\"iteration\"", "\"run_type\":5")},
+       "run_type.json: /benchmarks/0/run_type: expected a string, got number 5"},
+      {{"bench", "compare", a, variant("twice.json", "\"real_time\":100.0", "\"real_time\":100.0,\"real_time\":1.0")},
+       "twice.json: /benchmarks/0/real_time: duplicate key 'real_time'"},
+      {{"bench", "compare", a, a, "--threshold", "inf"}, "--threshold inf: expected a positive fraction"},
+      {{"bench", "compare", a, a, "--threshold", "nan%"}, "--threshold nan%: expected a positive fraction"},
+  };
+  for (const Case& c : cases) {
+    const ProcessResult r = mssph(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.message << "\nsignal " << r.signal << "\n" << r.out << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.message << " in\n" << r.err;
+  }
+}
+
 // The CI gate's normalization through the binary: a machine that takes 1.5 times as long for the
 // current file (its calibration and the benchmark alike) passes normalized and fails raw; a file without the
 // calibration benchmark is bad input, named.

@@ -37,6 +37,9 @@ inline std::string data_file(const std::string& name) { return MSSPH_SOURCE_DIR 
 // The small sphere drop that most CLI tests run.
 inline const std::string kTinyDrop = data_file("tiny_drop.json");
 
+// The valid scene the malformed-input corpus alters (the tiny drop's 227 particles).
+inline const std::string kCorpusBase = MSSPH_SOURCE_DIR "/tests/corpus/scenes/ok_base.json";
+
 inline nlohmann::json read_json(const std::string& path) { return nlohmann::json::parse(read_file(path)); }
 
 // Whether a file is at `path` and holds at least one byte: a run's log once it is being written.

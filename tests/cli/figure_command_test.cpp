@@ -81,6 +81,12 @@ TEST_F(FigureCommand, Figure2RejectsBadArgumentsBeforeTiming) {
       {{"--media", "plasma"}, "--media"},
       {{"--geometry", "round"}, "--geometry"},
       {{"--min-time", "0"}, "--min-time: expected a positive number of seconds"},
+      // Sizes the machine cannot hold, refused with their estimate before anything is built
+      // (std::bad_alloc before; --max near 2^63 overflowed the 1-2-5 loop and never returned).
+      {{"--sizes", "3000000000", "--media", "rigid"}, "--sizes 3000000000: block scene: about "},
+      {{"--sizes", "1000000000", "--media", "rigid"}, "of host memory on the cpu backend"},
+      {{"--max", "9223372036854775807", "--media", "rigid"}, "--max 9223372036854775807: block scene: about "},
+      {{"--max", "1000000000000000", "--media", "rigid"}, "--max 1000000000000000: block scene: about "},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args{"figure", "2", "--backend", "cpu", "--out", work("fig2")};

@@ -159,6 +159,31 @@ TEST_F(RestartRefusal, ALogWithoutACheckpoint) {
   EXPECT_EQ(status_of(work("killed.h5.partial")), "running");
 }
 
+// A checkpoint whose step lies past the run's end: the run stepped on for ever, ignoring SIGTERM.
+TEST_F(RestartRefusal, ACheckpointStepPastTheRunsEnd) {
+  auto run = start({"run", kTinyDrop, "--backend", "cpu", "--threads", "1", "--out", work("damaged.h5"), "--set",
+                    "simulation/duration=1000"});
+  ASSERT_TRUE(wait_for([&] { return run->stderr_so_far().find(" particles (") != std::string::npos; }, 60s));
+  std::this_thread::sleep_for(300ms);
+  run->send(SIGTERM);
+  ASSERT_EQ(run->wait().exit_code, 143);
+  {
+    const h5::Handle log = h5::file(H5Fopen(work("damaged.h5.partial").c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "open");
+    for (const char* slot : {"/checkpoint/a", "/checkpoint/b"}) {
+      if (!h5::object_exists(log.id(), slot)) continue;
+      const h5::Handle group = h5::group(H5Gopen2(log.id(), slot, H5P_DEFAULT), slot);
+      h5::write_attribute(group.id(), "step", 1000000000000LL);
+    }
+  }
+  const ProcessResult r = start({"run", "--restart", work("damaged.h5.partial"), "-q"})->wait(30s);
+  ASSERT_FALSE(r.timed_out) << "still running 30 s later";
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("damaged.h5.partial: its latest checkpoint says step 1000000000000, outside the run's 0 to "
+                       "2000000 steps"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST_F(RestartRefusal, OptionsThatWouldChangeTheRun) {
   for (const std::vector<std::string>& extra : {std::vector<std::string>{"--set", "simulation/dt=1e-4"},
                                                 {"--backend", "reference"},

@@ -198,5 +198,21 @@ TEST(JsonReader, LongValuesAreAbbreviatedInMessages) {
   EXPECT_THAT(message, Not(HasSubstr(std::string(50, 'a'))));
 }
 
+// Describing a value serialised it whole before cutting the text: a value 100000 levels deep
+// overflowed the stack, and one of millions of elements cost as much as its whole text.
+TEST(DescribeJson, DeepAndHugeValuesAreDescribedBriefly) {
+  json deep = json::array();
+  json* inner = &deep;
+  for (int level = 0; level < 100000; ++level) {
+    inner->push_back(json::array());
+    inner = &inner->back();
+  }
+  EXPECT_EQ(describe_json(deep), "array [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[...");
+  const json huge(std::vector<int>(1000000, 7));
+  EXPECT_EQ(describe_json(huge), "array [7,7,7,7,7,7,7,7,7,7,7,7,7,7,7,7,7,7,...");
+  EXPECT_EQ(describe_json(json{{"a", {1, 2}}, {"b", "c"}}), "object {\"a\":[1,2],\"b\":\"c\"}");
+  EXPECT_EQ(describe_json(json(std::string(1000000, 'x'))), "string \"xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx...");
+}
+
 }  // namespace
 }  // namespace mssph

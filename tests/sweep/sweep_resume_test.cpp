@@ -6,7 +6,12 @@
 
 #include <gmock/gmock.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <cstdlib>
+#include <fstream>
 
 namespace mssph::test {
 namespace {
@@ -40,17 +45,63 @@ TEST_F(SweepResume, ASecondRunSkipsEveryCompletedPoint) {
 TEST_F(SweepResume, LogsLeftRunningOrInterruptedRunAgain) {
   ASSERT_EQ(sweep().exit_code, 0);
   const std::vector<ino_t> before = inodes();
-  // What runs of points 1 and 2 that did not finish leave: their log at <log>.partial, "running"
-  // (killed mid-way) or "interrupted"; point 3's log is gone.
+  // What runs of points 1 and 2 that did not finish leave: their log, with their scene, at
+  // <log>.partial, "running" (killed mid-way) or "interrupted"; point 3's log is gone.
+  const auto scene_of = [&](std::size_t i) {
+    RunMetadata metadata;
+    metadata.config_json = h5::read_string_attribute(open_read_only(log_of(i)).id(), "config");
+    return metadata;
+  };
+  const RunMetadata scene_1 = scene_of(1), scene_2 = scene_of(2);
   for (std::size_t i : {1u, 2u, 3u}) std::filesystem::remove(log_of(i));
-  { RunLog killed(log_of(1), RunMetadata{}); }
-  RunLog(log_of(2), RunMetadata{}).finish_failed("interrupted by a signal at t = 0.05 s");
+  { RunLog killed(log_of(1), scene_1); }
+  RunLog(log_of(2), scene_2).finish_failed("interrupted by a signal at t = 0.05 s");
   ASSERT_EQ(status_of(log_on_disk(1)), "running");
   const ProcessResult again = sweep();
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_THAT(again.err, HasSubstr("1 completed before, 0 failed before, 3 to run"));
   EXPECT_EQ(inode(log_of(0)), before[0]);
   for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(status_of(log_of(i)), "completed") << i;
+}
+
+// A log under a point's name that another scene wrote (by hand, or another sweep's) was counted
+// as the point completed, and merged as its results.
+TEST_F(SweepResume, ALogOfAnotherSceneUnderAPointsNameRunsAgain) {
+  ASSERT_EQ(sweep().exit_code, 0);
+  const std::string intended = h5::read_string_attribute(open_read_only(log_of(0)).id(), "config");
+  std::filesystem::copy_file(log_of(1), log_of(0), std::filesystem::copy_options::overwrite_existing);
+  const ProcessResult again = sweep();
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_THAT(again.err, HasSubstr("3 completed before, 0 failed before, 1 to run"));
+  EXPECT_THAT(again.err, HasSubstr("run again, its log replaced: point 1/4"));
+  EXPECT_THAT(again.err, HasSubstr("not this point's log"));
+  EXPECT_EQ(h5::read_string_attribute(open_read_only(log_of(0)).id(), "config"), intended);
+}
+
+// A point whose log another run holds (another sweep on the same --out) is busy, not bad input:
+// it is not started, the others run, and the sweep ends incomplete (exit 1) instead of stopping
+// with exit 2 "mssph run rejected its input".
+TEST_F(SweepResume, APointAnotherRunIsWritingIsNotStarted) {
+  const ProcessResult listed = sweep({"--dry-run"});
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  const std::size_t name = listed.out.find("point-");
+  ASSERT_NE(name, std::string::npos) << listed.out;
+  const std::string log = out() + "/points/" + listed.out.substr(name, listed.out.find(".h5", name) + 3 - name);
+  std::filesystem::create_directories(out() + "/points");
+  const std::string partial = log + ".partial";
+  std::ofstream(partial) << "being written";
+  const int holder = open(partial.c_str(), O_RDWR);
+  ASSERT_GE(holder, 0);
+  ASSERT_EQ(flock(holder, LOCK_EX | LOCK_NB), 0);
+  const ProcessResult r = sweep();
+  close(holder);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("not started, busy: point 1/4"));
+  EXPECT_THAT(r.err, HasSubstr("another run is writing it"));
+  EXPECT_THAT(r.err, ::testing::Not(HasSubstr("rejected its input")));
+  EXPECT_EQ(read_file(partial), "being written") << "the other run's log is left alone";
+  EXPECT_FALSE(std::filesystem::exists(log.substr(0, log.size() - 3) + ".out")) << "nor its console output";
+  for (std::size_t i = 1; i < 4; ++i) EXPECT_EQ(status_of(log_of(i)), "completed") << i;
 }
 
 TEST_F(SweepResume, FailedPointsAreReportedAndRerunOnlyWhenAsked) {
