@@ -89,14 +89,6 @@ void write_tags(RunLog& log, const std::vector<Tag>& tags) {
   }
 }
 
-std::optional<double> device_memory_for(const std::string& backend) {
-  if (backend == "cuda") {
-    const std::vector<GpuDevice> devices = gpu_devices();
-    if (!devices.empty()) return static_cast<double>(devices.front().total_memory);
-  }
-  return std::nullopt;
-}
-
 // Where the log goes: --out, or the default path from the scene's name.
 std::string output_of(const SceneRunRequest& request, const Scene& scene, const std::string& backend_name) {
   return request.output.empty() ? default_output_path(scene.name, backend_name) : request.output;

@@ -112,7 +112,7 @@ std::string tiny_drop_named(const std::string& directory, const std::string& fil
 // run took another file for its own.
 TEST_F(BadInput, ASceneNameWithANulCharacter) {
   const std::string scene = tiny_drop_named(work_.path().string(), "nul.json", std::string("ok\0base", 7));
-  expect_rejected({"run", scene}, {"nul.json", "/name", "NUL"});
+  expect_rejected({"run", scene}, {"nul.json", "/name", "control characters"});
 }
 
 // A name too long for a file name: refused before the default path's folders are created.
