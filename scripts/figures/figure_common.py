@@ -47,12 +47,14 @@ def save(figure, folder, name):
 
 def finish_checks(report, folder, name, label, written):
     """Writes the checks' report to folder/name.json (with its overall "passed"), prints how many
-    passed and what was written, and exits 1 when a check failed, else 0."""
+    passed and the names of the files drawn (mssph moves them from its staging folder into --out
+    and says so), and exits 1 when a check failed, else 0."""
     checks = report["checks"]
     report["passed"] = all(c["passed"] for c in checks)
     checks_path = os.path.join(folder, name + ".json")
     with open(checks_path, "w") as out:
         json.dump(report, out, indent=2)
     failed = sum(not c["passed"] for c in checks)
-    print(f"{label}: {len(checks) - failed} passed, {failed} failed; wrote {', '.join(written + [checks_path])}")
+    names = [os.path.basename(path) for path in written + [checks_path]]
+    print(f"{label}: {len(checks) - failed} passed, {failed} failed; drew {', '.join(names)}")
     sys.exit(1 if failed else 0)
