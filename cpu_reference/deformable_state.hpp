@@ -15,8 +15,9 @@ struct DeformableState {
   std::vector<Eigen::Matrix3d> displacement_gradient;
   std::vector<Eigen::Matrix3d> strain;
   std::vector<Eigen::Matrix3d> stress;
-  std::vector<Eigen::Matrix3d> stress_action;  // K_i = V0_i R_i P_i, world frame [N m]
-  std::vector<double> strain_energy;           // V0_i psi_i [J]
+  std::vector<Eigen::Matrix3d> viscous_stress;  // Kelvin-Voigt sigma_v (zero where the body has none) [Pa]
+  std::vector<Eigen::Matrix3d> stress_action;   // K_i = V0_i R_i (P_i + sigma_v,i), world frame [N m]
+  std::vector<double> strain_energy;            // V0_i psi_i [J]
   // Step 3: forces from the particle's own body [N]; their sum goes to internal_force.
   std::vector<Eigen::Vector3d> elastic_force;    // eq. 5, 6
   std::vector<Eigen::Vector3d> hourglass_force;  // zero-energy-mode control (0 when off)
@@ -27,6 +28,7 @@ struct DeformableState {
     displacement_gradient.assign(n, Eigen::Matrix3d::Zero());
     strain.assign(n, Eigen::Matrix3d::Zero());
     stress.assign(n, Eigen::Matrix3d::Zero());
+    viscous_stress.assign(n, Eigen::Matrix3d::Zero());
     stress_action.assign(n, Eigen::Matrix3d::Zero());
     strain_energy.assign(n, 0.0);
     elastic_force.assign(n, Eigen::Vector3d::Zero());

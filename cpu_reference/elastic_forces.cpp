@@ -26,6 +26,16 @@ Eigen::Matrix3d displacement_gradient(const Eigen::Matrix3d& rotation_i, const D
   return grad_u;
 }
 
+Eigen::Matrix3d velocity_gradient(const Eigen::Matrix3d& rotation_i, const DeformableRestState& rest,
+                                  const std::vector<Eigen::Vector3d>& velocities, std::size_t i) {
+  Eigen::Matrix3d grad_v = Eigen::Matrix3d::Zero();
+  for (std::size_t k = rest.neighbours.offsets[i]; k < rest.neighbours.offsets[i + 1]; ++k) {
+    const Eigen::Vector3d v_ij = velocities[rest.neighbours.indices[k]] - velocities[i];
+    grad_v += (rotation_i.transpose() * v_ij) * rest.bonds[k].d_ij.transpose();
+  }
+  return grad_v;
+}
+
 void compute_rotations(const ParticleSetup& setup, const DeformableRestState& rest,
                        const std::vector<Eigen::Vector3d>& positions, DeformableState& state) {
   const std::size_t n = setup.size();
@@ -37,7 +47,8 @@ void compute_rotations(const ParticleSetup& setup, const DeformableRestState& re
 }
 
 void compute_elastic_stresses(const ParticleSetup& setup, const DeformableRestState& rest,
-                              const std::vector<Eigen::Vector3d>& positions, DeformableState& state) {
+                              const std::vector<Eigen::Vector3d>& positions,
+                              const std::vector<Eigen::Vector3d>& velocities, DeformableState& state) {
   const std::size_t n = setup.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -45,10 +56,15 @@ void compute_elastic_stresses(const ParticleSetup& setup, const DeformableRestSt
     const Material& material = setup.bodies[setup.body[i]].material;
     const Eigen::Matrix3d grad_u = displacement_gradient(state.rotation[i], rest, positions, i);
     const ElasticResponse response = elastic_response(grad_u, rest.lame[i], material.model);
+    state.viscous_stress[i] = material.viscous_modulus > 0.0
+                                  ? viscous_stress(velocity_gradient(state.rotation[i], rest, velocities, i),
+                                                   rest.lame[i], material.viscous_modulus / material.young_modulus)
+                                  : Eigen::Matrix3d::Zero();
     state.displacement_gradient[i] = grad_u;
     state.strain[i] = response.strain;
     state.stress[i] = response.stress;
-    state.stress_action[i] = stress_action(rest.volume[i], state.rotation[i], response.first_piola);
+    state.stress_action[i] =
+        stress_action(rest.volume[i], state.rotation[i], response.first_piola + state.viscous_stress[i]);
     state.strain_energy[i] = rest.volume[i] * response.energy_density;
   }
 }

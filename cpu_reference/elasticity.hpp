@@ -154,6 +154,16 @@ inline Eigen::Matrix3d first_piola_kirchhoff(const Eigen::Matrix3d& grad_u, cons
   return elastic_response(grad_u, lame, model).first_piola;
 }
 
+// Kelvin-Voigt viscous stress in i's rotated rest frame, sigma_v = tau C : eps_dot with the strain
+// rate eps_dot = 1/2 (grad v + grad v^T) and the retardation time tau = eta / E of the viscous
+// modulus eta [Pa s] (Christensen, Theory of Viscoelasticity, 1982, sec. 1.3): under uniaxial
+// stress sigma = E eps + eta eps_dot, and each vibration mode of angular frequency omega decays
+// with damping ratio eta omega / (2 E). Added to P (small strain), so it acts through eq. 6.
+inline Eigen::Matrix3d viscous_stress(const Eigen::Matrix3d& grad_v, const LameParameters& lame,
+                                      double retardation_time) {
+  return retardation_time * isotropic_stress(cauchy_strain(grad_v), lame);
+}
+
 // The volume ratio J = det F = det(I + grad u) of i's neighbourhood [-] (R_i has det 1): the
 // compression measure of the run log.
 inline double volume_ratio(const Eigen::Matrix3d& grad_u) {

@@ -59,7 +59,7 @@ void ReferenceBackend::compute_forces() {
         [&] { compute_rotations(setup_, deformable_rest_, particles_.position, deformables_); });
   timed(phase_seconds_[kDensities], [&] {
     compute_densities(setup_, deformable_rest_.own_rest_number_density, neighbours_, particles_);
-    compute_elastic_stresses(setup_, deformable_rest_, particles_.position, deformables_);
+    compute_elastic_stresses(setup_, deformable_rest_, particles_.position, particles_.velocity, deformables_);
   });
   timed(phase_seconds_[kForces], [&] {
     compute_pressure_viscosity_forces(setup_, neighbours_, particles_);

@@ -5,14 +5,13 @@
 // its float64 twin in cpu_reference/ (tests/equations/ checks each against it): eq. 4
 // displacement_gradient, eq. 5 first_piola_kirchhoff (with cauchy_strain,
 // green_saint_venant_strain, isotropic_stress) and stress_action, eq. 6 elastic_force_pair,
-// plus zero_energy_force_pair and damping_force. Conventions and derivations are the
-// reference's (cpu_reference/elasticity.hpp): (grad u)_ab = du_a/dX_b, d_ij = V0_j L_i grad W(X_i - X_j),
-// K_i = V0_i R_i P_i, f_i = sum_j (K_i d_ij - K_j d_ji). The rest state (positions, volumes,
-// corrections L_i, neighbours) comes from the reference's rest-state builder, converted to float;
-// each bond's offset, weight and kernel gradient are derived from it as the passes read them
-// (rest_bond), and L_i is applied once per particle.
-// The material models (scene key `model`, src/config/elastic_model.hpp) are those of the
-// reference's elastic_response(), with the equations and sources given there.
+// plus velocity_gradient and viscous_stress (Kelvin-Voigt), zero_energy_force_pair and damping_force. Conventions and
+// derivations are the reference's (cpu_reference/elasticity.hpp): (grad u)_ab = du_a/dX_b, d_ij = V0_j L_i grad W(X_i -
+// X_j), K_i = V0_i R_i P_i, f_i = sum_j (K_i d_ij - K_j d_ji). The rest state (positions, volumes, corrections L_i,
+// neighbours) comes from the reference's rest-state builder, converted to float; each bond's offset, weight and kernel
+// gradient are derived from it as the passes read them (rest_bond), and L_i is applied once per particle. The material
+// models (scene key `model`, src/config/elastic_model.hpp) are those of the reference's elastic_response(), with the
+// equations and sources given there.
 #include "config/elastic_model.hpp"
 #include "particle_views.hpp"
 #include "smoothing_kernels.hpp"
@@ -33,6 +32,7 @@ struct ElasticParameters {
   float young_modulus;              // E [Pa], scales the zero-energy control
   float zero_energy_stiffness;      // alpha [-], 0 = off
   float damping;                    // mass-proportional rate [1/s], 0 = off (bodies held by fixed regions)
+  float retardation_time;           // tau = eta / E of the Kelvin-Voigt viscous stress [s], 0 = off
   float particle_mass;              // m = rho0 dx^3 [kg]
   float lowest_valid_volume_ratio;  // det F at or below which a particle is counted as past the model's range
 };
@@ -46,7 +46,7 @@ struct DeformableView {
   const Mat3* correction;               // per deformable particle: L_i (model/deformable_rest_state.hpp)
   SmoothingKernels smoothing;           // poly6 W (moment matrix, zero-energy weight), spiky grad W (d_ij)
   const Vec4* position;                 // canonical positions (read)
-  const Vec4* velocity;                 // canonical velocities (read, damping)
+  const Vec4* velocity;                 // canonical velocities (read: viscous stress, damping)
   Quat* rotation;                       // R_i as a quaternion; read as the warm start, then written
   Mat3* corrected_stress_action;        // K_i L_i, K_i = V0_i R_i P_i (world frame) [N m] (elastic_force says why)
   Mat3* deformation;                    // world-frame F_i = R_i (I + grad u_i), for the zero-energy control and
@@ -106,8 +106,9 @@ MSSPH_HD Quat extract_rotation(const Mat3& a, Quat q) {
 }
 
 // What step 1 and eq. 4 need of deformable particle d's rest bonds, gathered in one pass: the
-// moment matrix A = sum_j m_j W_ij x_ij X_ij^T and the two halves of eq. 4,
-// sum_j x_ij d_ij^T and sum_j X_ij d_ij^T, each as (sum_j x_ij (V0_j grad W_ij)^T) L_i^T since
+// moment matrix A = sum_j m_j W_ij x_ij X_ij^T, the two halves of eq. 4,
+// sum_j x_ij d_ij^T and sum_j X_ij d_ij^T, and, where the body has a viscous modulus, eq. 4's
+// operator on the velocities sum_j v_ij d_ij^T; each as (sum_j x_ij (V0_j grad W_ij)^T) L_i^T since
 // d_ij = L_i V0_j grad W_ij: one product by L_i per particle instead of one per bond. Each half
 // sums terms of size |X_ij| |d_ij| as the per-bond form does, so float32 rounding is of the same
 // order; the bonds, the step's largest read, are read once instead of twice.
@@ -115,6 +116,7 @@ struct BondSums {
   Mat3 moment;
   Mat3 current_gradient;
   Mat3 rest_gradient;
+  Mat3 velocity_gradient;  // sum_j v_ij d_ij^T, zero where the body has no viscous modulus
 };
 
 // The deformable particles' bond loops are split like the neighbour sums (fluid_physics.hpp):
@@ -123,7 +125,9 @@ struct BondSums {
 MSSPH_HD BondSums bond_sums_share(const DeformableView& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const Vec3 x_i = xyz(v.position[particle_index(body, d)]);
-  BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
+  const bool viscous = body.retardation_time > 0.0f;
+  const Vec3 v_i = viscous ? xyz(v.velocity[particle_index(body, d)]) : Vec3{0, 0, 0};
+  BondSums sums{zero_mat3(), zero_mat3(), zero_mat3(), zero_mat3()};
   const Vec4 rest_i = v.rest[d];
   for (std::uint32_t k = lane; k < v.bond_count[d]; k += lanes) {
     const std::uint32_t j = v.bond_neighbour[k * v.count + d];  // bond-major: FloatScene::bond_count
@@ -133,15 +137,17 @@ MSSPH_HD BondSums bond_sums_share(const DeformableView& v, std::uint32_t d, std:
     sums.moment = sums.moment + outer((body.particle_mass * bond.kernel) * x_ij, bond.offset);
     sums.current_gradient = sums.current_gradient + outer(x_ij, weighted_gradient);
     sums.rest_gradient = sums.rest_gradient + outer(bond.offset, weighted_gradient);
+    if (viscous) sums.velocity_gradient = sums.velocity_gradient + outer(xyz(v.velocity[j]) - v_i, weighted_gradient);
   }
   return sums;
 }
 
-// The bond sums of all lanes with L_i^T applied to eq. 4's halves.
+// The bond sums of all lanes with L_i^T applied to eq. 4's halves and the velocities' sum.
 MSSPH_HD BondSums corrected_bond_sums(BondSums sums, const Mat3& correction) {
   const Mat3 correction_t = transpose(correction);
   sums.current_gradient = sums.current_gradient * correction_t;
   sums.rest_gradient = sums.rest_gradient * correction_t;
+  sums.velocity_gradient = sums.velocity_gradient * correction_t;
   return sums;
 }
 
@@ -150,6 +156,12 @@ MSSPH_HD BondSums corrected_bond_sums(BondSums sums, const Mat3& correction) {
 // which sums per bond). The paper prints V0_i where the quadrature weight is V0_j, inside d_ij.
 MSSPH_HD Mat3 displacement_gradient(const Mat3& rotation, const BondSums& sums) {
   return transpose(rotation) * sums.current_gradient - sums.rest_gradient;
+}
+
+// The velocity gradient in i's rotated rest frame, grad v_i = R_i^T sum_j v_ij d_ij^T (reference:
+// velocity_gradient, which sums per bond).
+MSSPH_HD Mat3 velocity_gradient(const Mat3& rotation, const BondSums& sums) {
+  return transpose(rotation) * sums.velocity_gradient;
 }
 
 // Paper eq. 5's strain, in the two measures of the material models (reference: cauchy_strain,
@@ -199,6 +211,12 @@ MSSPH_HD Mat3 first_piola_kirchhoff(const ElasticParameters& body, const Mat3& g
   return f * isotropic_stress(body, green_saint_venant_strain(grad_u));
 }
 
+// Kelvin-Voigt viscous stress sigma_v = tau C : 1/2 (grad v + grad v^T), tau = eta / E (reference:
+// viscous_stress, with its source), added to P.
+MSSPH_HD Mat3 viscous_stress(const ElasticParameters& body, const Mat3& grad_v) {
+  return body.retardation_time * isotropic_stress(body, cauchy_strain(grad_v));
+}
+
 // K_i = V0_i R_i P_i, the world-frame matrix through which i's strain energy acts on its
 // neighbours (paper eq. 5: f_ji = -V0_i P_i d_ij, the 2 of eq. 5 cancelling the 1/2 of eq. 6;
 // reference: stress_action).
@@ -213,16 +231,18 @@ MSSPH_HD Mat3 world_deformation_gradient(const Mat3& rotation, const Mat3& grad_
 }
 
 // Step 1 and the elastic part of step 2 for deformable particle d, from its bond sums (all lanes'
-// shares added): R_i, grad u_i (eq. 4), P_i (eq. 5), K_i and F_i.
+// shares added): R_i, grad u_i (eq. 4), P_i (eq. 5) with the viscous stress where the body has
+// one, K_i and F_i.
 MSSPH_HD void store_rotation_and_stress(const DeformableView& v, std::uint32_t d, const BondSums& uncorrected) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const BondSums sums = corrected_bond_sums(uncorrected, v.correction[d]);
   const Quat q = extract_rotation(sums.moment, v.rotation[d]);
   const Mat3 rotation = rotation_matrix(q);
   const Mat3 grad_u = displacement_gradient(rotation, sums);
+  Mat3 stress = first_piola_kirchhoff(body, grad_u);
+  if (body.retardation_time > 0.0f) stress = stress + viscous_stress(body, velocity_gradient(rotation, sums));
   v.rotation[d] = q;
-  v.corrected_stress_action[d] =
-      stress_action(v.rest[d].w, rotation, first_piola_kirchhoff(body, grad_u)) * v.correction[d];
+  v.corrected_stress_action[d] = stress_action(v.rest[d].w, rotation, stress) * v.correction[d];
   v.deformation[d] = world_deformation_gradient(rotation, grad_u);
 }
 

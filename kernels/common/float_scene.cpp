@@ -80,6 +80,7 @@ void add_rest_state(const ParticleSetup& setup, FloatScene& scene) {
     p.young_modulus = static_cast<float>(m.young_modulus);
     p.zero_energy_stiffness = static_cast<float>(m.zero_energy_stiffness);
     p.damping = static_cast<float>(m.damping);
+    p.retardation_time = static_cast<float>(m.viscous_modulus / m.young_modulus);
     p.particle_mass = static_cast<float>(body_particle_mass(setup, body));
     p.lowest_valid_volume_ratio = static_cast<float>(lowest_valid_volume_ratio(m.model));
     const auto index = static_cast<std::uint32_t>(scene.elastic_bodies.size());

@@ -54,7 +54,8 @@ __device__ Mat3 team_sum(const Mat3& a) {
 }
 template <unsigned Lanes>
 __device__ BondSums team_sum(const BondSums& s) {
-  return {team_sum<Lanes>(s.moment), team_sum<Lanes>(s.current_gradient), team_sum<Lanes>(s.rest_gradient)};
+  return {team_sum<Lanes>(s.moment), team_sum<Lanes>(s.current_gradient), team_sum<Lanes>(s.rest_gradient),
+          team_sum<Lanes>(s.velocity_gradient)};
 }
 
 // The deformable passes split each particle's bonds over a team the same way. The rest of step 1
@@ -66,7 +67,7 @@ __global__ void rotation_stress_kernel(DeformableView view) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t d = seat.member, lane = seat.lane;
   const bool active = d < view.count;
-  BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
+  BondSums sums{zero_mat3(), zero_mat3(), zero_mat3(), zero_mat3()};
   if (active) sums = bond_sums_share(view, d, lane, Lanes);
   sums = team_sum<Lanes>(sums);
   if constexpr (Lanes == 1) {

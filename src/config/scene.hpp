@@ -37,7 +37,8 @@ struct Material {
   double poisson_ratio = 0.0;                                 // nu [-], in (-1, 0.5)
   ElasticModel model = ElasticModel::saint_venant_kirchhoff;  // stress response to F (config/elastic_model.hpp)
   double damping = 0.0;                                       // mass-proportional damping rate [1/s], 0 = off
-  double zero_energy_stiffness = 0.0;                         // hourglass control coefficient [-], 0 = off
+  double viscous_modulus = 0.0;        // eta [Pa s] of the Kelvin-Voigt stress (eta / E) C : strain rate, 0 = off
+  double zero_energy_stiffness = 0.0;  // hourglass control coefficient [-], 0 = off
   bool kernel_gradient_correction = false;
 };
 

@@ -28,6 +28,7 @@ constexpr const char* kElasticKeys[] = {"young_modulus",
                                         "model",
                                         "strain",
                                         "damping",
+                                        "viscous_modulus",
                                         "zero_energy_stiffness",
                                         "kernel_gradient_correction"};
 
@@ -67,6 +68,7 @@ void read_material_keys(const JsonReader& reader, Material& material) {
   material.poisson_ratio = reader.number_or("poisson_ratio", material.poisson_ratio, Interval::open(-1.0, 0.5));
   material.model = read_elastic_model(reader, material.model);
   material.damping = reader.number_or("damping", material.damping, Interval::non_negative());
+  material.viscous_modulus = reader.number_or("viscous_modulus", material.viscous_modulus, Interval::non_negative());
   material.zero_energy_stiffness =
       reader.number_or("zero_energy_stiffness", material.zero_energy_stiffness, Interval::non_negative());
   material.kernel_gradient_correction =
@@ -85,7 +87,8 @@ std::map<std::string, MaterialEntry> read_materials(const JsonReader& root) {
   if (!section) return materials;
   for (const auto& [name, reader] : section->members()) {
     reader.allow_only({"rest_density", "pressure_stiffness", "viscosity", "young_modulus", "poisson_ratio", "model",
-                       "strain", "damping", "zero_energy_stiffness", "kernel_gradient_correction", "description"});
+                       "strain", "damping", "viscous_modulus", "zero_energy_stiffness", "kernel_gradient_correction",
+                       "description"});
     reader.string_or("description", "");  // documentation only, but a string like everywhere else
     MaterialEntry entry;
     read_material_keys(reader, entry.material);
@@ -186,6 +189,7 @@ BodyConfig read_body(const std::string& name, const JsonReader& reader,
                      "model",
                      "strain",
                      "damping",
+                     "viscous_modulus",
                      "zero_energy_stiffness",
                      "kernel_gradient_correction",
                      "density",
@@ -262,6 +266,13 @@ BodyConfig read_body(const std::string& name, const JsonReader& reader,
   if (body.kind == BodyKind::deformable) {
     require(has_young, "young_modulus", "Young's modulus E [Pa] of a deformable body");
     require(has_poisson, "poisson_ratio", "Poisson's ratio nu of a deformable body");
+    // Only with the correction is sum_j X_ij (x) d_ij = I, so that a rigid rotation has no strain
+    // rate and the viscous stress leaves a spinning body alone.
+    if (m.viscous_modulus > 0.0 && !m.kernel_gradient_correction) {
+      reader.fail("kernel_gradient_correction",
+                  "expected true where viscous_modulus > 0 (inline or through \"material\"): without it the "
+                  "strain rate of a rigid rotation is not zero, and the viscous stress would slow a spinning body");
+    }
   }
   if (body.kind == BodyKind::rigid) {
     body.density = reader.number("density", Interval::positive());

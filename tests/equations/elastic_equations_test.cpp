@@ -1,4 +1,5 @@
-// Paper eq. 4-6 with step 1's rotation, the zero-energy control and the damping, float32
+// Paper eq. 4-6 with step 1's rotation, the Kelvin-Voigt viscous stress, the zero-energy control and
+// the damping, float32
 // (kernels/common/elastic_physics.hpp) against the float64 twins of the same names
 // (cpu_reference/elasticity.hpp, elastic_forces.hpp, corotation.hpp, zero_energy_control.hpp,
 // deformable_damping.hpp). Method and tolerance: twin_support.hpp. Lengths are those of a
@@ -60,6 +61,9 @@ struct Neighbourhood {
   std::vector<std::uint32_t> body_of, bond_count, bond_neighbour;
   std::vector<kernels::Vec4> position, rest_float;
   std::vector<kernels::Mat3> correction;
+  std::vector<Eigen::Vector3d> velocities;  // empty unless add_velocities drew them
+  std::vector<kernels::Vec4> velocity;
+  double velocity_gradient_scale = 0.0;  // sum_j |v_ij| |d_ij|
 
   kernels::DeformableView view() const {
     kernels::DeformableView v{};
@@ -71,6 +75,7 @@ struct Neighbourhood {
     v.correction = correction.data();
     v.smoothing = kernels::SmoothingKernels::for_support(kSupport);
     v.position = position.data();
+    v.velocity = velocity.empty() ? nullptr : velocity.data();
     v.count = 1;
     return v;
   }
@@ -122,6 +127,20 @@ Neighbourhood draw_neighbourhood(TwinDraws& draws, const Eigen::Matrix3d& rotati
   return n;
 }
 
+// Velocities up to 2 m/s for particle 0 and its neighbours, and a retardation time that makes
+// the float bond sums gather them.
+void add_velocities(TwinDraws& draws, Neighbourhood& n) {
+  n.body.retardation_time = static_cast<float>(draws.uniform(1e-4, 1e-2));
+  for (const Eigen::Vector3d& x : n.positions) {
+    (void)x;
+    n.velocities.push_back(draws.vector(2.0));
+    n.velocity.push_back(to_float4(n.velocities.back(), 0.0f));
+  }
+  for (std::size_t b = 0; b < n.rest.bonds.size(); ++b) {
+    n.velocity_gradient_scale += (n.velocities[b + 1] - n.velocities[0]).norm() * n.rest.bonds[b].d_ij.norm();
+  }
+}
+
 // The rest bond the float code derives as it reads it (kernels::rest_bond: X_ij, W and the kernel
 // gradient g = grad W(X_i - X_j)) against the reference's, built once in double from the same rest
 // state (build_deformable_rest_state's formulas): d_ij = L_i (V0_j g) and d_ji = -L_j (V0_i g),
@@ -169,16 +188,39 @@ TEST(ElasticEquationTwins, MomentMatrixAndDisplacementGradient) {
     const Eigen::Matrix3d rotation = draws.rotation();
     const Neighbourhood n = draw_neighbourhood(draws, rotation);
     for (const std::uint32_t lanes : {1u, 3u}) {
-      kernels::BondSums team{kernels::zero_mat3(), kernels::zero_mat3(), kernels::zero_mat3()};
+      kernels::BondSums team{kernels::zero_mat3(), kernels::zero_mat3(), kernels::zero_mat3(), kernels::zero_mat3()};
       for (std::uint32_t lane = 0; lane < lanes; ++lane) {
         const kernels::BondSums share = kernels::bond_sums_share(n.view(), 0, lane, lanes);
         team = {team.moment + share.moment, team.current_gradient + share.current_gradient,
-                team.rest_gradient + share.rest_gradient};
+                team.rest_gradient + share.rest_gradient, team.velocity_gradient + share.velocity_gradient};
       }
       const kernels::BondSums sums = kernels::corrected_bond_sums(team, n.correction[0]);
       moment.add(to_double(sums.moment), reference::moment_matrix(n.rest, n.positions, 0), n.moment_scale);
       gradient.add(to_double(kernels::displacement_gradient(to_float(rotation), sums)),
                    reference::displacement_gradient(rotation, n.rest, n.positions, 0), n.gradient_scale);
+    }
+  }
+}
+
+// The velocity gradient of the Kelvin-Voigt stress, grad v_i = R_i^T sum_j v_ij d_ij^T: the
+// float bond sums gather it beside eq. 4's halves (one lane, and a team of 3), the reference sums
+// per bond.
+TEST(ElasticEquationTwins, VelocityGradient) {
+  TwinDraws draws("ElasticEquationTwins.VelocityGradient");
+  TwinComparison gradient("velocity gradient grad v_i (Kelvin-Voigt strain rate)");
+  for (int k = 0; k < kDraws; ++k) {
+    const Eigen::Matrix3d rotation = draws.rotation();
+    Neighbourhood n = draw_neighbourhood(draws, rotation);
+    add_velocities(draws, n);
+    for (const std::uint32_t lanes : {1u, 3u}) {
+      kernels::BondSums team{kernels::zero_mat3(), kernels::zero_mat3(), kernels::zero_mat3(), kernels::zero_mat3()};
+      for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+        team.velocity_gradient =
+            team.velocity_gradient + kernels::bond_sums_share(n.view(), 0, lane, lanes).velocity_gradient;
+      }
+      const kernels::BondSums sums = kernels::corrected_bond_sums(team, n.correction[0]);
+      gradient.add(to_double(kernels::velocity_gradient(to_float(rotation), sums)),
+                   reference::velocity_gradient(rotation, n.rest, n.velocities, 0), n.velocity_gradient_scale);
     }
   }
 }
@@ -249,6 +291,22 @@ TEST(ElasticEquationTwins, IsotropicStress) {
 
 // Eq. 5's P for each material model, on gradients up to 0.5 and, for Neo-Hookean, compressions
 // down to J = 0.02, past the barrier's end J = 0.1 where the continued energy takes over.
+// sigma_v = tau C : 1/2 (grad v + grad v^T) with tau up to 0.1 s and strain rates up to 10 /s.
+TEST(ElasticEquationTwins, ViscousStress) {
+  TwinDraws draws("ElasticEquationTwins.ViscousStress");
+  TwinComparison stress("Kelvin-Voigt viscous stress sigma_v");
+  for (int k = 0; k < kDraws; ++k) {
+    const LameParameters lame = draw_lame(draws);
+    const Eigen::Matrix3d grad_v = draws.matrix(10.0);
+    const double tau = draws.uniform(1e-5, 0.1);
+    kernels::ElasticParameters body = float_body(lame, ElasticModel::saint_venant_kirchhoff);
+    body.retardation_time = static_cast<float>(tau);
+    stress.add(to_double(kernels::viscous_stress(body, to_float(grad_v))),
+               reference::viscous_stress(grad_v, lame, static_cast<double>(body.retardation_time)),
+               tau * (3.0 * lame.lambda + 2.0 * lame.mu) * grad_v.norm());
+  }
+}
+
 TEST(ElasticEquationTwins, FirstPiolaKirchhoff) {
   TwinDraws draws("ElasticEquationTwins.FirstPiolaKirchhoff");
   for (const ElasticModel model :
