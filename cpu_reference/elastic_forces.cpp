@@ -63,8 +63,8 @@ void compute_elastic_stresses(const ParticleSetup& setup, const DeformableRestSt
     state.displacement_gradient[i] = grad_u;
     state.strain[i] = response.strain;
     state.stress[i] = response.stress;
-    state.stress_action[i] =
-        stress_action(rest.volume[i], state.rotation[i], response.first_piola + state.viscous_stress[i]);
+    state.stress_action[i] = stress_action(rest.volume[i], state.rotation[i],
+                                           response.first_piola + viscous_first_piola(grad_u, state.viscous_stress[i]));
     state.strain_energy[i] = rest.volume[i] * response.energy_density;
   }
 }

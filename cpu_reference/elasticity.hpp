@@ -158,10 +158,17 @@ inline Eigen::Matrix3d first_piola_kirchhoff(const Eigen::Matrix3d& grad_u, cons
 // rate eps_dot = 1/2 (grad v + grad v^T) and the retardation time tau = eta / E of the viscous
 // modulus eta [Pa s] (Christensen, Theory of Viscoelasticity, 1982, sec. 1.3): under uniaxial
 // stress sigma = E eps + eta eps_dot, and each vibration mode of angular frequency omega decays
-// with damping ratio eta omega / (2 E). Added to P (small strain), so it acts through eq. 6.
+// with damping ratio eta omega / (2 E).
 inline Eigen::Matrix3d viscous_stress(const Eigen::Matrix3d& grad_v, const LameParameters& lame,
                                       double retardation_time) {
   return retardation_time * isotropic_stress(cauchy_strain(grad_v), lame);
+}
+
+// The viscous stress taken as a second Piola-Kirchhoff stress and added to P as F sigma_v, with
+// F = I + grad u, as the St Venant-Kirchhoff stress is: K_i F_i^T stays symmetric, so with
+// kernel-gradient correction the viscous forces exert no net torque.
+inline Eigen::Matrix3d viscous_first_piola(const Eigen::Matrix3d& grad_u, const Eigen::Matrix3d& viscous) {
+  return (Eigen::Matrix3d::Identity() + grad_u) * viscous;
 }
 
 // The volume ratio J = det F = det(I + grad u) of i's neighbourhood [-] (R_i has det 1): the

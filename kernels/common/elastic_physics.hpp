@@ -5,7 +5,8 @@
 // its float64 twin in cpu_reference/ (tests/equations/ checks each against it): eq. 4
 // displacement_gradient, eq. 5 first_piola_kirchhoff (with cauchy_strain,
 // green_saint_venant_strain, isotropic_stress) and stress_action, eq. 6 elastic_force_pair,
-// plus velocity_gradient and viscous_stress (Kelvin-Voigt), zero_energy_force_pair and damping_force. Conventions and
+// plus velocity_gradient, viscous_stress and viscous_first_piola (Kelvin-Voigt), zero_energy_force_pair
+// and damping_force. Conventions and
 // derivations are the reference's (cpu_reference/elasticity.hpp): (grad u)_ab = du_a/dX_b, d_ij = V0_j L_i grad W(X_i -
 // X_j), K_i = V0_i R_i P_i, f_i = sum_j (K_i d_ij - K_j d_ji). The rest state (positions, volumes, corrections L_i,
 // neighbours) comes from the reference's rest-state builder, converted to float; each bond's offset, weight and kernel
@@ -217,6 +218,12 @@ MSSPH_HD Mat3 viscous_stress(const ElasticParameters& body, const Mat3& grad_v) 
   return body.retardation_time * isotropic_stress(body, cauchy_strain(grad_v));
 }
 
+// The viscous stress added to P as F sigma_v, F = I + grad u (reference: viscous_first_piola, which
+// says why).
+MSSPH_HD Mat3 viscous_first_piola(const Mat3& grad_u, const Mat3& viscous) {
+  return (identity_mat3() + grad_u) * viscous;
+}
+
 // K_i = V0_i R_i P_i, the world-frame matrix through which i's strain energy acts on its
 // neighbours (paper eq. 5: f_ji = -V0_i P_i d_ij, the 2 of eq. 5 cancelling the 1/2 of eq. 6;
 // reference: stress_action).
@@ -240,7 +247,9 @@ MSSPH_HD void store_rotation_and_stress(const DeformableView& v, std::uint32_t d
   const Mat3 rotation = rotation_matrix(q);
   const Mat3 grad_u = displacement_gradient(rotation, sums);
   Mat3 stress = first_piola_kirchhoff(body, grad_u);
-  if (body.retardation_time > 0.0f) stress = stress + viscous_stress(body, velocity_gradient(rotation, sums));
+  if (body.retardation_time > 0.0f) {
+    stress = stress + viscous_first_piola(grad_u, viscous_stress(body, velocity_gradient(rotation, sums)));
+  }
   v.rotation[d] = q;
   v.corrected_stress_action[d] = stress_action(v.rest[d].w, rotation, stress) * v.correction[d];
   v.deformation[d] = world_deformation_gradient(rotation, grad_u);

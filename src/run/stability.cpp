@@ -42,6 +42,14 @@ std::vector<TimeStepBound> time_step_bounds(const ParticleSetup& setup) {
       std::ostringstream elastic;
       elastic << "0.25 h / c_p with c_p = sqrt((lambda + 2 mu) / rho0) = " << c_p << " m/s";
       bounds.push_back({body.name, "elastic", 0.25 * h / c_p, elastic.str()});
+      if (m.viscous_modulus > 0.0) {
+        // The explicit Kelvin-Voigt stress is a diffusion of velocity with viscosity
+        // (eta / E) (lambda + 2 mu); the free bar (validation/physics/bar_vibration) turns
+        // unstable between 0.054 and 0.081 in units of h^2 rho0 / that viscosity.
+        const double viscosity = m.viscous_modulus / m.young_modulus * (lame_lambda(m) + 2.0 * lame_mu(m));
+        bounds.push_back({body.name, "viscoelastic", 0.05 * h * h * m.rest_density / viscosity,
+                          "0.05 h^2 rho0 / ((eta / E) (lambda + 2 mu))"});
+      }
     }
   }
   return bounds;

@@ -1,8 +1,8 @@
 #pragma once
 // Start-up checks of the explicit time step against the CFL-type bounds of docs/model.md:
-// acoustic 0.25 h / (c + v), viscous 0.125 h^2 rho / mu, body force 0.25 sqrt(h / |g|) and
-// elastic 0.25 h / c_p. A violated bound is a warning (the run may still be stable); a run that
-// then blows up fails with exit code 3.
+// acoustic 0.25 h / (c + v), viscous 0.125 h^2 rho / mu, body force 0.25 sqrt(h / |g|),
+// elastic 0.25 h / c_p and viscoelastic 0.05 h^2 rho / ((eta / E) (lambda + 2 mu)). A violated bound is a warning (the
+// run may still be stable); a run that then blows up fails with exit code 3.
 #include "model/particle_setup.hpp"
 
 #include <string>
@@ -14,7 +14,7 @@ namespace mssph {
 // formula with the numbers that went into it.
 struct TimeStepBound {
   std::string body;
-  std::string name;  // "acoustic", "viscous", "body-force", "elastic"
+  std::string name;  // "acoustic", "viscous", "body-force", "elastic", "viscoelastic"
   double limit = 0.0;
   std::string formula;
 };

@@ -127,6 +127,21 @@ TEST(SceneLoader, ReadsEveryKeyOfTheBaseScene) {
   EXPECT_EQ(scene.output.flush_interval, 1.0);
 }
 
+// viscous_modulus is read in Pa s, and only with kernel-gradient correction: without it a rigid
+// rotation has a strain rate, and the viscous stress would slow a spinning body.
+TEST(SceneLoader, ViscousModulusNeedsKernelGradientCorrection) {
+  const Scene scene = load_scene(kBase, {"bodies/jelly/viscous_modulus=12.5"});
+  EXPECT_EQ(scene.find_body("jelly")->material.viscous_modulus, 12.5);
+  EXPECT_EQ(load_scene(kBase).find_body("jelly")->material.viscous_modulus, 0.0);
+  const std::string message = input_error_of([&] {
+    load_scene(kBase, {"bodies/jelly/viscous_modulus=12.5", "bodies/jelly/kernel_gradient_correction=false"});
+  });
+  EXPECT_THAT(message, HasSubstr("/bodies/jelly/kernel_gradient_correction"));
+  EXPECT_THAT(message, HasSubstr("expected true where viscous_modulus > 0"));
+  EXPECT_THAT(input_error_of([&] { load_scene(kBase, {"bodies/pool/viscous_modulus=1"}); }),
+              HasSubstr("applies to deformable bodies only"));
+}
+
 TEST(SceneLoader, BodiesComeInNameOrder) {
   // nlohmann::json keeps object members sorted by key, so body indices (particle order, the
   // run log's body index) follow the names, not the order in the file.

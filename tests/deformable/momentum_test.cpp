@@ -1,5 +1,5 @@
-// Conservation of momentum by the internal forces of a deformable body (paper eq. 6 and the
-// optional zero-energy control and damping): their sum vanishes, and a free, spinning, deformed
+// Conservation of momentum by the internal forces of a deformable body (paper eq. 6 with the
+// optional viscous stress, the zero-energy control and damping): their sum vanishes, and a free, spinning, deformed
 // body keeps its angular momentum.
 #include "deformable_fixtures.hpp"
 
@@ -41,8 +41,10 @@ void deform_irregularly(reference::ReferenceBackend& backend) {
 // terms rounded at 1e-16 each.
 TEST(Momentum, InternalForcesSumToZero) {
   for (bool correction : {false, true}) {
-    reference::ReferenceBackend backend = free_block(
-        {{"kernel_gradient_correction", correction}, {"zero_energy_stiffness", 5.0}, {"damping", 20.0}}, 1e-4);
+    nlohmann::json extra = {
+        {"kernel_gradient_correction", correction}, {"zero_energy_stiffness", 5.0}, {"damping", 20.0}};
+    if (correction) extra["viscous_modulus"] = 5.0;  // its stress acts through eq. 6's pair terms
+    reference::ReferenceBackend backend = free_block(extra, 1e-4);
     deform_irregularly(backend);
     for (Vector3d& v : backend.particles().velocity) v = Vector3d(0.1, -0.2, 0.05) + 0.3 * v.Random();
     backend.compute_forces();
@@ -87,6 +89,7 @@ TEST(Momentum, SpinningDeformedBodyKeepsAngularMomentumWithCorrection) {
   EXPECT_LT(
       angular_momentum_drift({{"kernel_gradient_correction", true}, {"zero_energy_stiffness", 5.0}, {"damping", 20.0}}),
       1e-6);
+  EXPECT_LT(angular_momentum_drift({{"kernel_gradient_correction", true}, {"viscous_modulus", 5.0}}), 1e-6);
 }
 
 }  // namespace

@@ -307,6 +307,18 @@ TEST(ElasticEquationTwins, ViscousStress) {
   }
 }
 
+// F sigma_v with gradients up to 0.5 and viscous stresses up to 1e4 Pa.
+TEST(ElasticEquationTwins, ViscousFirstPiola) {
+  TwinDraws draws("ElasticEquationTwins.ViscousFirstPiola");
+  TwinComparison piola("F sigma_v (Kelvin-Voigt)");
+  for (int k = 0; k < kDraws; ++k) {
+    const Eigen::Matrix3d grad_u = draws.matrix(0.5);
+    const Eigen::Matrix3d viscous = draws.matrix(1e4);
+    piola.add(to_double(kernels::viscous_first_piola(to_float(grad_u), to_float(viscous))),
+              reference::viscous_first_piola(grad_u, viscous), (1.0 + grad_u.norm()) * viscous.norm());
+  }
+}
+
 TEST(ElasticEquationTwins, FirstPiolaKirchhoff) {
   TwinDraws draws("ElasticEquationTwins.FirstPiolaKirchhoff");
   for (const ElasticModel model :

@@ -1,7 +1,7 @@
 // The start-up time-step checks: each bound warns just above its limit and stays quiet just
 // below it. The limits are worked out by hand below from the bounds' formulas (docs/model.md:
 // acoustic 0.25 h / (c + v), viscous 0.125 h^2 rho0 / mu, body force 0.25 sqrt(h / |g|), elastic
-// 0.25 h / c_p), for h = 2 dx = 0.04 m.
+// 0.25 h / c_p, viscoelastic 0.05 h^2 rho0 / ((eta / E) (lambda + 2 mu))), for h = 2 dx = 0.04 m.
 #include "run/stability.hpp"
 
 #include "config/scene_loader.hpp"
@@ -71,6 +71,16 @@ TEST(StabilityWarnings, ElasticBoundOfThePressureWaveSpeed) {
       {"rest_density", 1000.0}, {"pressure_stiffness", 1e-4}, {"young_modulus", 1e5}, {"poisson_ratio", 0.3}};
   EXPECT_THAT(warnings_for(8.4e-4, rubber, "deformable"), IsEmpty());
   EXPECT_THAT(warnings_for(8.8e-4, rubber, "deformable"), Contains(HasSubstr("elastic")));
+}
+
+TEST(StabilityWarnings, ViscoelasticBoundOfTheViscousModulus) {
+  // E = 1e3 Pa (elastic limit 0.25 * 0.04 / 1.160 = 8.6e-3 s, out of the way), nu = 0.3,
+  // eta = 10 Pa s: (eta / E) (lambda + 2 mu) = 0.01 * 1346.15 = 13.46 Pa s, limit
+  // 0.05 * 0.04^2 * 1000 / 13.46 = 5.94e-3 s.
+  const json gel = {{"rest_density", 1000.0}, {"pressure_stiffness", 1e-4}, {"young_modulus", 1e3},
+                    {"poisson_ratio", 0.3},   {"viscous_modulus", 10.0},    {"kernel_gradient_correction", true}};
+  EXPECT_THAT(warnings_for(5.8e-3, gel, "deformable"), IsEmpty());
+  EXPECT_THAT(warnings_for(6.1e-3, gel, "deformable"), Contains(HasSubstr("viscoelastic")));
 }
 
 TEST(StabilityWarnings, NearlyIncompressibleElasticity) {
