@@ -5,8 +5,8 @@
 // its float64 twin in cpu_reference/ (tests/equations/ checks each against it): eq. 4
 // displacement_gradient, eq. 5 first_piola_kirchhoff (with cauchy_strain,
 // green_saint_venant_strain, isotropic_stress) and stress_action, eq. 6 elastic_force_pair,
-// plus velocity_gradient, viscous_stress and viscous_first_piola (Kelvin-Voigt), zero_energy_force_pair
-// and damping_force. Conventions and
+// plus velocity_sum_share, velocity_gradient, viscous_stress and viscous_first_piola (Kelvin-Voigt),
+// zero_energy_force_pair and damping_force. Conventions and
 // derivations are the reference's (cpu_reference/elasticity.hpp): (grad u)_ab = du_a/dX_b, d_ij = V0_j L_i grad W(X_i -
 // X_j), K_i = V0_i R_i P_i, f_i = sum_j (K_i d_ij - K_j d_ji). The rest state (positions, volumes, corrections L_i,
 // neighbours) comes from the reference's rest-state builder, converted to float; each bond's offset, weight and kernel
@@ -107,9 +107,8 @@ MSSPH_HD Quat extract_rotation(const Mat3& a, Quat q) {
 }
 
 // What step 1 and eq. 4 need of deformable particle d's rest bonds, gathered in one pass: the
-// moment matrix A = sum_j m_j W_ij x_ij X_ij^T, the two halves of eq. 4,
-// sum_j x_ij d_ij^T and sum_j X_ij d_ij^T, and, where the body has a viscous modulus, eq. 4's
-// operator on the velocities sum_j v_ij d_ij^T; each as (sum_j x_ij (V0_j grad W_ij)^T) L_i^T since
+// moment matrix A = sum_j m_j W_ij x_ij X_ij^T and the two halves of eq. 4,
+// sum_j x_ij d_ij^T and sum_j X_ij d_ij^T, each as (sum_j x_ij (V0_j grad W_ij)^T) L_i^T since
 // d_ij = L_i V0_j grad W_ij: one product by L_i per particle instead of one per bond. Each half
 // sums terms of size |X_ij| |d_ij| as the per-bond form does, so float32 rounding is of the same
 // order; the bonds, the step's largest read, are read once instead of twice.
@@ -117,7 +116,6 @@ struct BondSums {
   Mat3 moment;
   Mat3 current_gradient;
   Mat3 rest_gradient;
-  Mat3 velocity_gradient;  // sum_j v_ij d_ij^T, zero where the body has no viscous modulus
 };
 
 // The deformable particles' bond loops are split like the neighbour sums (fluid_physics.hpp):
@@ -126,9 +124,7 @@ struct BondSums {
 MSSPH_HD BondSums bond_sums_share(const DeformableView& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const Vec3 x_i = xyz(v.position[particle_index(body, d)]);
-  const bool viscous = body.retardation_time > 0.0f;
-  const Vec3 v_i = viscous ? xyz(v.velocity[particle_index(body, d)]) : Vec3{0, 0, 0};
-  BondSums sums{zero_mat3(), zero_mat3(), zero_mat3(), zero_mat3()};
+  BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
   const Vec4 rest_i = v.rest[d];
   for (std::uint32_t k = lane; k < v.bond_count[d]; k += lanes) {
     const std::uint32_t j = v.bond_neighbour[k * v.count + d];  // bond-major: FloatScene::bond_count
@@ -138,18 +134,32 @@ MSSPH_HD BondSums bond_sums_share(const DeformableView& v, std::uint32_t d, std:
     sums.moment = sums.moment + outer((body.particle_mass * bond.kernel) * x_ij, bond.offset);
     sums.current_gradient = sums.current_gradient + outer(x_ij, weighted_gradient);
     sums.rest_gradient = sums.rest_gradient + outer(bond.offset, weighted_gradient);
-    if (viscous) sums.velocity_gradient = sums.velocity_gradient + outer(xyz(v.velocity[j]) - v_i, weighted_gradient);
   }
   return sums;
 }
 
-// The bond sums of all lanes with L_i^T applied to eq. 4's halves and the velocities' sum.
+// The bond sums of all lanes with L_i^T applied to eq. 4's halves.
 MSSPH_HD BondSums corrected_bond_sums(BondSums sums, const Mat3& correction) {
   const Mat3 correction_t = transpose(correction);
   sums.current_gradient = sums.current_gradient * correction_t;
   sums.rest_gradient = sums.rest_gradient * correction_t;
-  sums.velocity_gradient = sums.velocity_gradient * correction_t;
   return sums;
+}
+
+// Lane `lane`'s share of eq. 4's operator on the velocities, sum_j v_ij (V0_j grad W_ij)^T, before
+// L_i^T (velocity_gradient applies it): only bodies with a viscous modulus need it, so it is a
+// pass of its own over the bonds, which the other bodies' kernels leave out.
+MSSPH_HD Mat3 velocity_sum_share(const DeformableView& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
+  const ElasticParameters& body = v.bodies[v.body_of[d]];
+  const Vec3 v_i = xyz(v.velocity[particle_index(body, d)]);
+  Mat3 sum = zero_mat3();
+  const Vec4 rest_i = v.rest[d];
+  for (std::uint32_t k = lane; k < v.bond_count[d]; k += lanes) {
+    const std::uint32_t j = v.bond_neighbour[k * v.count + d];
+    const RestBond bond = rest_bond(v, rest_i, deformable_index(body, j));
+    sum = sum + outer(xyz(v.velocity[j]) - v_i, bond.volume_j * bond.grad_w);
+  }
+  return sum;
 }
 
 // Paper eq. 4, grad u_i = sum_j u_ji (x) d_ij with u_ji = R_i^T x_ij - X_ij, from the bond sums:
@@ -159,10 +169,10 @@ MSSPH_HD Mat3 displacement_gradient(const Mat3& rotation, const BondSums& sums) 
   return transpose(rotation) * sums.current_gradient - sums.rest_gradient;
 }
 
-// The velocity gradient in i's rotated rest frame, grad v_i = R_i^T sum_j v_ij d_ij^T (reference:
-// velocity_gradient, which sums per bond).
-MSSPH_HD Mat3 velocity_gradient(const Mat3& rotation, const BondSums& sums) {
-  return transpose(rotation) * sums.velocity_gradient;
+// The velocity gradient in i's rotated rest frame, grad v_i = R_i^T (sum_j v_ij (V0_j grad W_ij)^T) L_i^T
+// from all lanes' velocity_sum_share (reference: velocity_gradient, which sums per bond).
+MSSPH_HD Mat3 velocity_gradient(const Mat3& rotation, const Mat3& velocity_sum, const Mat3& correction) {
+  return transpose(rotation) * (velocity_sum * transpose(correction));
 }
 
 // Paper eq. 5's strain, in the two measures of the material models (reference: cauchy_strain,
@@ -237,18 +247,21 @@ MSSPH_HD Mat3 world_deformation_gradient(const Mat3& rotation, const Mat3& grad_
   return rotation * (identity_mat3() + grad_u);
 }
 
-// Step 1 and the elastic part of step 2 for deformable particle d, from its bond sums (all lanes'
-// shares added): R_i, grad u_i (eq. 4), P_i (eq. 5) with the viscous stress where the body has
-// one, K_i and F_i.
-MSSPH_HD void store_rotation_and_stress(const DeformableView& v, std::uint32_t d, const BondSums& uncorrected) {
+// Step 1 and the elastic part of step 2 for deformable particle d, from its bond sums and velocity
+// sum (all lanes' shares added; velocity_sum is null where no body has a viscous modulus, and
+// read only where d's body has one): R_i, grad u_i (eq. 4), P_i (eq. 5) with the viscous stress,
+// K_i and F_i.
+MSSPH_HD void store_rotation_and_stress(const DeformableView& v, std::uint32_t d, const BondSums& uncorrected,
+                                        const Mat3* velocity_sum) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const BondSums sums = corrected_bond_sums(uncorrected, v.correction[d]);
   const Quat q = extract_rotation(sums.moment, v.rotation[d]);
   const Mat3 rotation = rotation_matrix(q);
   const Mat3 grad_u = displacement_gradient(rotation, sums);
   Mat3 stress = first_piola_kirchhoff(body, grad_u);
-  if (body.retardation_time > 0.0f) {
-    stress = stress + viscous_first_piola(grad_u, viscous_stress(body, velocity_gradient(rotation, sums)));
+  if (velocity_sum != nullptr && body.retardation_time > 0.0f) {
+    const Mat3 grad_v = velocity_gradient(rotation, *velocity_sum, v.correction[d]);
+    stress = stress + viscous_first_piola(grad_u, viscous_stress(body, grad_v));
   }
   v.rotation[d] = q;
   v.corrected_stress_action[d] = stress_action(v.rest[d].w, rotation, stress) * v.correction[d];
@@ -257,7 +270,12 @@ MSSPH_HD void store_rotation_and_stress(const DeformableView& v, std::uint32_t d
 
 // The same in one lane (the host).
 MSSPH_HD void rotation_and_stress(const DeformableView& v, std::uint32_t d) {
-  store_rotation_and_stress(v, d, bond_sums_share(v, d, 0, 1));
+  if (v.bodies[v.body_of[d]].retardation_time > 0.0f) {
+    const Mat3 velocity_sum = velocity_sum_share(v, d, 0, 1);
+    store_rotation_and_stress(v, d, bond_sums_share(v, d, 0, 1), &velocity_sum);
+  } else {
+    store_rotation_and_stress(v, d, bond_sums_share(v, d, 0, 1), nullptr);
+  }
 }
 
 // Paper eq. 6, one neighbour's term of the symmetrised elastic force on i:

@@ -5,6 +5,7 @@
 #include "thread_blocks.cuh"
 #include "warp_cell_checks.cuh"
 
+#include <algorithm>
 #include <type_traits>
 
 namespace mssph::kernels {
@@ -54,32 +55,45 @@ __device__ Mat3 team_sum(const Mat3& a) {
 }
 template <unsigned Lanes>
 __device__ BondSums team_sum(const BondSums& s) {
-  return {team_sum<Lanes>(s.moment), team_sum<Lanes>(s.current_gradient), team_sum<Lanes>(s.rest_gradient),
-          team_sum<Lanes>(s.velocity_gradient)};
+  return {team_sum<Lanes>(s.moment), team_sum<Lanes>(s.current_gradient), team_sum<Lanes>(s.rest_gradient)};
 }
 
 // The deformable passes split each particle's bonds over a team the same way. The rest of step 1
 // (store_rotation_and_stress: the rotation's iterations, the stress) is serial per particle: the
 // teams hand their sums through shared memory to one thread per particle, so a warp runs it for
-// 32 particles at once rather than for its 32 / Lanes teams with the other lanes idle.
-template <unsigned Lanes>
+// 32 particles at once rather than for its 32 / Lanes teams with the other lanes idle. Viscous:
+// the scene has a body with a viscous modulus, whose particles also sum their velocities; a scene
+// without one runs the kernel without that sum, its registers, shuffles and shared memory.
+template <unsigned Lanes, bool Viscous>
 __global__ void rotation_stress_kernel(DeformableView view) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t d = seat.member, lane = seat.lane;
   const bool active = d < view.count;
-  BondSums sums{zero_mat3(), zero_mat3(), zero_mat3(), zero_mat3()};
+  BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
   if (active) sums = bond_sums_share(view, d, lane, Lanes);
   sums = team_sum<Lanes>(sums);
+  Mat3 velocity_sum = zero_mat3();
+  if constexpr (Viscous) {
+    if (active && view.bodies[view.body_of[d]].retardation_time > 0.0f)
+      velocity_sum = velocity_sum_share(view, d, lane, Lanes);
+    velocity_sum = team_sum<Lanes>(velocity_sum);
+  }
   if constexpr (Lanes == 1) {
-    if (active) store_rotation_and_stress(view, d, sums);
+    if (active) store_rotation_and_stress(view, d, sums, Viscous ? &velocity_sum : nullptr);
   } else {
     constexpr unsigned kTeams = kBlock / Lanes;  // the block's particles
     __shared__ BondSums team_sums[kTeams];
-    if (lane == 0) team_sums[threadIdx.x / Lanes] = sums;
+    __shared__ Mat3 team_velocity_sums[Viscous ? kTeams : 1];
+    if (lane == 0) {
+      team_sums[threadIdx.x / Lanes] = sums;
+      if constexpr (Viscous) team_velocity_sums[threadIdx.x / Lanes] = velocity_sum;
+    }
     __syncthreads();
     const std::uint32_t particle = blockIdx.x * kTeams + threadIdx.x;
-    if (threadIdx.x < kTeams && particle < view.count)
-      store_rotation_and_stress(view, particle, team_sums[threadIdx.x]);
+    if (threadIdx.x < kTeams && particle < view.count) {
+      store_rotation_and_stress(view, particle, team_sums[threadIdx.x],
+                                Viscous ? &team_velocity_sums[threadIdx.x] : nullptr);
+    }
   }
 }
 
@@ -280,9 +294,15 @@ unsigned choose_bond_team_lanes(std::size_t deformables, std::size_t resident_th
 void launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream) {
   const DeformableView view = deformable_view(scene, state);
   if (view.count == 0) return;
+  const bool viscous = std::any_of(scene.elastic_bodies.begin(), scene.elastic_bodies.end(),
+                                   [](const ElasticParameters& body) { return body.retardation_time > 0.0f; });
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
-    rotation_stress_kernel<L><<<blocks_for(std::size_t{view.count} * L), kBlock, 0, stream>>>(view);
+    if (viscous) {
+      rotation_stress_kernel<L, true><<<blocks_for(std::size_t{view.count} * L), kBlock, 0, stream>>>(view);
+    } else {
+      rotation_stress_kernel<L, false><<<blocks_for(std::size_t{view.count} * L), kBlock, 0, stream>>>(view);
+    }
     elastic_force_kernel<L><<<blocks_for(std::size_t{view.count} * L), kBlock, 0, stream>>>(view);
   });
 }

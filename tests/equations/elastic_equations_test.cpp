@@ -127,8 +127,8 @@ Neighbourhood draw_neighbourhood(TwinDraws& draws, const Eigen::Matrix3d& rotati
   return n;
 }
 
-// Velocities up to 2 m/s for particle 0 and its neighbours, and a retardation time that makes
-// the float bond sums gather them.
+// Velocities up to 2 m/s for particle 0 and its neighbours, and a retardation time (the body is
+// viscous).
 void add_velocities(TwinDraws& draws, Neighbourhood& n) {
   n.body.retardation_time = static_cast<float>(draws.uniform(1e-4, 1e-2));
   for (const Eigen::Vector3d& x : n.positions) {
@@ -188,11 +188,11 @@ TEST(ElasticEquationTwins, MomentMatrixAndDisplacementGradient) {
     const Eigen::Matrix3d rotation = draws.rotation();
     const Neighbourhood n = draw_neighbourhood(draws, rotation);
     for (const std::uint32_t lanes : {1u, 3u}) {
-      kernels::BondSums team{kernels::zero_mat3(), kernels::zero_mat3(), kernels::zero_mat3(), kernels::zero_mat3()};
+      kernels::BondSums team{kernels::zero_mat3(), kernels::zero_mat3(), kernels::zero_mat3()};
       for (std::uint32_t lane = 0; lane < lanes; ++lane) {
         const kernels::BondSums share = kernels::bond_sums_share(n.view(), 0, lane, lanes);
         team = {team.moment + share.moment, team.current_gradient + share.current_gradient,
-                team.rest_gradient + share.rest_gradient, team.velocity_gradient + share.velocity_gradient};
+                team.rest_gradient + share.rest_gradient};
       }
       const kernels::BondSums sums = kernels::corrected_bond_sums(team, n.correction[0]);
       moment.add(to_double(sums.moment), reference::moment_matrix(n.rest, n.positions, 0), n.moment_scale);
@@ -203,8 +203,8 @@ TEST(ElasticEquationTwins, MomentMatrixAndDisplacementGradient) {
 }
 
 // The velocity gradient of the Kelvin-Voigt stress, grad v_i = R_i^T sum_j v_ij d_ij^T: the
-// float bond sums gather it beside eq. 4's halves (one lane, and a team of 3), the reference sums
-// per bond.
+// float code's lanes (one, and a team of 3) gather sum_j v_ij (V0_j grad W_ij)^T and apply L_i^T
+// once, the reference sums per bond.
 TEST(ElasticEquationTwins, VelocityGradient) {
   TwinDraws draws("ElasticEquationTwins.VelocityGradient");
   TwinComparison gradient("velocity gradient grad v_i (Kelvin-Voigt strain rate)");
@@ -213,13 +213,10 @@ TEST(ElasticEquationTwins, VelocityGradient) {
     Neighbourhood n = draw_neighbourhood(draws, rotation);
     add_velocities(draws, n);
     for (const std::uint32_t lanes : {1u, 3u}) {
-      kernels::BondSums team{kernels::zero_mat3(), kernels::zero_mat3(), kernels::zero_mat3(), kernels::zero_mat3()};
-      for (std::uint32_t lane = 0; lane < lanes; ++lane) {
-        team.velocity_gradient =
-            team.velocity_gradient + kernels::bond_sums_share(n.view(), 0, lane, lanes).velocity_gradient;
-      }
-      const kernels::BondSums sums = kernels::corrected_bond_sums(team, n.correction[0]);
-      gradient.add(to_double(kernels::velocity_gradient(to_float(rotation), sums)),
+      kernels::Mat3 velocity_sum = kernels::zero_mat3();
+      for (std::uint32_t lane = 0; lane < lanes; ++lane)
+        velocity_sum = velocity_sum + kernels::velocity_sum_share(n.view(), 0, lane, lanes);
+      gradient.add(to_double(kernels::velocity_gradient(to_float(rotation), velocity_sum, n.correction[0])),
                    reference::velocity_gradient(rotation, n.rest, n.velocities, 0), n.velocity_gradient_scale);
     }
   }
