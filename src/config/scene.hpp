@@ -39,7 +39,9 @@ struct Material {
   double damping = 0.0;                                       // mass-proportional damping rate [1/s], 0 = off
   double viscous_modulus = 0.0;        // eta [Pa s] of the Kelvin-Voigt stress (eta / E) C : strain rate, 0 = off
   double zero_energy_stiffness = 0.0;  // hourglass control coefficient [-], 0 = off
-  bool kernel_gradient_correction = false;
+  // On by default: without it the forces of eq. 5-6 are not conservative, and a loaded beam or a
+  // released bar gains energy until it breaks up (validation/physics/cantilever/README.md).
+  bool kernel_gradient_correction = true;
 };
 
 // An axis-aligned box in world coordinates [m]: a fixed region (particles of a deformable body

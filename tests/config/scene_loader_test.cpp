@@ -166,6 +166,8 @@ TEST(SceneLoader, DefaultsOfOptionalKeys) {
   EXPECT_TRUE(drop.orientation.isApprox(Eigen::Quaterniond::Identity()));
   EXPECT_EQ(drop.material.viscosity, 0.0);
   EXPECT_EQ(drop.material.model, ElasticModel::saint_venant_kirchhoff);
+  EXPECT_TRUE(drop.material.kernel_gradient_correction);
+  EXPECT_EQ(drop.material.viscous_modulus, 0.0);
   EXPECT_FALSE(scene.proxy.has_value());
   EXPECT_EQ(scene.output.log_interval, 0.0);
   EXPECT_EQ(scene.output.snapshot_interval, 0.0);

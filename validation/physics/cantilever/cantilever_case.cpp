@@ -11,20 +11,18 @@ CaseResult run_cantilever_case(const CaseContext& context) {
     return result;
   }
   const double dx = context.quick ? 0.01 : 0.005;  // 4 (the unit test's) or 8 particles across
-  for (const bool correction : {false, true}) {
-    const CantileverMeasurement m = measure_cantilever(context.physics_backend, dx, correction);
-    const std::string label = correction ? "with gradient correction" : "uncorrected";
-    result.checks.push_back(relative_check("tip deflection, " + label, "m", m.euler_bernoulli, m.tip, 0.15));
-    // The sag above is a static one only if the beam has settled: within 1 % (cantilever.hpp).
-    result.checks.push_back(
-        bound_check("fastest particle at the end (at rest), " + label, "m/s", m.final_max_speed, m.rest_speed));
-    result.resolution = "dx = " + exact(dx) + " m, h = 2 dx, " + std::to_string(m.particles) + " particles, " +
-                        std::to_string(m.steps) + " steps";
-    result.series.push_back({std::string("deflection_") + (correction ? "corrected" : "uncorrected"),
-                             "x along the beam [m]",
-                             m.x,
-                             {{"measured sag w(x) [m]", m.deflection}, {"Euler-Bernoulli w(x) [m]", m.expected}}});
-  }
+  // The default gradient (kernel-gradient correction on); without it the loaded beam breaks up
+  // (README.md, "Finding").
+  const CantileverMeasurement m = measure_cantilever(context.physics_backend, dx, true);
+  result.checks.push_back(relative_check("tip deflection", "m", m.euler_bernoulli, m.tip, 0.15));
+  // The sag above is a static one only if the beam has settled: within 1 % (cantilever.hpp).
+  result.checks.push_back(bound_check("fastest particle at the end (at rest)", "m/s", m.final_max_speed, m.rest_speed));
+  result.resolution = "dx = " + exact(dx) + " m, h = 2 dx, " + std::to_string(m.particles) + " particles, " +
+                      std::to_string(m.steps) + " steps, kernel-gradient correction on (the default)";
+  result.series.push_back({"deflection",
+                           "x along the beam [m]",
+                           m.x,
+                           {{"measured sag w(x) [m]", m.deflection}, {"Euler-Bernoulli w(x) [m]", m.expected}}});
   for (Check& c : result.checks) c.backend = context.physics_backend;
   return result;
 }
