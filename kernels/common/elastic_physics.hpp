@@ -5,7 +5,7 @@
 // its float64 twin in cpu_reference/ (tests/equations/ checks each against it): eq. 4
 // displacement_gradient, eq. 5 first_piola_kirchhoff (with cauchy_strain,
 // green_saint_venant_strain, isotropic_stress) and stress_action, eq. 6 elastic_force_pair,
-// plus velocity_sum_share, velocity_gradient, viscous_stress and viscous_first_piola (Kelvin-Voigt),
+// plus velocity_sum_share, velocity_gradient, viscous_stress and viscous_stress_action (Kelvin-Voigt),
 // zero_energy_force_pair and damping_force. Conventions and
 // derivations are the reference's (cpu_reference/elasticity.hpp): (grad u)_ab = du_a/dX_b, d_ij = V0_j L_i grad W(X_i -
 // X_j), K_i = V0_i R_i P_i, f_i = sum_j (K_i d_ij - K_j d_ji). The rest state (positions, volumes, corrections L_i,
@@ -228,10 +228,10 @@ MSSPH_HD Mat3 viscous_stress(const ElasticParameters& body, const Mat3& grad_v) 
   return body.retardation_time * isotropic_stress(body, cauchy_strain(grad_v));
 }
 
-// The viscous stress added to P as F sigma_v, F = I + grad u (reference: viscous_first_piola, which
-// says why).
-MSSPH_HD Mat3 viscous_first_piola(const Mat3& grad_u, const Mat3& viscous) {
-  return (identity_mat3() + grad_u) * viscous;
+// The viscous stress's share of K_i, V0_i R_i (I + grad u_i) sigma_v = V0_i F_i sigma_v with the
+// world-frame F_i (reference: stress_action of viscous_first_piola, which says why F).
+MSSPH_HD Mat3 viscous_stress_action(float rest_volume, const Mat3& world_deformation, const Mat3& viscous) {
+  return rest_volume * (world_deformation * viscous);
 }
 
 // K_i = V0_i R_i P_i, the world-frame matrix through which i's strain energy acts on its
@@ -247,35 +247,36 @@ MSSPH_HD Mat3 world_deformation_gradient(const Mat3& rotation, const Mat3& grad_
   return rotation * (identity_mat3() + grad_u);
 }
 
-// Step 1 and the elastic part of step 2 for deformable particle d, from its bond sums and velocity
-// sum (all lanes' shares added; velocity_sum is null where no body has a viscous modulus, and
-// read only where d's body has one): R_i, grad u_i (eq. 4), P_i (eq. 5) with the viscous stress,
-// K_i and F_i.
-MSSPH_HD void store_rotation_and_stress(const DeformableView& v, std::uint32_t d, const BondSums& uncorrected,
-                                        const Mat3* velocity_sum) {
+// Step 1 and the elastic part of step 2 for deformable particle d, from its bond sums (all lanes'
+// shares added): R_i, grad u_i (eq. 4), P_i (eq. 5), K_i and F_i.
+MSSPH_HD void store_rotation_and_stress(const DeformableView& v, std::uint32_t d, const BondSums& uncorrected) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const BondSums sums = corrected_bond_sums(uncorrected, v.correction[d]);
   const Quat q = extract_rotation(sums.moment, v.rotation[d]);
   const Mat3 rotation = rotation_matrix(q);
   const Mat3 grad_u = displacement_gradient(rotation, sums);
-  Mat3 stress = first_piola_kirchhoff(body, grad_u);
-  if (velocity_sum != nullptr && body.retardation_time > 0.0f) {
-    const Mat3 grad_v = velocity_gradient(rotation, *velocity_sum, v.correction[d]);
-    stress = stress + viscous_first_piola(grad_u, viscous_stress(body, grad_v));
-  }
   v.rotation[d] = q;
-  v.corrected_stress_action[d] = stress_action(v.rest[d].w, rotation, stress) * v.correction[d];
+  v.corrected_stress_action[d] =
+      stress_action(v.rest[d].w, rotation, first_piola_kirchhoff(body, grad_u)) * v.correction[d];
   v.deformation[d] = world_deformation_gradient(rotation, grad_u);
+}
+
+// The Kelvin-Voigt stress of deformable particle d, whose body has a viscous modulus, added to its
+// stored K_i L_i, from its velocity sum (all lanes' shares) and the R_i and F_i that
+// store_rotation_and_stress stored: K_i = V0_i R_i (P_i + (I + grad u_i) sigma_v). Kept apart
+// from the elastic stress so that scenes without viscosity run that function unchanged.
+MSSPH_HD void add_viscous_stress(const DeformableView& v, std::uint32_t d, const Mat3& velocity_sum) {
+  const ElasticParameters& body = v.bodies[v.body_of[d]];
+  const Mat3 grad_v = velocity_gradient(rotation_matrix(v.rotation[d]), velocity_sum, v.correction[d]);
+  v.corrected_stress_action[d] =
+      v.corrected_stress_action[d] +
+      viscous_stress_action(v.rest[d].w, v.deformation[d], viscous_stress(body, grad_v)) * v.correction[d];
 }
 
 // The same in one lane (the host).
 MSSPH_HD void rotation_and_stress(const DeformableView& v, std::uint32_t d) {
-  if (v.bodies[v.body_of[d]].retardation_time > 0.0f) {
-    const Mat3 velocity_sum = velocity_sum_share(v, d, 0, 1);
-    store_rotation_and_stress(v, d, bond_sums_share(v, d, 0, 1), &velocity_sum);
-  } else {
-    store_rotation_and_stress(v, d, bond_sums_share(v, d, 0, 1), nullptr);
-  }
+  store_rotation_and_stress(v, d, bond_sums_share(v, d, 0, 1));
+  if (v.bodies[v.body_of[d]].retardation_time > 0.0f) add_viscous_stress(v, d, velocity_sum_share(v, d, 0, 1));
 }
 
 // Paper eq. 6, one neighbour's term of the symmetrised elastic force on i:

@@ -69,17 +69,18 @@ __global__ void rotation_stress_kernel(DeformableView view) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t d = seat.member, lane = seat.lane;
   const bool active = d < view.count;
+  const bool viscous = Viscous && active && view.bodies[view.body_of[d]].retardation_time > 0.0f;
   BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
   if (active) sums = bond_sums_share(view, d, lane, Lanes);
   sums = team_sum<Lanes>(sums);
   Mat3 velocity_sum = zero_mat3();
   if constexpr (Viscous) {
-    if (active && view.bodies[view.body_of[d]].retardation_time > 0.0f)
-      velocity_sum = velocity_sum_share(view, d, lane, Lanes);
+    if (viscous) velocity_sum = velocity_sum_share(view, d, lane, Lanes);
     velocity_sum = team_sum<Lanes>(velocity_sum);
   }
   if constexpr (Lanes == 1) {
-    if (active) store_rotation_and_stress(view, d, sums, Viscous ? &velocity_sum : nullptr);
+    if (active) store_rotation_and_stress(view, d, sums);
+    if (viscous) add_viscous_stress(view, d, velocity_sum);
   } else {
     constexpr unsigned kTeams = kBlock / Lanes;  // the block's particles
     __shared__ BondSums team_sums[kTeams];
@@ -91,8 +92,11 @@ __global__ void rotation_stress_kernel(DeformableView view) {
     __syncthreads();
     const std::uint32_t particle = blockIdx.x * kTeams + threadIdx.x;
     if (threadIdx.x < kTeams && particle < view.count) {
-      store_rotation_and_stress(view, particle, team_sums[threadIdx.x],
-                                Viscous ? &team_velocity_sums[threadIdx.x] : nullptr);
+      store_rotation_and_stress(view, particle, team_sums[threadIdx.x]);
+      if constexpr (Viscous) {
+        if (view.bodies[view.body_of[particle]].retardation_time > 0.0f)
+          add_viscous_stress(view, particle, team_velocity_sums[threadIdx.x]);
+      }
     }
   }
 }

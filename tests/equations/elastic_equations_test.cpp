@@ -304,15 +304,23 @@ TEST(ElasticEquationTwins, ViscousStress) {
   }
 }
 
-// F sigma_v with gradients up to 0.5 and viscous stresses up to 1e4 Pa.
-TEST(ElasticEquationTwins, ViscousFirstPiola) {
-  TwinDraws draws("ElasticEquationTwins.ViscousFirstPiola");
-  TwinComparison piola("F sigma_v (Kelvin-Voigt)");
+// The viscous stress's share of K_i: the float code's V0_i F_i sigma_v from the world-frame F_i
+// against the reference's V0_i R_i (I + grad u_i) sigma_v (stress_action of viscous_first_piola),
+// with gradients up to 0.5 and viscous stresses up to 1e4 Pa.
+TEST(ElasticEquationTwins, ViscousStressAction) {
+  TwinDraws draws("ElasticEquationTwins.ViscousStressAction");
+  TwinComparison action("V0 R (I + grad u) sigma_v (Kelvin-Voigt)");
   for (int k = 0; k < kDraws; ++k) {
+    const Eigen::Matrix3d rotation = draws.rotation();
     const Eigen::Matrix3d grad_u = draws.matrix(0.5);
     const Eigen::Matrix3d viscous = draws.matrix(1e4);
-    piola.add(to_double(kernels::viscous_first_piola(to_float(grad_u), to_float(viscous))),
-              reference::viscous_first_piola(grad_u, viscous), (1.0 + grad_u.norm()) * viscous.norm());
+    const double volume = draws.uniform(1e-6, 1e-5);
+    const Eigen::Matrix3d world_f =
+        TwinDraws::rounded(Eigen::Matrix3d(rotation * (Eigen::Matrix3d::Identity() + grad_u)));
+    action.add(
+        to_double(kernels::viscous_stress_action(static_cast<float>(volume), to_float(world_f), to_float(viscous))),
+        reference::stress_action(volume, rotation, reference::viscous_first_piola(grad_u, viscous)),
+        volume * (1.0 + grad_u.norm()) * viscous.norm());
   }
 }
 
