@@ -27,9 +27,8 @@ class ViscousModulus : public ::testing::TestWithParam<std::string> {
   }
 };
 
-// dx = 1 cm, dt = 0.3 ms, eta = 40 Pa s: zeta about 0.022 over 6 periods. 15 % (the issue's
-// bound; measured 0.8 %): the decrement fits 6 peaks of a mode that still carries a little of
-// the release's higher modes.
+// dx = 1 cm, dt = 0.3 ms, eta = 40 Pa s: zeta about 0.022 over 6 periods. 15 %: the decrement
+// fits 6 peaks of a mode that still carries a little of the release's higher modes.
 TEST_P(ViscousModulus, BarModeDecaysWithDampingRatioEtaOmegaOverTwoE) {
   const validation::ViscousBarMeasurement m =
       validation::measure_viscous_bar(GetParam(), {"bodies/bar/viscous_modulus=40"}, 6.0);

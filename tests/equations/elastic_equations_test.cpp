@@ -286,8 +286,6 @@ TEST(ElasticEquationTwins, IsotropicStress) {
   }
 }
 
-// Eq. 5's P for each material model, on gradients up to 0.5 and, for Neo-Hookean, compressions
-// down to J = 0.02, past the barrier's end J = 0.1 where the continued energy takes over.
 // sigma_v = tau C : 1/2 (grad v + grad v^T) with tau up to 0.1 s and strain rates up to 10 /s.
 TEST(ElasticEquationTwins, ViscousStress) {
   TwinDraws draws("ElasticEquationTwins.ViscousStress");
@@ -324,6 +322,8 @@ TEST(ElasticEquationTwins, ViscousStressAction) {
   }
 }
 
+// Eq. 5's P for each material model, on gradients up to 0.5 and, for Neo-Hookean, compressions
+// down to J = 0.02, past the barrier's end J = 0.1 where the continued energy takes over.
 TEST(ElasticEquationTwins, FirstPiolaKirchhoff) {
   TwinDraws draws("ElasticEquationTwins.FirstPiolaKirchhoff");
   for (const ElasticModel model :

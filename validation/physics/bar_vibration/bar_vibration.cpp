@@ -2,6 +2,7 @@
 
 #include "elastic_forces.hpp"
 #include "framework/backends.hpp"
+#include "framework/fits.hpp"
 #include "model/scene_builder.hpp"
 #include "physics/elastic_bodies.hpp"
 
@@ -80,17 +81,9 @@ double energy_drift(const BarHistory& history) {
 }
 
 double energy_decay_rate(const BarHistory& history) {
-  double st = 0.0, sl = 0.0, stt = 0.0, stl = 0.0;
-  const auto n = static_cast<double>(history.time.size());
-  for (std::size_t k = 0; k < history.time.size(); ++k) {
-    const double t = history.time[k];
-    const double l = std::log(history.energy[k]);
-    st += t;
-    sl += l;
-    stt += t * t;
-    stl += t * l;
-  }
-  return (n * stl - st * sl) / (n * stt - st * st);
+  std::vector<double> log_energy;
+  for (const double e : history.energy) log_energy.push_back(std::log(e));
+  return fit_line(history.time, log_energy).second;
 }
 
 }  // namespace mssph::validation

@@ -2,6 +2,7 @@
 
 #include "backend_factory/backend_factory.hpp"
 #include "framework/backends.hpp"
+#include "framework/fits.hpp"
 #include "model/scene_builder.hpp"
 
 #include <algorithm>
@@ -10,19 +11,6 @@
 
 namespace mssph::validation {
 namespace {
-
-// Least-squares slope of y against x.
-double slope(const std::vector<double>& x, const std::vector<double>& y) {
-  const auto n = static_cast<double>(x.size());
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    sx += x[k];
-    sy += y[k];
-    sxx += x[k] * x[k];
-    sxy += x[k] * y[k];
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 double end_to_end_length(const std::vector<float>& xyz) {
   double lo = 1e300, hi = -1e300;
@@ -50,7 +38,7 @@ Decrement logarithmic_decrement(const std::vector<double>& time, const std::vect
     log_peak.push_back(std::log(*peak));
   }
   if (peak_time.size() < 3) return {};
-  const double decay = -slope(peak_time, log_peak);  // sigma = zeta omega_n
+  const double decay = -fit_line(peak_time, log_peak).second;  // sigma = zeta omega_n
   const double damped_period =
       (time[crossings.back()] - time[crossings.front()]) / static_cast<double>(crossings.size() - 1);
   const double damped = 2.0 * std::numbers::pi / damped_period;
