@@ -1,12 +1,14 @@
 // convergence_result (validation/framework/convergence.hpp) on made-up series: the order check,
 // and the check that replaces it where each value is a mean with a standard error (the finest
-// error may exceed the coarsest by at most twice their combined standard error).
+// error may exceed the coarsest by at most twice their combined standard error); and
+// self_convergence_result, whose second check asks that the values settle.
 #include "framework/convergence.hpp"
 #include "framework/fits.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace mssph::validation {
@@ -34,6 +36,29 @@ TEST(ConvergenceResult, WithStandardErrorsTheFinestMayExceedTheCoarsestOnlyWithi
   EXPECT_EQ(second_check(growing, {1.0, 1.0, 1.0}), Status::pass);
   EXPECT_EQ(second_check(growing, {0.5, 0.5, 0.5}), Status::fail);
   EXPECT_EQ(second_check({103.0, 102.0, 101.0}, {0.1, 0.1, 0.1}), Status::pass);
+}
+
+Status settling_check(const std::vector<double>& measured) {
+  const CaseResult r = self_convergence_result("q", kSpacing, kExpected, measured, 0.10, "cpu");
+  EXPECT_EQ(r.checks.size(), 2u);
+  return r.checks.at(1).status;
+}
+
+// A limit 6 % off the expectation passes the first check at 10 % and the second when the changes
+// shrink, whatever the error against the expectation does; changes that grow fail.
+TEST(SelfConvergenceResult, TheValuesMustSettleAsTheSpacingShrinks) {
+  EXPECT_EQ(settling_check({110.0, 96.0, 94.5}), Status::pass);  // changes 14, 1.5
+  EXPECT_EQ(settling_check({94.0, 95.0, 97.0}), Status::fail);   // changes 1, 2
+  EXPECT_EQ(settling_check({94.0, 94.0, 94.0}), Status::pass);   // settled
+  EXPECT_EQ(settling_check({94.0, 94.0, 95.0}), Status::fail);   // moves only at the finest
+}
+
+TEST(SelfConvergenceResult, ReportsTheRichardsonLimit) {
+  // Changes 8 and 2 over a refinement ratio of 2: order 2, limit 94 - 2 / 3.
+  const CaseResult r = self_convergence_result("q", kSpacing, kExpected, {104.0, 96.0, 94.0}, 0.10, "cpu");
+  EXPECT_NE(r.details.find("apparent order 2.000000"), std::string::npos) << r.details;
+  EXPECT_NE(r.details.find("Richardson limit 93.333333"), std::string::npos) << r.details;
+  EXPECT_EQ(r.checks.at(0).status, Status::pass);
 }
 
 TEST(MeanAndStandardError, OfFourSamples) {
