@@ -22,6 +22,7 @@ CaseResult run_bar_vibration_case(const CaseContext& context);
 CaseResult run_cantilever_case(const CaseContext& context);
 CaseResult run_cantilever_frequency_case(const CaseContext& context);
 CaseResult run_hertz_case(const CaseContext& context);
+CaseResult run_hertz_impact_case(const CaseContext& context);
 CaseResult run_coupling_step_case(const CaseContext& context);
 CaseResult run_passivity_case(const CaseContext& context);
 

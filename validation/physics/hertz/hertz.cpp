@@ -14,25 +14,14 @@ namespace {
 
 using Eigen::Vector3d;
 
-// Points on concentric spheres of radii R - dx/2, R - 3 dx/2, ... about `centre`, each sphere
-// covered by a Fibonacci spiral at one point per dx^2 of its area; only points below z_max.
-std::vector<Vector3d> spherical_shells(const Vector3d& centre, double radius, double dx, double z_max) {
-  std::vector<Vector3d> points;
-  const double golden_angle = std::numbers::pi * (3.0 - std::sqrt(5.0));
-  for (double r = radius - 0.5 * dx; r > 0.0; r -= dx) {
-    const auto n = std::max<long>(1, std::lround(4.0 * std::numbers::pi * r * r / (dx * dx)));
-    for (long i = 0; i < n; ++i) {
-      const double z = 1.0 - (2.0 * static_cast<double>(i) + 1.0) / static_cast<double>(n);
-      const double rho = std::sqrt(1.0 - z * z);
-      const double phi = golden_angle * static_cast<double>(i);
-      const Vector3d p = centre + r * Vector3d(rho * std::cos(phi), rho * std::sin(phi), z);
-      if (p.z() <= z_max) points.push_back(p);
-    }
-  }
-  return points;
+const BodyConfig& body(const Scene& scene, const std::string& name) {
+  const BodyConfig* b = scene.find_body(name);
+  if (!b) throw std::runtime_error(scene.source_file + ": the Hertz scene needs a body \"" + name + "\"");
+  return *b;
 }
 
-// The setup with the particles of body `replaced` (a boundary) swapped for `points`.
+}  // namespace
+
 ParticleSetup with_body_particles(const ParticleSetup& in, std::size_t replaced, const std::vector<Vector3d>& points) {
   ParticleSetup out = in;
   out.position.clear();
@@ -62,13 +51,21 @@ ParticleSetup with_body_particles(const ParticleSetup& in, std::size_t replaced,
   return out;
 }
 
-const BodyConfig& body(const Scene& scene, const std::string& name) {
-  const BodyConfig* b = scene.find_body(name);
-  if (!b) throw std::runtime_error(scene.source_file + ": the Hertz scene needs a body \"" + name + "\"");
-  return *b;
+std::vector<Vector3d> spherical_shells(const Vector3d& centre, double radius, double dx, double z_max) {
+  std::vector<Vector3d> points;
+  const double golden_angle = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  for (double r = radius - 0.5 * dx; r > 0.0; r -= dx) {
+    const auto n = std::max<long>(1, std::lround(4.0 * std::numbers::pi * r * r / (dx * dx)));
+    for (long i = 0; i < n; ++i) {
+      const double z = 1.0 - (2.0 * static_cast<double>(i) + 1.0) / static_cast<double>(n);
+      const double rho = std::sqrt(1.0 - z * z);
+      const double phi = golden_angle * static_cast<double>(i);
+      const Vector3d p = centre + r * Vector3d(rho * std::cos(phi), rho * std::sin(phi), z);
+      if (p.z() <= z_max) points.push_back(p);
+    }
+  }
+  return points;
 }
-
-}  // namespace
 
 Indentation press_indenter(const Scene& scene, double speed, double deepest) {
   const double dx = scene.simulation.particle_spacing;

@@ -4,10 +4,23 @@
 // eq. 4.22): F = 4/3 E* sqrt(R) d^1.5 with E* = E / (1 - nu^2) for a rigid indenter, d the
 // indentation. Shared by the physics case and tests/deformable/hertz_contact_test.cpp.
 #include "config/scene.hpp"
+#include "model/particle_setup.hpp"
+
+#include <Eigen/Core>
 
 #include <vector>
 
 namespace mssph::validation {
+
+// Points on concentric spheres of radii R - dx/2, R - 3 dx/2, ... about `centre`, each sphere
+// covered by a Fibonacci spiral at one point per dx^2 of its area; only points below z_max. A
+// lattice ball's bottom is a flat facet, which acts as a flat punch; these shells are round.
+std::vector<Eigen::Vector3d> spherical_shells(const Eigen::Vector3d& centre, double radius, double dx, double z_max);
+
+// The setup with the particles of body `replaced` swapped for `points`, each taking the fields
+// of the body's first particle (a rigid body's rest offsets are the caller's to set).
+ParticleSetup with_body_particles(const ParticleSetup& in, std::size_t replaced,
+                                  const std::vector<Eigen::Vector3d>& points);
 
 struct Indentation {
   std::vector<double> depth;  // d: indenter travel beyond first geometric contact [m]
