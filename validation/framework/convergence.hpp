@@ -7,12 +7,6 @@
 //   kernel-sum errors do not vanish with dx, Quinlan et al. 2006), so p > 0 is the claim
 //   checked, and p itself is reported.
 // The errors at every spacing are in the series and the case's details.
-//
-// Where each measured value is the mean of runs that differ by noise only (standard_error given,
-// one per spacing, in the quantity's unit), the second check asks instead that the error at the
-// finest spacing exceed that at the coarsest by no more than twice their combined standard error:
-// refining does not make the error worse beyond what the noise explains. p is then reported in
-// the details, not checked (hydrostatic_slope's README says why).
 #include "framework/validation_case.hpp"
 
 #include <string>
@@ -22,8 +16,7 @@ namespace mssph::validation {
 
 CaseResult convergence_result(const std::string& quantity, const std::vector<double>& spacing,
                               const std::vector<double>& expected, const std::vector<double>& measured,
-                              double finest_tolerance, const std::string& backend,
-                              const std::vector<double>& standard_error = {});
+                              double finest_tolerance, const std::string& backend);
 
 // The result of a convergence case whose scheme converges to a limit that differs from the
 // expectation by more than its discretisation error at the spacings measured (a model error that

@@ -27,15 +27,6 @@ double observed_order(const std::vector<double>& spacing, const std::vector<doub
   return fit_line(lx, ly).second;
 }
 
-std::pair<double, double> mean_and_standard_error(const std::vector<double>& samples) {
-  const auto n = static_cast<double>(samples.size());
-  double mean = 0.0;
-  for (double x : samples) mean += x / n;
-  double squares = 0.0;
-  for (double x : samples) squares += (x - mean) * (x - mean);
-  return {mean, std::sqrt(squares / (n - 1.0) / n)};
-}
-
 double normalised_rms(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& reference) {
   double sum = 0.0;
   double scale = 0.0;

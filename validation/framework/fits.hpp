@@ -13,10 +13,6 @@ std::pair<double, double> fit_line(const std::vector<double>& x, const std::vect
 // Observed order of convergence: the slope of log(error) against log(spacing).
 double observed_order(const std::vector<double>& spacing, const std::vector<double>& error);
 
-// The mean of n >= 2 samples and its standard error: the samples' standard deviation (n - 1 in
-// the denominator) over sqrt(n).
-std::pair<double, double> mean_and_standard_error(const std::vector<double>& samples);
-
 // Root-mean-square difference of two series of vectors over the largest norm in the reference.
 double normalised_rms(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& reference);
 
