@@ -128,6 +128,25 @@ TEST_F(FigureCommand, Figure3RunsThreeDropsAndWritesItsChecks) {
   EXPECT_EQ(report["passed"], false);
 }
 
+// At 1 cm the deformable block's viscous stress needs the step shrunk with dx^2 (a quarter of
+// the scene's 2.5e-4 s); the other drops keep the scene's step.
+TEST_F(FigureCommand, Figure3FineShrinksTheDeformableStepWithTheSpacingSquared) {
+  const ProcessResult r =
+      start({"figure", "3", "--backend", "cpu", "--resolution", "fine", "--set", "simulation/duration=0.0005",
+             "--configs", MSSPH_SOURCE_DIR "/configs", "--out", work("fig3"), "-q"})
+          ->wait(std::chrono::minutes(10));
+  const auto step_of = [&](const std::string& medium) {
+    const std::string log = work("fig3/sphere_drop_") + medium + ".h5";
+    EXPECT_TRUE(fs::is_regular_file(log)) << r.err;
+    const nlohmann::json config =
+        nlohmann::json::parse(h5::read_string_attribute(open_read_only(log).id(), "config"));
+    return config["simulation"]["dt"].get<double>();
+  };
+  EXPECT_DOUBLE_EQ(step_of("deformable"), 6.25e-5);
+  EXPECT_DOUBLE_EQ(step_of("rigid"), 2.5e-4);
+  EXPECT_DOUBLE_EQ(step_of("fluid"), 2.5e-4);
+}
+
 TEST_F(FigureCommand, Figure3RejectsBadArgumentsBeforeRunning) {
   const std::vector<std::vector<std::string>> cases{
       {"--resolution", "medium"},
