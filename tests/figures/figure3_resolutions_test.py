@@ -43,6 +43,7 @@ class Summary(unittest.TestCase):
         row = summary(drop(0.02, 500.0, 0.05))
         self.assertAlmostEqual(row["peak_force"], 500.0, delta=0.5)
         self.assertAlmostEqual(row["contact_duration"], 0.05, delta=2 * DT)
+        self.assertAlmostEqual(row["peak_width"], 0.05 * 2 / 3, delta=2 * DT)  # sin > 1/2 over [1/6, 5/6]
         self.assertAlmostEqual(row["impact_speed"], 1.0)
         self.assertAlmostEqual(row["settled_speed_ratio"], 0.0)
         self.assertAlmostEqual(row["settled_support"], 1.0)
@@ -55,7 +56,7 @@ class Summary(unittest.TestCase):
         self.assertAlmostEqual(relative_change(rows, "peak_force"), -0.10, delta=2e-3)
         self.assertAlmostEqual(relative_change(rows, "contact_duration"), 0.20, delta=0.05)
         text = table({"deformable": rows})
-        self.assertIn("| deformable | -10.0 % |", text)
+        self.assertIn("| deformable | -10.0 % | +20.0 % |", text)
 
 
 if __name__ == "__main__":
