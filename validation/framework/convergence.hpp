@@ -24,10 +24,12 @@ CaseResult convergence_result(const std::string& quantity, const std::vector<dou
 // says nothing; the sequence's own convergence does (Roache, Verification and Validation in
 // Computational Science and Engineering, 1998, ch. 5). Checks:
 // - the value at the finest spacing within finest_tolerance of the expectation;
-// - the last change between successive spacings smaller than the first: the values settle as the
-//   particles get finer.
-// The details give the signed errors, the changes, the apparent order of the changes and the
-// Richardson-extrapolated limit.
+// - the last change of measured / expected between successive spacings no larger than the
+//   first: the values settle as the particles get finer (the ratio, since the expectation may
+//   move with the spacing).
+// The details give the signed errors, the changes, and over the three finest spacings the
+// apparent order and the Richardson-extrapolated limit (grid_convergence, fits.hpp). Needs three
+// spacings or more.
 CaseResult self_convergence_result(const std::string& quantity, const std::vector<double>& spacing,
                                    const std::vector<double>& expected, const std::vector<double>& measured,
                                    double finest_tolerance, const std::string& backend);
