@@ -1,8 +1,8 @@
 // Hertz impact (validation/physics/hertz_impact): a rigid sphere striking an elastic block, on the
 // cpu backend at the quick case's spacing (2 cm, maximum indentation 2 dx), against Hertz's
 // impact theory within the case's 15 %; the same measurement against a block taken as twice as
-// stiff as it is FAILs, so the checks tell materials apart. The theory's closed forms against
-// the numerical integration of its equation of motion.
+// stiff as it is FAILs, so the checks tell materials apart. Johnson's contact duration against
+// the numerical integration of the equation of motion.
 #include "physics/hertz_impact/hertz_impact.hpp"
 
 #include <gtest/gtest.h>
@@ -13,10 +13,9 @@ namespace mssph {
 namespace {
 
 // Johnson's duration 2.94 d* / V is the integral of m d'' = -K d^1.5 over the pulse, rounded.
-TEST(HertzImpact, ClosedFormsAgreeWithTheEquationOfMotion) {
+TEST(HertzImpact, JohnsonsDurationAgreesWithTheEquationOfMotion) {
   const validation::HertzImpact h = validation::hertz_impact(67.0, 0.5, 1.0e5, 1e-12);
   EXPECT_NEAR(h.duration_above / h.duration, 1.0, 2e-3);
-  EXPECT_NEAR(h.peak_force, 1.0e5 * std::pow(h.max_indentation, 1.5), 1e-9);
 }
 
 TEST(HertzImpact, SphereOnBlockFollowsHertzAndNotATwiceStifferBlock) {
@@ -33,7 +32,7 @@ TEST(HertzImpact, SphereOnBlockFollowsHertzAndNotATwiceStifferBlock) {
   EXPECT_GT(relative(m.max_indentation, planted.max_indentation), 0.15);
   EXPECT_GT(relative(m.peak_force, planted.peak_force), 0.15);
   EXPECT_GT(relative(m.duration_above, planted.duration_above), 0.15);
-  EXPECT_GT(m.rebound_speed, 0.0) << "the sphere must leave the block within the scene's duration";
+  EXPECT_TRUE(m.left_block) << "the sphere must leave the block within the scene's duration";
 }
 
 }  // namespace

@@ -81,7 +81,10 @@ HertzImpactMeasurement measure_hertz_impact(const std::string& backend_name, con
     m.indentation.push_back(indentation);
     m.rebound_speed = state.linear_momentum.z() / state.mass;
     // Done once the sphere moves up beyond the interaction's reach.
-    if (m.rebound_speed > 0.0 && indentation < -(lattice.smoothing_length - dx)) break;
+    if (m.rebound_speed > 0.0 && indentation < -(lattice.smoothing_length - dx)) {
+      m.left_block = true;
+      break;
+    }
   }
   m.max_indentation = *std::max_element(m.indentation.begin(), m.indentation.end());
   m.peak_force = *std::max_element(m.force.begin(), m.force.end());

@@ -36,6 +36,7 @@ struct HertzImpactMeasurement {
   double peak_force = 0.0;       // largest upward interaction force on the sphere [N]
   double duration_above = 0.0;   // time with that force above kPulseFraction of its peak [s]
   double rebound_speed = 0.0;    // upward speed at the end [m/s]
+  bool left_block = false;       // moving up beyond the interaction's reach before the duration ran out
   std::size_t particles = 0;
   std::vector<double> time;         // [s]
   std::vector<double> force;        // upward interaction force on the sphere [N]
