@@ -25,8 +25,9 @@ CHANGES = ("peak_force", "peak_width", "contact_duration")
 def summary(log):
     """The first impact (peak force [N], its full width at half maximum [s], contact duration [s],
     impact speed [m/s]) and the settled
-    state (RMS vertical speed over the last SETTLE_WINDOW over the impact speed, as Figure 3's
-    check; mean upward force there over the weight) of one drop."""
+    state (RMS vertical speed over the last SETTLE_WINDOW over the measured impact speed, where
+    Figure 3's check takes the free fall's sqrt(2 g h); mean upward force there over the weight)
+    of one drop. A sphere afloat has neither width nor duration: its force never falls back."""
     contact = first_contact(log)
     settled = log.settled(SETTLE_WINDOW)
     row = {"spacing": log.spacing, "peak_force": None, "peak_width": None, "contact_duration": None,
@@ -36,9 +37,10 @@ def summary(log):
         return row
     start, peak, end = contact
     impact_speed = float(-log.vz[:start + 1].min())
-    # A first contact that lasts to the end of the run (a floating sphere) has no duration.
-    duration = float(log.time[end] - log.time[start]) if end < len(log.time) - 1 else None
-    row.update(peak_force=float(log.fz[peak]), peak_width=float(peak_width(log, peak)), contact_duration=duration,
+    afloat = end == len(log.time) - 1  # the first contact lasts to the end of the run
+    duration = None if afloat else float(log.time[end] - log.time[start])
+    width = None if afloat else float(peak_width(log, peak))
+    row.update(peak_force=float(log.fz[peak]), peak_width=width, contact_duration=duration,
                impact_speed=impact_speed,
                settled_speed_ratio=float(np.sqrt(np.mean(log.vz[settled] ** 2)) / impact_speed))
     return row
@@ -68,7 +70,7 @@ def table(media):
     for medium, rows in media.items():
         changes = [relative_change(rows, key) for key in CHANGES]
         lines.append(f"| {medium} | " + " | ".join("-" if c is None else f"{100 * c:+.1f} %" for c in changes) + " |")
-    lines += ["", "A first contact that lasts to the end of the run (a sphere afloat) has no duration (-)."]
+    lines += ["", "A first contact that lasts to the end of the run (a sphere afloat) has no width or duration (-)."]
     return "\n".join(lines) + "\n"
 
 

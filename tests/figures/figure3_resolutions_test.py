@@ -48,8 +48,10 @@ class Summary(unittest.TestCase):
         self.assertAlmostEqual(row["settled_speed_ratio"], 0.0)
         self.assertAlmostEqual(row["settled_support"], 1.0)
 
-    def test_a_contact_that_never_ends_has_no_duration(self):
-        self.assertIsNone(summary(drop(0.02, 500.0, 0.05, afloat=True))["contact_duration"])
+    def test_a_contact_that_never_ends_has_no_width_or_duration(self):
+        row = summary(drop(0.02, 500.0, 0.05, afloat=True))
+        self.assertIsNone(row["contact_duration"])
+        self.assertIsNone(row["peak_width"])
 
     def test_changes_between_the_two_finest(self):
         rows = [summary(drop(s, p, c)) for s, p, c in ((0.04, 400.0, 0.08), (0.02, 500.0, 0.05), (0.01, 450.0, 0.06))]
