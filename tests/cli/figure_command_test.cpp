@@ -138,8 +138,7 @@ TEST_F(FigureCommand, Figure3FineShrinksTheDeformableStepWithTheSpacingSquared) 
   const auto step_of = [&](const std::string& medium) {
     const std::string log = work("fig3/sphere_drop_") + medium + ".h5";
     EXPECT_TRUE(fs::is_regular_file(log)) << r.err;
-    const nlohmann::json config =
-        nlohmann::json::parse(h5::read_string_attribute(open_read_only(log).id(), "config"));
+    const nlohmann::json config = nlohmann::json::parse(h5::read_string_attribute(open_read_only(log).id(), "config"));
     return config["simulation"]["dt"].get<double>();
   };
   EXPECT_DOUBLE_EQ(step_of("deformable"), 6.25e-5);

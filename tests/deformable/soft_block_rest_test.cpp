@@ -7,8 +7,8 @@
 //
 // Resolution: the CI spacing dx = 4 cm (h = 8 cm): the 20 cm sphere is 5 spacings in radius,
 // the block 5 layers deep. The sphere starts one spacing above the block's surface, and the
-// block is damped at 40 /s (instead of the scene's 5 /s) so that the sphere's bounce on the
-// block decays within the 0.6 s simulated; damping changes no equilibrium.
+// block is damped at 40 /s besides the scene's viscous modulus, so that the sphere's bounce on
+// the block decays within the 0.6 s simulated; damping changes no equilibrium.
 //
 // Run on the float32 cpu backend (which follows the reference on this scene within 2 %,
 // BackendAgreement.DeformableDropFollowsTheReference).

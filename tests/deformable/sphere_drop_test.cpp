@@ -1,7 +1,7 @@
 // The paper's Figure 3 deformable case, configs/sphere_drop_deformable.json at the CI spacing
 // (dx = 4 cm): a 20 cm sphere of 500 kg/m^3 dropped from 5 cm onto an elastic block glued to the
 // ground. The block must take the impact by compressing and push the sphere back up, and, being
-// passive (elastic, damped at 5 /s), never return more energy than the drop gave it.
+// passive (elastic, damped by its viscous modulus), never return more energy than the drop gave it.
 //
 // Run on the float32 cpu backend, whose path on this very scene follows the reference within 2 %
 // (BackendAgreement.DeformableDropFollowsTheReference): the reference would take minutes here.
