@@ -36,6 +36,8 @@ HertzImpact hertz_impact(double mass, double speed, double stiffness, double fra
   return out;
 }
 
+double hertz_impact_tolerance(double max_indentation, double dx) { return max_indentation > 3.0 * dx ? 0.15 : 0.30; }
+
 Scene hertz_impact_scene(double dx) {
   const Scene base = case_scene("physics/hertz_impact");
   const BodyConfig& sphere = *base.find_body("sphere");

@@ -47,6 +47,11 @@ struct HertzImpactMeasurement {
 // reaches h - dx beyond geometric contact, so the pulse has soft tails that Hertz's has not.
 constexpr double kPulseFraction = 0.05;
 
+// The case's tolerance on each of the three quantities: 15 % where the maximum indentation d*
+// spans more than three spacings (four at 1 cm), as resolved as this comparison asks; 30 % at
+// coarser spacings (two at 2 cm), where the interaction's reach h = 2 dx is d* itself.
+double hertz_impact_tolerance(double max_indentation, double dx);
+
 // Runs the scene on `backend_name` with the sphere re-sampled as spherical shells, until it has
 // left the block or `duration` is over.
 HertzImpactMeasurement measure_hertz_impact(const std::string& backend_name, const Scene& scene);

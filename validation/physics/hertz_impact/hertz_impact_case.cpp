@@ -18,8 +18,7 @@ CaseResult run_hertz_impact_case(const CaseContext& context) {
   for (const double dx : spacings) {
     const HertzImpactMeasurement m = measure_hertz_impact(context.physics_backend, hertz_impact_scene(dx));
     const HertzImpact hertz = hertz_impact(m.mass, m.speed, m.stiffness, kPulseFraction);
-    // 15 % at the finest spacing (the issue's); a coarser one is reported within 30 %.
-    const double tolerance = dx == spacings.back() ? 0.15 : 0.30;
+    const double tolerance = hertz_impact_tolerance(hertz.max_indentation, dx);
     const std::string label = "dx = " + exact(dx) + " m: ";
     result.checks.push_back(
         relative_check(label + "maximum indentation", "m", hertz.max_indentation, m.max_indentation, tolerance));
