@@ -27,7 +27,7 @@ class ViscousModulus : public ::testing::TestWithParam<std::string> {
   }
 };
 
-// dx = 1 cm, dt = 0.3 ms, eta = 40 Pa s: zeta about 0.022 over 6 periods. 15 %: the decrement
+// dx = 1 cm, dt = 0.3 ms, eta = 40 Pa s, 6 periods. 15 %: the decrement
 // fits 6 peaks of a mode that still carries a little of the release's higher modes.
 TEST_P(ViscousModulus, BarModeDecaysWithDampingRatioEtaOmegaOverTwoE) {
   const validation::ViscousBarMeasurement m =

@@ -86,4 +86,11 @@ Check skipped_check(std::string quantity, std::string reason) {
   return c;
 }
 
+std::optional<CaseResult> skipped_without_physics_backend(const CaseContext& context, std::string quantity) {
+  if (context.physics_backend_skip.empty()) return std::nullopt;
+  CaseResult skipped;
+  skipped.checks.push_back(skipped_check(std::move(quantity), context.physics_backend_skip));
+  return skipped;
+}
+
 }  // namespace mssph::validation

@@ -3,6 +3,7 @@
 // expected, measured, error, tolerance, PASS/FAIL/SKIPPED) and raw series for the plots.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,6 +67,10 @@ struct CaseContext {
   std::string work_dir;                    // where cases may write run logs (inside --out)
   bool replace_logs = false;               // --force: a case's run may replace an earlier log in work_dir
 };
+
+// A case that measures on the physics backend starts with this: when that backend cannot run
+// here (context.physics_backend_skip), its result is one SKIPPED check of `quantity`.
+std::optional<CaseResult> skipped_without_physics_backend(const CaseContext& context, std::string quantity);
 
 struct ValidationCase {
   std::string suite;   // "kernels", "physics", "convergence"

@@ -7,11 +7,7 @@
 namespace mssph::validation {
 
 CaseResult run_cantilever_convergence_case(const CaseContext& context) {
-  if (!context.physics_backend_skip.empty()) {
-    CaseResult skipped;
-    skipped.checks.push_back(skipped_check("tip deflection convergence", context.physics_backend_skip));
-    return skipped;
-  }
+  if (auto skipped = skipped_without_physics_backend(context, "tip deflection convergence")) return *skipped;
   // 4, 5, 6 (quick) or 6, 8, 10 particles across the 4 cm section. Past 10 across the float
   // backends' position rounding alone moves particles near the rest check's bound (README.md).
   const std::vector<double> spacing =

@@ -7,11 +7,7 @@
 namespace mssph::validation {
 
 CaseResult run_floating_convergence_case(const CaseContext& context) {
-  if (!context.physics_backend_skip.empty()) {
-    CaseResult skipped;
-    skipped.checks.push_back(skipped_check("floating depth convergence", context.physics_backend_skip));
-    return skipped;
-  }
+  if (auto skipped = skipped_without_physics_backend(context, "floating depth convergence")) return *skipped;
   // Not 4 or 5 cm: there the measurement finds no free-surface particle beyond the sphere's
   // meniscus (R + 2 dx from its axis) in the 36 cm tank.
   const std::vector<double> spacing =

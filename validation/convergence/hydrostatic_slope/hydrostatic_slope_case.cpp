@@ -6,11 +6,7 @@
 namespace mssph::validation {
 
 CaseResult run_hydrostatic_convergence_case(const CaseContext& context) {
-  if (!context.physics_backend_skip.empty()) {
-    CaseResult skipped;
-    skipped.checks.push_back(skipped_check("dP/dz convergence", context.physics_backend_skip));
-    return skipped;
-  }
+  if (auto skipped = skipped_without_physics_backend(context, "dP/dz convergence")) return *skipped;
   // Quick: 6, 8 and 10 particles across the 20 cm tank; coarser spacings leave fewer than 3
   // interior slabs between h above the floor and 2 h below the surface (README.md).
   const std::vector<double> spacing =

@@ -6,10 +6,7 @@ namespace mssph::validation {
 
 CaseResult run_cantilever_case(const CaseContext& context) {
   CaseResult result;
-  if (!context.physics_backend_skip.empty()) {
-    result.checks.push_back(skipped_check("tip deflection", context.physics_backend_skip));
-    return result;
-  }
+  if (auto skipped = skipped_without_physics_backend(context, "tip deflection")) return *skipped;
   const double dx = context.quick ? 0.01 : 0.005;  // 4 (the unit test's) or 8 particles across
   // The default gradient (kernel-gradient correction on); without it the loaded beam breaks up
   // (README.md, "Finding").

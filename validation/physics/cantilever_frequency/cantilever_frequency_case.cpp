@@ -6,10 +6,7 @@ namespace mssph::validation {
 
 CaseResult run_cantilever_frequency_case(const CaseContext& context) {
   CaseResult result;
-  if (!context.physics_backend_skip.empty()) {
-    result.checks.push_back(skipped_check("first bending frequency", context.physics_backend_skip));
-    return result;
-  }
+  if (auto skipped = skipped_without_physics_backend(context, "first bending frequency")) return *skipped;
   const double dx = context.quick ? 0.01 : 0.005;  // 4 or 8 particles across, as physics/cantilever
   const double periods = 5.0;
   // Kernel-gradient correction on: without it the undamped elastic scheme is not conservative

@@ -9,10 +9,7 @@ namespace mssph::validation {
 
 CaseResult run_hertz_impact_case(const CaseContext& context) {
   CaseResult result;
-  if (!context.physics_backend_skip.empty()) {
-    result.checks.push_back(skipped_check("Hertz impact", context.physics_backend_skip));
-    return result;
-  }
+  if (auto skipped = skipped_without_physics_backend(context, "Hertz impact")) return *skipped;
   // dx = 2 cm (--quick, d* = 2 dx) and 1 cm (full, d* = 4 dx).
   const std::vector<double> spacings = context.quick ? std::vector<double>{0.02} : std::vector<double>{0.02, 0.01};
   for (const double dx : spacings) {

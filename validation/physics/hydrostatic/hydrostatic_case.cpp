@@ -6,10 +6,7 @@ namespace mssph::validation {
 
 CaseResult run_hydrostatic_case(const CaseContext& context) {
   CaseResult result;
-  if (!context.physics_backend_skip.empty()) {
-    result.checks.push_back(skipped_check("dP/dz", context.physics_backend_skip));
-    return result;
-  }
+  if (auto skipped = skipped_without_physics_backend(context, "dP/dz")) return *skipped;
   Scene scene = case_scene("physics/hydrostatic");
   // --quick: the unit test's 0.02 m, where the 5 % was set (at 0.2/6 m the slope came out 10.5 %
   // steep: see README.md); full: 0.01 m.

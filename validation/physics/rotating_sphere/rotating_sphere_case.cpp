@@ -8,10 +8,7 @@ namespace mssph::validation {
 
 CaseResult run_rotating_sphere_case(const CaseContext& context) {
   CaseResult result;
-  if (!context.physics_backend_skip.empty()) {
-    result.checks.push_back(skipped_check("torque on the rotating sphere", context.physics_backend_skip));
-    return result;
-  }
+  if (auto skipped = skipped_without_physics_backend(context, "torque on the rotating sphere")) return *skipped;
   // Sphere radius R = 5 cm in spacings: --quick 4 (for 2 CPU cores), full 6 and 10.
   const std::vector<double> radii_in_spacings =
       context.quick ? std::vector<double>{4.0} : std::vector<double>{6.0, 10.0};

@@ -6,10 +6,7 @@ namespace mssph::validation {
 
 CaseResult run_torque_free_spin_case(const CaseContext& context) {
   CaseResult result;
-  if (!context.physics_backend_skip.empty()) {
-    result.checks.push_back(skipped_check("angular momentum", context.physics_backend_skip));
-    return result;
-  }
+  if (auto skipped = skipped_without_physics_backend(context, "angular momentum")) return *skipped;
   // 288 particles: the same in --quick and full.
   const SpinMeasurement m = measure_torque_free_spin(context.physics_backend, case_scene("physics/torque_free_spin"));
   const bool float64 = context.physics_backend == "reference";
