@@ -76,7 +76,7 @@ HertzImpactMeasurement measure_hertz_impact(const std::string& backend_name, con
   const std::size_t steps = steps_for(scene.simulation.duration, dt);
   for (std::size_t s = 1; s <= steps; ++s) {
     backend->step();
-    const BodyState state = backend->body_states()[sphere];
+    const BodyState state = backend->rigid_body_state(sphere);
     const double indentation = block_top + radius - state.centre_of_mass.z();
     m.time.push_back(static_cast<double>(s) * dt);
     m.force.push_back(state.interaction_force.z());
