@@ -19,6 +19,8 @@ const std::vector<ValidationCase>& all_cases() {
        run_archimedes_case},
       {"physics", "rotating_sphere", "physics/rotating_sphere",
        "viscous torque on a sphere turning in a closed cube vs Stokes, two viscosities", run_rotating_sphere_case},
+      {"physics", "dam_break", "physics/dam_break",
+       "surge front of a collapsing water column vs Martin and Moyce 1952, Koshizuka and Oka 1996", run_dam_break_case},
       {"physics", "torque_free_spin", "physics/torque_free_spin", "a tumbling box keeps its angular momentum",
        run_torque_free_spin_case},
       {"physics", "rotation_invariance", "physics/rotation_invariance",

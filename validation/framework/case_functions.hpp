@@ -14,6 +14,7 @@ CaseResult run_haptic_scenes_case(const CaseContext& context);
 // physics
 CaseResult run_hydrostatic_case(const CaseContext& context);
 CaseResult run_archimedes_case(const CaseContext& context);
+CaseResult run_dam_break_case(const CaseContext& context);
 CaseResult run_rotating_sphere_case(const CaseContext& context);
 CaseResult run_torque_free_spin_case(const CaseContext& context);
 CaseResult run_rotation_invariance_case(const CaseContext& context);

@@ -1,0 +1,85 @@
+// The dam-break comparison (validation/physics/dam_break): the surge comparison on known lines,
+// and the collapse on the reference backend against Martin and Moyce 1952, failing when the
+// water is made viscous.
+#include "physics/dam_break/dam_break.hpp"
+#include "physics/dam_break/experiments.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace mssph::testing {
+namespace {
+
+// A simulated front Z = 1 + s (T - T0), sampled finely, against the experiment's points on
+// Z = 1 + 1.3 (T - 0.2).
+validation::SurgeComparison compare_line(double speed, double start) {
+  std::vector<double> T;
+  std::vector<double> Z;
+  for (double t = 0.0; t <= 4.0; t += 0.01) {
+    T.push_back(t);
+    Z.push_back(1.0 + speed * std::max(0.0, t - start));
+  }
+  std::vector<double> experiment_T;
+  std::vector<double> experiment_Z;
+  for (double t = 0.2; t <= 3.0; t += 0.25) {
+    experiment_T.push_back(t);
+    experiment_Z.push_back(1.0 + 1.3 * (t - 0.2));
+  }
+  return validation::compare_surge(T, Z, experiment_T, experiment_Z, 1.5, 3.5);
+}
+
+TEST(DamBreak, SurgeComparisonAlignsTheReleaseAndMeasuresTheSpeed) {
+  const validation::SurgeComparison same = compare_line(1.3, 0.0);
+  EXPECT_NEAR(same.speed, 1.3, 1e-9);
+  EXPECT_NEAR(same.expected_speed, 1.3, 1e-9);
+  EXPECT_NEAR(same.offset, 0.2, 1e-9);  // released 0.2 later in the experiment
+  EXPECT_LT(same.largest_deviation, 1e-9);
+  EXPECT_EQ(same.compared_points, 6u);  // Z from 1.65 to 3.275
+
+  const validation::SurgeComparison slow = compare_line(1.0, 0.0);
+  EXPECT_NEAR(slow.speed, 1.0, 1e-9);
+  EXPECT_GT(slow.largest_deviation, 0.1);  // 2.865 where the experiment reaches 3.275: 12.5 %
+}
+
+struct Collapse {
+  validation::SurgeComparison surge;
+  double largest_height_deviation = 0.0;
+};
+
+// The case's checks at a = 10 dx (coarser than the case's, for the suite's time).
+Collapse collapse(const std::vector<std::string>& overrides) {
+  const double dx = 0.146 / 10.0;
+  const validation::DamBreakMeasurement m =
+      validation::measure_dam_break("reference", validation::dam_break_scene(dx, overrides), 0.002);
+  std::vector<double> T, Z, tau, H;
+  for (std::size_t k = 0; k < m.time.size(); ++k) {
+    T.push_back(m.time[k] * std::sqrt(2.0 * m.gravity / m.width));
+    Z.push_back(m.front[k] / m.width);
+    tau.push_back(m.time[k] * std::sqrt(m.gravity / m.width));
+    H.push_back(m.column[k] / m.height);
+  }
+  const validation::DamBreakExperiment& experiment = validation::martin_moyce_1952();
+  Collapse c;
+  c.surge = validation::compare_surge(T, Z, experiment.front_time, experiment.front, 1.5, 3.5);
+  for (std::size_t k = 0; k < experiment.height_time.size() && experiment.height_time[k] <= tau.back(); ++k)
+    c.largest_height_deviation =
+        std::max(c.largest_height_deviation,
+                 std::abs(validation::interpolate(tau, H, experiment.height_time[k]) / experiment.height[k] - 1.0));
+  return c;
+}
+
+// Water (1 mPa s) collapses as in the experiment, within the case's 10 %; the same column as
+// viscous as honey, 10 Pa s (the planted error), surges more slowly than the experiment.
+TEST(DamBreak, WaterColumnCollapsesAsMartinAndMoyceMeasuredAndAViscousOneDoesNot) {
+  const Collapse water = collapse({});
+  EXPECT_NEAR(water.surge.speed, water.surge.expected_speed, 0.10 * water.surge.expected_speed);
+  EXPECT_LT(water.surge.largest_deviation, 0.10);
+  EXPECT_LT(water.largest_height_deviation, 0.10);
+
+  const Collapse honey = collapse({"materials/water/viscosity=10"});
+  EXPECT_LT(honey.surge.speed, 0.90 * honey.surge.expected_speed);
+}
+
+}  // namespace
+}  // namespace mssph::testing

@@ -1,0 +1,81 @@
+// Physics case: a collapsing water column's surge front and height against experiments
+// (README.md beside this file).
+#include "framework/case_functions.hpp"
+#include "physics/dam_break/dam_break.hpp"
+#include "physics/dam_break/experiments.hpp"
+
+#include <cmath>
+
+namespace mssph::validation {
+
+namespace {
+
+// The surge compared: from where the front has moved half a column width to half a column width
+// short of the far wall (README.md says why).
+constexpr double kFirstFront = 1.5;
+constexpr double kLastFront = 3.5;
+
+std::string comparison_text(const SurgeComparison& c) {
+  return "speed dZ/dT " + exact(c.speed) + " (experiment " + exact(c.expected_speed) + "), time offset " +
+         exact(c.offset) + ", largest front deviation " + exact(c.largest_deviation) + " over " +
+         std::to_string(c.compared_points) + " points";
+}
+
+}  // namespace
+
+CaseResult run_dam_break_case(const CaseContext& context) {
+  CaseResult result;
+  if (auto skipped = skipped_without_physics_backend(context, "surge front")) return *skipped;
+  // The column's width a = 14.6 cm in spacings: --quick 20 (for 2 CPU cores), full 20, 40 and 80.
+  const std::vector<int> widths = context.quick ? std::vector<int>{20} : std::vector<int>{20, 40, 80};
+  const DamBreakExperiment& primary = martin_moyce_1952();
+  const DamBreakExperiment& second = koshizuka_oka_1996();
+  for (const int spacings : widths) {
+    const double dx = 0.146 / spacings;
+    const DamBreakMeasurement m = measure_dam_break(context.physics_backend, dam_break_scene(dx), 0.002);
+    const double front_time_scale = std::sqrt(2.0 * m.gravity / m.width);  // T = t sqrt(2 g / a)
+    const double height_time_scale = std::sqrt(m.gravity / m.width);       // tau = t sqrt(g / a)
+    std::vector<double> T, Z, tau, H;
+    for (std::size_t k = 0; k < m.time.size(); ++k) {
+      T.push_back(m.time[k] * front_time_scale);
+      Z.push_back(m.front[k] / m.width);
+      tau.push_back(m.time[k] * height_time_scale);
+      H.push_back(m.column[k] / m.height);
+    }
+    const std::string label = "a = " + std::to_string(spacings) + " dx: ";
+    const SurgeComparison surge = compare_surge(T, Z, primary.front_time, primary.front, kFirstFront, kLastFront);
+    result.checks.push_back(
+        relative_check(label + "surge speed dZ/dT, Z in [1.5, 3.5]", "-", surge.expected_speed, surge.speed, 0.10));
+    result.checks.push_back(
+        bound_check(label + "largest |Z / Z_exp - 1|, release times aligned", "-", surge.largest_deviation, 0.10));
+    double largest_height_deviation = 0.0;
+    for (std::size_t k = 0; k < primary.height_time.size() && primary.height_time[k] <= tau.back(); ++k) {
+      const double simulated = interpolate(tau, H, primary.height_time[k]);
+      largest_height_deviation = std::max(largest_height_deviation, std::abs(simulated / primary.height[k] - 1.0));
+    }
+    result.checks.push_back(
+        bound_check(label + "largest |H / H_exp - 1| at the wall", "-", largest_height_deviation, 0.10));
+    const SurgeComparison other = compare_surge(T, Z, second.front_time, second.front, kFirstFront, kLastFront);
+    result.details += label + primary.source + ": " + comparison_text(surge) + ". " + second.source +
+                      " (not checked, README.md): " + comparison_text(other) + ". " + std::to_string(m.particles) +
+                      " particles.\n";
+    result.series.push_back({"front_a" + std::to_string(spacings), "T = t sqrt(2 g / a)", T, {{"front Z = x / a", Z}}});
+    result.series.push_back(
+        {"height_a" + std::to_string(spacings), "tau = t sqrt(g / a)", tau, {{"height at the wall H / 2a", H}}});
+  }
+  for (const DamBreakExperiment* experiment : {&primary, &second})
+    result.series.push_back({"front " + experiment->source,
+                             "T = t sqrt(2 g / a)",
+                             experiment->front_time,
+                             {{"front Z = x / a", experiment->front}}});
+  result.series.push_back({"height " + primary.source,
+                           "tau = t sqrt(g / a)",
+                           primary.height_time,
+                           {{"height at the wall H / 2a", primary.height}}});
+  result.resolution =
+      context.quick ? "a = 20 dx (dx = 7.3 mm), slab a / 2 thick" : "a = 20, 40 and 80 dx, slab a / 2 thick";
+  for (Check& c : result.checks) c.backend = context.physics_backend;
+  return result;
+}
+
+}  // namespace mssph::validation
