@@ -17,6 +17,8 @@ const std::vector<ValidationCase>& all_cases() {
        run_hydrostatic_case},
       {"physics", "archimedes", "physics/archimedes", "floating depth of spheres of density 500 and 700 in water",
        run_archimedes_case},
+      {"physics", "shear_decay", "physics/shear_decay",
+       "viscous decay of a shear wave in a free block vs Stokes' solution", run_shear_decay_case},
       {"physics", "rotating_sphere", "physics/rotating_sphere",
        "viscous torque on a sphere turning in a closed cube vs Stokes, two viscosities", run_rotating_sphere_case},
       {"physics", "dam_break", "physics/dam_break",

@@ -15,6 +15,7 @@ CaseResult run_haptic_scenes_case(const CaseContext& context);
 CaseResult run_hydrostatic_case(const CaseContext& context);
 CaseResult run_archimedes_case(const CaseContext& context);
 CaseResult run_dam_break_case(const CaseContext& context);
+CaseResult run_shear_decay_case(const CaseContext& context);
 CaseResult run_rotating_sphere_case(const CaseContext& context);
 CaseResult run_torque_free_spin_case(const CaseContext& context);
 CaseResult run_rotation_invariance_case(const CaseContext& context);
