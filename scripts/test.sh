@@ -27,7 +27,7 @@ stage_done "benchmark gate"
 # fails 5 % more work.
 scripts/bench_gate_proof.sh
 stage_done "benchmark gate proof"
-# Every quick case but three: physics/rotating_sphere, where the paper's eq. 3 gives a third to a half
+# Every quick case but three: physics/rotating_sphere, where the paper's eq. 3 gives half
 # of Kirchhoff's torque, a finding of the model that the case reports as FAIL (its README.md says
 # why); and physics/hertz and physics/hertz_impact, whose quick measurements the suite runs
 # already, at the same resolution (deformable_hertz_test, deformable_hertz_impact_test).

@@ -22,7 +22,9 @@ std::vector<Eigen::Vector3d> sites_clear_of(const std::vector<Eigen::Vector3d>& 
   };
   std::unordered_map<Eigen::Vector3i, std::vector<std::size_t>, CellHash> cells;
   for (std::size_t j = 0; j < others.size(); ++j) cells[cell_of(others[j])].push_back(j);
-  const double distance_squared = distance * distance;
+  // A site exactly `distance` from another body's site continues the lattice and stays, whatever
+  // the rounding of the two lattices' positions.
+  const double distance_squared = distance * distance * (1.0 - 1e-9);
   std::vector<Eigen::Vector3d> clear;
   for (const Eigen::Vector3d& x : candidates) {
     const Eigen::Vector3i c = cell_of(x);

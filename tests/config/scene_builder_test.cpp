@@ -321,6 +321,32 @@ TEST(SceneBuilder, FluidFillingAroundABodyLeavesOutTheSitesWithinASpacing) {
   EXPECT_EQ(filled.bodies[0].count, ball_alone.bodies[0].count);
 }
 
+// A sphere centred on a site of the fluid's lattice (a box of 15 cells a side centred on the
+// origin has its sites at multiples of dx, as a sphere centred there has) is sampled on the
+// fluid's own lattice: the fluid sites exactly one spacing from its particles stay, so the fluid
+// meets it at one spacing, as inside the fluid.
+TEST(SceneBuilder, FluidFillingAroundABodyOnItsLatticeKeepsTheSitesOneSpacingAway) {
+  const json ball = body("rigid", {{"type", "sphere"}, {"radius", 0.05}});
+  json water = body("fluid", box({0.3, 0.3, 0.3}));
+  const ParticleSetup alone = build_particles(scene_of({{"water", water}}));
+  water["fill_around_bodies"] = true;
+  const ParticleSetup filled = build_particles(scene_of({{"water", water}, {"ball", ball}}));
+  ASSERT_EQ(filled.bodies[1].name, "water");
+  const std::vector<Vector3d> ball_sites = positions_of(filled, filled.bodies[0]);
+  const auto sites_one_spacing_away = [&](const std::vector<Vector3d>& sites) {
+    std::size_t count = 0;
+    for (const Vector3d& x : sites) {
+      double nearest = 1e9;
+      for (const Vector3d& y : ball_sites) nearest = std::min(nearest, (x - y).norm());
+      if (std::abs(nearest - kDx) < 1e-6 * kDx) ++count;
+    }
+    return count;
+  };
+  const std::size_t on_the_lattice = sites_one_spacing_away(positions_of(alone, alone.bodies[0]));
+  ASSERT_GT(on_the_lattice, 0u);
+  EXPECT_EQ(sites_one_spacing_away(positions_of(filled, filled.bodies[1])), on_the_lattice);
+}
+
 TEST(SceneBuilder, FillAroundBodiesIsAFluidKey) {
   json block = body("rigid", box({0.1, 0.1, 0.1}));
   block["fill_around_bodies"] = true;
