@@ -4,6 +4,7 @@
 #include "backend_support.hpp"
 #include "config/input_file.hpp"
 #include "config/scene_loader.hpp"
+#include "crowded_start.hpp"
 #include "haptics/haptics_run.hpp"
 #include "interrupt.hpp"
 #include "io/output_claim.hpp"
@@ -398,6 +399,7 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   }
   std::vector<std::string> warnings = stability_warnings(setup);
   for (std::string& w : haptic_warnings(scene, setup)) warnings.push_back(std::move(w));
+  for (std::string& w : crowded_start_warnings(setup, scene.simulation.jitter)) warnings.push_back(std::move(w));
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
 
   if (!request.quiet) {
