@@ -33,7 +33,7 @@ stage_done "benchmark gate proof"
 # already, at the same resolution (deformable_hertz_test, deformable_hertz_impact_test).
 ./build/mssph validate --quick --out build/validate-quick \
   --case one_step --case sphere_drops --case haptic_scenes \
-  --case hydrostatic --case archimedes --case dam_break --case shear_decay --case torque_free_spin --case rotation_invariance --case patch_tests \
+  --case hydrostatic --case archimedes --case dam_break --case shear_decay --case plate_shear --case torque_free_spin --case rotation_invariance --case patch_tests \
   --case bar_vibration --case cantilever --case cantilever_frequency --case coupling_step \
   --case passivity \
   --case hydrostatic_slope --case floating_depth --case cantilever_deflection

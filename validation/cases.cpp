@@ -19,6 +19,8 @@ const std::vector<ValidationCase>& all_cases() {
        run_archimedes_case},
       {"physics", "shear_decay", "physics/shear_decay",
        "viscous decay of a shear wave in a free block vs Stokes' solution", run_shear_decay_case},
+      {"physics", "plate_shear", "physics/plate_shear",
+       "drag of an impulsively started plate under a fluid layer vs Stokes' first problem", run_plate_shear_case},
       {"physics", "rotating_sphere", "physics/rotating_sphere",
        "viscous torque on a sphere turning in a closed cube vs Stokes, two viscosities", run_rotating_sphere_case},
       {"physics", "dam_break", "physics/dam_break",
