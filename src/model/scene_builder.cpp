@@ -1,5 +1,6 @@
 #include "scene_builder.hpp"
 
+#include "cell_buckets.hpp"
 #include "fluid_fill.hpp"
 #include "lattice.hpp"
 #include "model/lattice_calibration.hpp"
@@ -9,7 +10,6 @@
 #include <cmath>
 #include <random>
 #include <sstream>
-#include <unordered_map>
 
 namespace mssph {
 namespace {
@@ -40,43 +40,26 @@ void set_rigid_mass_properties(BodySetup& body, const std::vector<Vector3d>& wor
 // particle of one body inside (or on the boundary of) a cube of another body means their volumes
 // overlap by half a spacing or more, e.g. a ball placed inside a block whatever the offset of
 // their lattices: such a start state would explode at the first step. Tested on the lattice sites
-// before jitter; a hash grid of cell size dx keeps this linear.
+// before jitter; cell buckets of side dx keep this linear.
 void check_overlaps(const Scene& scene, const ParticleSetup& setup, const std::vector<Vector3d>& site) {
   const double dx = setup.spacing;
   const double half = 0.5 * dx * (1.0 + 1e-9);  // boundary included: interleaved lattices overlap
-  struct KeyHash {
-    std::size_t operator()(const Eigen::Vector3i& c) const {
-      return (static_cast<std::size_t>(c.x()) * 73856093u) ^ (static_cast<std::size_t>(c.y()) * 19349663u) ^
-             (static_cast<std::size_t>(c.z()) * 83492791u);
-    }
-  };
-  std::unordered_map<Eigen::Vector3i, std::vector<std::size_t>, KeyHash> cells;
-  const auto cell_of = [&](const Vector3d& x) { return Eigen::Vector3i((x / dx).array().floor().cast<int>()); };
-  for (std::size_t i = 0; i < setup.size(); ++i) cells[cell_of(site[i])].push_back(i);
+  const CellBuckets buckets(site, dx);
   std::vector<Eigen::Matrix3d> to_body_frame;
   for (const BodySetup& b : setup.bodies) to_body_frame.push_back(b.orientation.toRotationMatrix().transpose());
   for (std::size_t i = 0; i < setup.size(); ++i) {
-    const Eigen::Vector3i c = cell_of(site[i]);
-    for (int dz = -1; dz <= 1; ++dz) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dxc = -1; dxc <= 1; ++dxc) {
-          const auto it = cells.find(c + Eigen::Vector3i(dxc, dy, dz));
-          if (it == cells.end()) continue;
-          for (std::size_t j : it->second) {
-            if (setup.body[j] == setup.body[i]) continue;
-            const Vector3d offset = to_body_frame[setup.body[j]] * (site[i] - site[j]);
-            if (offset.cwiseAbs().maxCoeff() > half) continue;
-            const std::string& a = setup.bodies[setup.body[std::min(i, j)]].name;
-            const std::string& b = setup.bodies[setup.body[std::max(i, j)]].name;
-            std::ostringstream where;
-            where << "[" << site[i].x() << ", " << site[i].y() << ", " << site[i].z() << "]";
-            throw InputError(scene.source_file + ": /bodies/" + b + "/position: bodies \"" + a + "\" and \"" + b +
-                             "\" overlap near " + where.str() + " m (their particles' cells of side " +
-                             std::to_string(dx) + " m intersect by half a spacing or more); move them apart");
-          }
-        }
-      }
-    }
+    buckets.visit_near(site[i], [&](std::size_t j) {
+      if (setup.body[j] == setup.body[i]) return true;
+      const Vector3d offset = to_body_frame[setup.body[j]] * (site[i] - site[j]);
+      if (offset.cwiseAbs().maxCoeff() > half) return true;
+      const std::string& a = setup.bodies[setup.body[std::min(i, j)]].name;
+      const std::string& b = setup.bodies[setup.body[std::max(i, j)]].name;
+      std::ostringstream where;
+      where << "[" << site[i].x() << ", " << site[i].y() << ", " << site[i].z() << "]";
+      throw InputError(scene.source_file + ": /bodies/" + b + "/position: bodies \"" + a + "\" and \"" + b +
+                       "\" overlap near " + where.str() + " m (their particles' cells of side " + std::to_string(dx) +
+                       " m intersect by half a spacing or more); move them apart");
+    });
   }
 }
 
