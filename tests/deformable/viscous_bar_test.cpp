@@ -27,7 +27,7 @@ class ViscousModulus : public ::testing::TestWithParam<std::string> {
   }
 };
 
-// dx = 1 cm, dt = 0.3 ms, eta = 40 Pa s, 6 periods. 15 %: the decrement
+// The bar at dx = 1 cm, dt = 3e-4 s and eta = 40 Pa s, over 6 periods. 15 %: the decrement
 // fits 6 peaks of a mode that still carries a little of the release's higher modes.
 TEST_P(ViscousModulus, BarModeDecaysWithDampingRatioEtaOmegaOverTwoE) {
   const validation::ViscousBarMeasurement m =
