@@ -69,6 +69,31 @@ DamBreakMeasurement measure_dam_break(const std::string& backend_name, const Sce
   return m;
 }
 
+NondimensionalCollapse nondimensional(const DamBreakMeasurement& m) {
+  const double front_time_scale = std::sqrt(2.0 * m.gravity / m.width);
+  const double height_time_scale = std::sqrt(m.gravity / m.width);
+  NondimensionalCollapse c;
+  for (std::size_t k = 0; k < m.time.size(); ++k) {
+    c.T.push_back(m.time[k] * front_time_scale);
+    c.Z.push_back(m.front[k] / m.width);
+    c.tau.push_back(m.time[k] * height_time_scale);
+    c.H.push_back(m.column[k] / m.height);
+  }
+  return c;
+}
+
+SurgeComparison compare_surge(const NondimensionalCollapse& c, const DamBreakExperiment& experiment) {
+  return compare_surge(c.T, c.Z, experiment.front_time, experiment.front, kSurgeFirstFront, kSurgeLastFront);
+}
+
+double largest_height_deviation(const NondimensionalCollapse& c, const DamBreakExperiment& experiment) {
+  double largest = 0.0;
+  for (std::size_t k = 0; k < experiment.height_time.size() && experiment.height_time[k] <= c.tau.back(); ++k)
+    largest =
+        std::max(largest, std::abs(interpolate(c.tau, c.H, experiment.height_time[k]) / experiment.height[k] - 1.0));
+  return largest;
+}
+
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
   const auto upper = std::upper_bound(xs.begin(), xs.end(), x);
   if (upper == xs.begin()) return ys.front();

@@ -3,6 +3,7 @@
 // compared with an experiment in non-dimensional form. Shared by dam_break_case.cpp and
 // tests/reference/dam_break_test.cpp.
 #include "config/scene.hpp"
+#include "physics/dam_break/experiments.hpp"
 
 #include <string>
 #include <vector>
@@ -44,6 +45,24 @@ struct SurgeComparison {
 SurgeComparison compare_surge(const std::vector<double>& T, const std::vector<double>& Z,
                               const std::vector<double>& experiment_T, const std::vector<double>& experiment_Z,
                               double first_front, double last_front);
+
+// The measurement in the experiments' variables: T = t sqrt(2 g / a), Z = x / a,
+// tau = t sqrt(g / a) and H / 2a.
+struct NondimensionalCollapse {
+  std::vector<double> T, Z, tau, H;
+};
+NondimensionalCollapse nondimensional(const DamBreakMeasurement& m);
+
+// The surge compared: from where the front has moved half a column width to half a column width
+// short of the far wall (README.md says why).
+inline constexpr double kSurgeFirstFront = 1.5;
+inline constexpr double kSurgeLastFront = 3.5;
+
+// compare_surge over that range, against the experiment's front.
+SurgeComparison compare_surge(const NondimensionalCollapse& c, const DamBreakExperiment& experiment);
+
+// The largest |H / H_exp - 1| over the experiment's heights within the simulated times.
+double largest_height_deviation(const NondimensionalCollapse& c, const DamBreakExperiment& experiment);
 
 // y at x by linear interpolation in the increasing samples xs, held constant beyond them.
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x);

@@ -2,18 +2,10 @@
 // (README.md beside this file).
 #include "framework/case_functions.hpp"
 #include "physics/dam_break/dam_break.hpp"
-#include "physics/dam_break/experiments.hpp"
-
-#include <cmath>
 
 namespace mssph::validation {
 
 namespace {
-
-// The surge compared: from where the front has moved half a column width to half a column width
-// short of the far wall (README.md says why).
-constexpr double kFirstFront = 1.5;
-constexpr double kLastFront = 3.5;
 
 std::string comparison_text(const SurgeComparison& c) {
   return "speed dZ/dT " + exact(c.speed) + " (experiment " + exact(c.expected_speed) + "), time offset " +
@@ -33,35 +25,23 @@ CaseResult run_dam_break_case(const CaseContext& context) {
   for (const int spacings : widths) {
     const double dx = 0.146 / spacings;
     const DamBreakMeasurement m = measure_dam_break(context.physics_backend, dam_break_scene(dx), 0.002);
-    const double front_time_scale = std::sqrt(2.0 * m.gravity / m.width);  // T = t sqrt(2 g / a)
-    const double height_time_scale = std::sqrt(m.gravity / m.width);       // tau = t sqrt(g / a)
-    std::vector<double> T, Z, tau, H;
-    for (std::size_t k = 0; k < m.time.size(); ++k) {
-      T.push_back(m.time[k] * front_time_scale);
-      Z.push_back(m.front[k] / m.width);
-      tau.push_back(m.time[k] * height_time_scale);
-      H.push_back(m.column[k] / m.height);
-    }
+    const NondimensionalCollapse c = nondimensional(m);
     const std::string label = "a = " + std::to_string(spacings) + " dx: ";
-    const SurgeComparison surge = compare_surge(T, Z, primary.front_time, primary.front, kFirstFront, kLastFront);
+    const SurgeComparison surge = compare_surge(c, primary);
     result.checks.push_back(
         relative_check(label + "surge speed dZ/dT, Z in [1.5, 3.5]", "-", surge.expected_speed, surge.speed, 0.10));
     result.checks.push_back(
         bound_check(label + "largest |Z / Z_exp - 1|, release times aligned", "-", surge.largest_deviation, 0.10));
-    double largest_height_deviation = 0.0;
-    for (std::size_t k = 0; k < primary.height_time.size() && primary.height_time[k] <= tau.back(); ++k) {
-      const double simulated = interpolate(tau, H, primary.height_time[k]);
-      largest_height_deviation = std::max(largest_height_deviation, std::abs(simulated / primary.height[k] - 1.0));
-    }
     result.checks.push_back(
-        bound_check(label + "largest |H / H_exp - 1| at the wall", "-", largest_height_deviation, 0.10));
-    const SurgeComparison other = compare_surge(T, Z, second.front_time, second.front, kFirstFront, kLastFront);
+        bound_check(label + "largest |H / H_exp - 1| at the wall", "-", largest_height_deviation(c, primary), 0.10));
+    const SurgeComparison other = compare_surge(c, second);
     result.details += label + primary.source + ": " + comparison_text(surge) + ". " + second.source +
                       " (not checked, README.md): " + comparison_text(other) + ". " + std::to_string(m.particles) +
                       " particles.\n";
-    result.series.push_back({"front_a" + std::to_string(spacings), "T = t sqrt(2 g / a)", T, {{"front Z = x / a", Z}}});
     result.series.push_back(
-        {"height_a" + std::to_string(spacings), "tau = t sqrt(g / a)", tau, {{"height at the wall H / 2a", H}}});
+        {"front_a" + std::to_string(spacings), "T = t sqrt(2 g / a)", c.T, {{"front Z = x / a", c.Z}}});
+    result.series.push_back(
+        {"height_a" + std::to_string(spacings), "tau = t sqrt(g / a)", c.tau, {{"height at the wall H / 2a", c.H}}});
   }
   for (const DamBreakExperiment* experiment : {&primary, &second})
     result.series.push_back({"front " + experiment->source,
