@@ -2,6 +2,7 @@
 
 #include "config/scene_loader.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -26,6 +27,14 @@ std::string exact(double x) {
 
 std::vector<std::string> resolution_overrides(const Scene& scene, double dx) {
   const double dt = scene.simulation.dt * dx / scene.simulation.particle_spacing;
+  return {"simulation/particle_spacing=" + exact(dx), "simulation/dt=" + exact(dt)};
+}
+
+std::vector<std::string> viscous_resolution_overrides(const Scene& scene, double dx, double rest_density,
+                                                      double viscosity) {
+  const double h = 2.0 * dx;
+  const double viscous_dt = 0.8 * 0.125 * h * h * rest_density / viscosity;
+  const double dt = std::min(scene.simulation.dt * dx / scene.simulation.particle_spacing, viscous_dt);
   return {"simulation/particle_spacing=" + exact(dx), "simulation/dt=" + exact(dt)};
 }
 

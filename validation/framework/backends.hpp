@@ -27,6 +27,11 @@ Scene case_scene(const std::string& folder, const std::vector<std::string>& over
 // and elastic bounds of stability.cpp are proportional to h = 2 dx).
 std::vector<std::string> resolution_overrides(const Scene& scene, double dx);
 
+// The same for a viscous scene: the step also at most 0.8 of the viscous bound
+// 0.125 h^2 rho0 / mu (stability.cpp), which shrinks with dx^2, at h = 2 dx.
+std::vector<std::string> viscous_resolution_overrides(const Scene& scene, double dx, double rest_density,
+                                                      double viscosity);
+
 // A number as --set writes it, to full double precision.
 std::string exact(double x);
 

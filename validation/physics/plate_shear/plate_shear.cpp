@@ -17,13 +17,10 @@ Scene plate_shear_scene(double dx, double viscosity, const std::vector<std::stri
   const BodyConfig& fluid = *base.find_body("fluid");
   const double rho = fluid.material.rest_density;
   const double height = fluid.shape.size.z();
-  const double h = 2.0 * dx;
-  const double acoustic_dt = base.simulation.dt * dx / base.simulation.particle_spacing;
-  const double viscous_dt = 0.8 * 0.125 * h * h * rho / viscosity;
-  std::vector<std::string> all{
-      "simulation/particle_spacing=" + exact(dx), "simulation/dt=" + exact(std::min(acoustic_dt, viscous_dt)),
-      "simulation/duration=" + exact(height * height * rho / (16.0 * viscosity)),
-      "materials/fluid/viscosity=" + exact(viscosity), "materials/plate/viscosity=" + exact(viscosity)};
+  std::vector<std::string> all = viscous_resolution_overrides(base, dx, rho, viscosity);
+  all.push_back("simulation/duration=" + exact(height * height * rho / (16.0 * viscosity)));
+  all.push_back("materials/fluid/viscosity=" + exact(viscosity));
+  all.push_back("materials/plate/viscosity=" + exact(viscosity));
   all.insert(all.end(), overrides.begin(), overrides.end());
   return case_scene("physics/plate_shear", all);
 }

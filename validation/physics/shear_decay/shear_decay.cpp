@@ -53,18 +53,16 @@ Scene shear_decay_scene(double dx, double viscosity, double decay_times) {
   const Block b = block_of(base);
   const double rho = base.find_body("lower")->material.rest_density;
   const double k = std::numbers::pi / b.height;
-  const double h = 2.0 * dx;
-  const double acoustic_dt = base.simulation.dt * dx / base.simulation.particle_spacing;
-  const double viscous_dt = 0.8 * 0.125 * h * h * rho / viscosity;
   const double duration = decay_times * rho / (viscosity * k * k);
   // U = L nu k^2 / 100: over any time the halves slide past each other by less than
   // 2 U / (nu k^2) = L / 50, so the block keeps its shape.
   const double speed = b.height * viscosity / rho * k * k / 100.0;
-  return case_scene(
-      "physics/shear_decay",
-      {"simulation/particle_spacing=" + exact(dx), "simulation/dt=" + exact(std::min(acoustic_dt, viscous_dt)),
-       "simulation/duration=" + exact(duration), "materials/fluid/viscosity=" + exact(viscosity),
-       "bodies/lower/velocity=[" + exact(speed) + ", 0, 0]", "bodies/upper/velocity=[" + exact(-speed) + ", 0, 0]"});
+  std::vector<std::string> overrides = viscous_resolution_overrides(base, dx, rho, viscosity);
+  overrides.push_back("simulation/duration=" + exact(duration));
+  overrides.push_back("materials/fluid/viscosity=" + exact(viscosity));
+  overrides.push_back("bodies/lower/velocity=[" + exact(speed) + ", 0, 0]");
+  overrides.push_back("bodies/upper/velocity=[" + exact(-speed) + ", 0, 0]");
+  return case_scene("physics/shear_decay", overrides);
 }
 
 ShearDecayMeasurement measure_shear_decay(const std::string& backend_name, const Scene& scene) {
