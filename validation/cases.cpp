@@ -23,6 +23,8 @@ const std::vector<ValidationCase>& all_cases() {
        "drag of an impulsively started plate under a fluid layer vs Stokes' first problem", run_plate_shear_case},
       {"physics", "rotating_sphere", "physics/rotating_sphere",
        "viscous torque on a sphere turning in a closed cube vs Stokes, two viscosities", run_rotating_sphere_case},
+      {"physics", "translating_sphere", "physics/translating_sphere",
+       "drag on a sphere towed through closed cubes, extrapolated to Stokes' 6 pi mu R V", run_translating_sphere_case},
       {"physics", "dam_break", "physics/dam_break",
        "surge front of a collapsing water column vs Martin and Moyce 1952, Koshizuka and Oka 1996", run_dam_break_case},
       {"physics", "torque_free_spin", "physics/torque_free_spin", "a tumbling box keeps its angular momentum",

@@ -18,6 +18,7 @@ CaseResult run_dam_break_case(const CaseContext& context);
 CaseResult run_shear_decay_case(const CaseContext& context);
 CaseResult run_plate_shear_case(const CaseContext& context);
 CaseResult run_rotating_sphere_case(const CaseContext& context);
+CaseResult run_translating_sphere_case(const CaseContext& context);
 CaseResult run_torque_free_spin_case(const CaseContext& context);
 CaseResult run_rotation_invariance_case(const CaseContext& context);
 CaseResult run_patch_tests_case(const CaseContext& context);

@@ -1,0 +1,143 @@
+#include "translating_sphere.hpp"
+
+#include "backend_factory/backend_factory.hpp"
+#include "framework/backends.hpp"
+#include "model/scene_builder.hpp"
+#include "physics/stepping.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace mssph::validation {
+namespace {
+
+// A vector as --set writes it: [x, y, z].
+std::string vector_text(double x, double y, double z) {
+  std::string text = "[";
+  text += exact(x);
+  text += ", ";
+  text += exact(y);
+  text += ", ";
+  text += exact(z);
+  text += "]";
+  return text;
+}
+
+}  // namespace
+
+double concentric_sphere_drag_factor(double lambda) {
+  const double l3 = lambda * lambda * lambda;
+  const double l5 = l3 * lambda * lambda;
+  return (1.0 - l5) / (1.0 - 2.25 * lambda + 2.5 * l3 - 2.25 * l5 + l5 * lambda);
+}
+
+std::pair<double, double> cube_drag_factor_bracket(double radius, double side) {
+  const double half = 0.5 * side;
+  return {concentric_sphere_drag_factor(radius / (std::sqrt(3.0) * half)),
+          concentric_sphere_drag_factor(radius / half)};
+}
+
+std::pair<double, double> cube_wall_coefficient_bracket() { return {2.25 * 2.0 / std::sqrt(3.0), 2.25 * 2.0}; }
+
+Scene translating_sphere_scene(double dx, double mu, double side, double speed, const std::vector<std::string>& extra) {
+  const double rho = 1000.0;
+  const double radius = 0.05;
+  const double h = 2.0 * dx;
+  const double nu = mu / rho;
+  const double c = std::sqrt(1.0e6 * mu * speed / (rho * radius));
+  const double dt = 0.8 * std::min(0.125 * h * h / nu, 0.25 * h / c);
+  const double duration = 2.0 * 0.25 * side * side / nu;
+  // The cube holds an even number of cells, so its fluid sites lie at (k + 1/2) dx; a sphere
+  // centred on one of them is sampled on the fluid's lattice and the fluid meets it at one spacing
+  // (src/model/fluid_fill.hpp).
+  const double start = 0.5 * dx + dx * std::round(-0.8 * speed * duration / dx);
+  const std::string cube = vector_text(side, side, side);
+  std::vector<std::string> overrides{"simulation/particle_spacing=" + exact(dx),
+                                     "simulation/dt=" + exact(dt),
+                                     "simulation/duration=" + exact(duration),
+                                     "materials/fluid/viscosity=" + exact(mu),
+                                     "materials/fluid/pressure_stiffness=" + exact(c * c),
+                                     "materials/sphere/viscosity=" + exact(mu),
+                                     "materials/sphere/pressure_stiffness=" + exact(c * c),
+                                     "bodies/box/shape/inner_size=" + cube,
+                                     "bodies/fluid/shape/size=" + cube,
+                                     "bodies/sphere/velocity=" + vector_text(speed, 0.0, 0.0),
+                                     "bodies/sphere/position=" + vector_text(start, 0.5 * dx, 0.5 * dx)};
+  overrides.insert(overrides.end(), extra.begin(), extra.end());
+  return case_scene("physics/translating_sphere", overrides);
+}
+
+TowedSphereMeasurement measure_translating_sphere(const std::string& backend_name, const Scene& scene, double speed) {
+  const ParticleSetup setup = build_particles(scene);
+  const std::size_t sphere = body_index(setup, "sphere", scene);
+  const BodySetup& fluid = setup.bodies[body_index(setup, "fluid", scene)];
+  const BodyConfig& box = scene.bodies[body_index(setup, "box", scene)];
+  const BodySetup ball = setup.bodies[sphere];
+  const double dx = setup.spacing;
+  const double mu = fluid.material.viscosity;
+  const double rho = fluid.material.rest_density;
+
+  TowedSphereMeasurement m;
+  m.particles = setup.size();
+  m.radius = std::cbrt(3.0 * static_cast<double>(ball.count) * dx * dx * dx / (4.0 * std::numbers::pi));
+  m.side = box.shape.size.minCoeff();
+  m.reynolds = rho * speed * m.radius / mu;
+  m.stokes_drag = 6.0 * std::numbers::pi * mu * m.radius * speed;
+  std::tie(m.factor_low, m.factor_high) = cube_drag_factor_bracket(m.radius, m.side);
+
+  std::unique_ptr<Backend> backend = make_backend(backend_name, setup);
+  const double dt = setup.dt;
+  const double rate = 1.0 / (10.0 * dt);  // the controller's approach rate [1/s]
+  const Eigen::Matrix3d inertia = ball.inertia_body;
+  const Eigen::Vector3d target(speed, 0.0, 0.0);
+  const std::size_t steps = steps_for(scene.simulation.duration, dt);
+  const std::size_t sample_every = std::max<std::size_t>(1, steps / 100);
+  const std::size_t window_start = steps - 2 * steps / 5;
+  const std::size_t earlier_start = steps - 3 * steps / 5;
+  double window_sum = 0.0, earlier_sum = 0.0;
+  BodyState s = backend->rigid_body_state(sphere);
+  for (std::size_t step = 0; step < steps; ++step) {
+    const Eigen::Vector3d velocity = s.linear_momentum / s.mass;
+    const Eigen::Vector3d force = -s.interaction_force + s.mass * rate * (target - velocity);
+    const Eigen::Vector3d torque = -s.interaction_torque - rate * (inertia * s.angular_velocity);
+    backend->set_external_wrench(sphere, force, torque);
+    backend->step();
+    s = backend->rigid_body_state(sphere);
+    const double drag = -s.interaction_force.x();
+    if (step >= window_start) {
+      window_sum += drag;
+      m.speed_deviation = std::max(m.speed_deviation, std::abs(s.linear_momentum.x() / s.mass - speed) / speed);
+    } else if (step >= earlier_start) {
+      earlier_sum += drag;
+    }
+    if ((step + 1) % sample_every == 0) {
+      m.time.push_back(backend->time());
+      m.drag_history.push_back(drag);
+    }
+  }
+  m.drag = window_sum / static_cast<double>(steps - window_start);
+  m.drag_earlier = earlier_sum / static_cast<double>(window_start - earlier_start);
+  return m;
+}
+
+UnboundedDrag extrapolate_to_unbounded(const std::vector<TowedSphereMeasurement>& cubes) {
+  if (cubes.size() < 2) throw std::invalid_argument("the extrapolation needs cubes of at least two sides");
+  // Least-squares line y = a + b x through x = R / L, y = F_S / F.
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (const TowedSphereMeasurement& c : cubes) {
+    const double x = c.radius / c.side;
+    const double y = c.stokes_drag / c.drag;
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  const double n = static_cast<double>(cubes.size());
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const double intercept = (sy - slope * sx) / n;
+  return {1.0 / intercept, -slope / intercept};
+}
+
+}  // namespace mssph::validation
