@@ -46,7 +46,7 @@ Scene translating_sphere_scene(double dx, double mu, double side, double speed, 
   const double radius = 0.05;
   const double h = 2.0 * dx;
   const double nu = mu / rho;
-  const double c = std::sqrt(1.0e6 * mu * speed / (rho * radius));
+  const double c = std::sqrt(1.0e6 * mu * kReferenceSpeed / (rho * radius));
   const double dt = 0.8 * std::min(0.125 * h * h / nu, 0.25 * h / c);
   const double duration = 2.0 * 0.25 * side * side / nu;
   // The cube holds an even number of cells, so its fluid sites lie at (k + 1/2) dx; a sphere
@@ -122,13 +122,26 @@ TowedSphereMeasurement measure_translating_sphere(const std::string& backend_nam
   return m;
 }
 
-UnboundedDrag extrapolate_to_unbounded(const std::vector<TowedSphereMeasurement>& cubes) {
+LinearDrag measure_linear_drag(const std::string& backend, double dx, double mu, double side,
+                               const std::vector<std::string>& extra) {
+  LinearDrag d;
+  d.slow = measure_translating_sphere(backend, translating_sphere_scene(dx, mu, side, kReferenceSpeed, extra),
+                                      kReferenceSpeed);
+  d.fast = measure_translating_sphere(backend, translating_sphere_scene(dx, mu, side, 2.0 * kReferenceSpeed, extra),
+                                      2.0 * kReferenceSpeed);
+  d.factor = (d.fast.drag - d.slow.drag) / d.slow.stokes_drag;
+  d.offset = (2.0 * d.slow.drag - d.fast.drag) / d.slow.stokes_drag;
+  d.radius_over_side = d.slow.radius / d.slow.side;
+  return d;
+}
+
+UnboundedDrag extrapolate_to_unbounded(const std::vector<LinearDrag>& cubes) {
   if (cubes.size() < 2) throw std::invalid_argument("the extrapolation needs cubes of at least two sides");
   // Least-squares line y = a + b x through x = R / L, y = F_S / F.
   double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  for (const TowedSphereMeasurement& c : cubes) {
-    const double x = c.radius / c.side;
-    const double y = c.stokes_drag / c.drag;
+  for (const LinearDrag& c : cubes) {
+    const double x = c.radius_over_side;
+    const double y = 1.0 / c.factor;
     sx += x;
     sy += y;
     sxx += x * x;
