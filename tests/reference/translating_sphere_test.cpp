@@ -21,6 +21,14 @@ double unbounded_drag_over_stokes(const std::vector<std::string>& extra) {
   return validation::extrapolate_to_unbounded(cubes).drag_over_stokes;
 }
 
+// Both bracket factors start as 1 + k l: k = 9/4 for the concentric sphere (Williams 1915;
+// Happel and Brenner ch. 4), 2.1050 for the cylinder (Haberman and Sayre 1958; Faxen's 2.1044).
+TEST(TranslatingSphere, BracketFactorsHaveTheirFirstOrderWallTerms) {
+  const double l = 1e-4;
+  EXPECT_NEAR((validation::concentric_sphere_drag_factor(l) - 1.0) / l, 2.25, 1e-3);
+  EXPECT_NEAR((validation::cylinder_drag_factor(l) - 1.0) / l, 2.1050, 1e-3);
+}
+
 // The case's tolerance at a coarse spacing.
 constexpr double kCoarseTolerance = 0.20;
 

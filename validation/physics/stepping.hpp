@@ -1,10 +1,12 @@
 #pragma once
-// What the measuring code of several cases shares: a body found by name, and steps counted in time.
+// What the measuring code of several cases shares: a body found by name, a sampled sphere's
+// radius, and steps counted in time.
 #include "backend/backend.hpp"
 #include "config/scene.hpp"
 #include "model/particle_setup.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -16,6 +18,11 @@ inline std::size_t body_index(const ParticleSetup& setup, const std::string& nam
     if (setup.bodies[b].name == name) return b;
   }
   throw std::runtime_error(scene.source_file + ": this measurement needs a body \"" + name + "\"");
+}
+
+// The radius of a sphere sampled as `count` particles of volume dx^3 [m].
+inline double sampled_sphere_radius(std::size_t count, double dx) {
+  return std::cbrt(3.0 * static_cast<double>(count) * dx * dx * dx / (4.0 * std::numbers::pi));
 }
 
 // Whole steps of `dt` in `seconds`.

@@ -49,7 +49,7 @@ RotatingSphereMeasurement measure_rotating_sphere(const std::string& backend_nam
 
   RotatingSphereMeasurement m;
   m.particles = setup.size();
-  m.radius = std::cbrt(3.0 * static_cast<double>(ball.count) * dx * dx * dx / (4.0 * std::numbers::pi));
+  m.radius = sampled_sphere_radius(ball.count, dx);
   m.reynolds = rho * omega * m.radius * m.radius / mu;
   const double half_width = 0.5 * box.shape.size.minCoeff();
   std::tie(m.wall_factor_low, m.wall_factor_high) = cube_wall_factor_bracket(m.radius, half_width);

@@ -2,6 +2,7 @@
 
 #include "backend_factory/backend_factory.hpp"
 #include "framework/backends.hpp"
+#include "framework/fits.hpp"
 #include "model/scene_builder.hpp"
 #include "physics/stepping.hpp"
 
@@ -33,13 +34,15 @@ double concentric_sphere_drag_factor(double lambda) {
   return (1.0 - l5) / (1.0 - 2.25 * lambda + 2.5 * l3 - 2.25 * l5 + l5 * lambda);
 }
 
-std::pair<double, double> cube_drag_factor_bracket(double radius, double side) {
-  const double half = 0.5 * side;
-  return {concentric_sphere_drag_factor(radius / (std::sqrt(3.0) * half)),
-          concentric_sphere_drag_factor(radius / half)};
+double cylinder_drag_factor(double lambda) {
+  const double l3 = lambda * lambda * lambda;
+  const double l5 = l3 * lambda * lambda;
+  return (1.0 - 0.75857 * l5) / (1.0 - 2.1050 * lambda + 2.0865 * l3 - 1.7068 * l5 + 0.72603 * l5 * lambda);
 }
 
-std::pair<double, double> cube_wall_coefficient_bracket() { return {2.25 * 2.0 / std::sqrt(3.0), 2.25 * 2.0}; }
+std::pair<double, double> cube_drag_factor_bracket(double radius, double side) {
+  return {cylinder_drag_factor(radius / (side / std::sqrt(2.0))), concentric_sphere_drag_factor(radius / (0.5 * side))};
+}
 
 Scene translating_sphere_scene(double dx, double mu, double side, double speed, const std::vector<std::string>& extra) {
   const double rho = 1000.0;
@@ -49,10 +52,7 @@ Scene translating_sphere_scene(double dx, double mu, double side, double speed, 
   const double c = std::sqrt(1.0e6 * mu * kReferenceSpeed / (rho * radius));
   const double dt = 0.8 * std::min(0.125 * h * h / nu, 0.25 * h / c);
   const double duration = 2.0 * 0.25 * side * side / nu;
-  // The cube holds an even number of cells, so its fluid sites lie at (k + 1/2) dx; a sphere
-  // centred on one of them is sampled on the fluid's lattice and the fluid meets it at one spacing
-  // (src/model/fluid_fill.hpp).
-  const double start = 0.5 * dx + dx * std::round(-0.8 * speed * duration / dx);
+  // The cube holds an even number of cells, so its fluid sites lie at (k + 1/2) dx.
   const std::string cube = vector_text(side, side, side);
   std::vector<std::string> overrides{"simulation/particle_spacing=" + exact(dx),
                                      "simulation/dt=" + exact(dt),
@@ -64,7 +64,7 @@ Scene translating_sphere_scene(double dx, double mu, double side, double speed, 
                                      "bodies/box/shape/inner_size=" + cube,
                                      "bodies/fluid/shape/size=" + cube,
                                      "bodies/sphere/velocity=" + vector_text(speed, 0.0, 0.0),
-                                     "bodies/sphere/position=" + vector_text(start, 0.5 * dx, 0.5 * dx)};
+                                     "bodies/sphere/position=" + vector_text(0.5 * dx, 0.5 * dx, 0.5 * dx)};
   overrides.insert(overrides.end(), extra.begin(), extra.end());
   return case_scene("physics/translating_sphere", overrides);
 }
@@ -81,7 +81,7 @@ TowedSphereMeasurement measure_translating_sphere(const std::string& backend_nam
 
   TowedSphereMeasurement m;
   m.particles = setup.size();
-  m.radius = std::cbrt(3.0 * static_cast<double>(ball.count) * dx * dx * dx / (4.0 * std::numbers::pi));
+  m.radius = sampled_sphere_radius(ball.count, dx);
   m.side = box.shape.size.minCoeff();
   m.reynolds = rho * speed * m.radius / mu;
   m.stokes_drag = 6.0 * std::numbers::pi * mu * m.radius * speed;
@@ -135,22 +135,21 @@ LinearDrag measure_linear_drag(const std::string& backend, double dx, double mu,
   return d;
 }
 
-UnboundedDrag extrapolate_to_unbounded(const std::vector<LinearDrag>& cubes) {
-  if (cubes.size() < 2) throw std::invalid_argument("the extrapolation needs cubes of at least two sides");
-  // Least-squares line y = a + b x through x = R / L, y = F_S / F.
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  for (const LinearDrag& c : cubes) {
-    const double x = c.radius_over_side;
-    const double y = 1.0 / c.factor;
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  const double n = static_cast<double>(cubes.size());
-  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  const double intercept = (sy - slope * sx) / n;
+UnboundedDrag fit_faxen(const std::vector<double>& radius_over_side, const std::vector<double>& drag_factor) {
+  if (radius_over_side.size() < 2) throw std::invalid_argument("the extrapolation needs cubes of at least two sides");
+  std::vector<double> inverse;
+  for (const double k : drag_factor) inverse.push_back(1.0 / k);
+  const auto [intercept, slope] = fit_line(radius_over_side, inverse);
   return {1.0 / intercept, -slope / intercept};
+}
+
+UnboundedDrag extrapolate_to_unbounded(const std::vector<LinearDrag>& cubes) {
+  std::vector<double> x, factor;
+  for (const LinearDrag& c : cubes) {
+    x.push_back(c.radius_over_side);
+    factor.push_back(c.factor);
+  }
+  return fit_faxen(x, factor);
 }
 
 }  // namespace mssph::validation

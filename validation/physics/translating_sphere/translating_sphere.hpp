@@ -10,16 +10,21 @@
 namespace mssph::validation {
 
 // The drag factor F / (6 pi mu R V) of a sphere of radius R moving through the centre of a fixed
-// concentric spherical container of radius Rc, lambda = R / Rc:
-//   K = (1 - lambda^5) / (1 - 9/4 lambda + 5/2 lambda^3 - 9/4 lambda^5 + lambda^6)
-// (Williams 1915; Haberman and Sayre 1958; Happel and Brenner, Low Reynolds Number Hydrodynamics,
-// 1965, ch. 4).
+// concentric spherical container of radius Rc, l = R / Rc:
+//   K = (1 - l^5) / (1 - 9/4 l + 5/2 l^3 - 9/4 l^5 + l^6)
+// (Cunningham 1910; Williams 1915; Happel and Brenner, Low Reynolds Number Hydrodynamics, 1965,
+// ch. 4).
 double concentric_sphere_drag_factor(double lambda);
 
-// The drag factor of a sphere at the centre of a closed cube of side L lies between those of the
-// cube's circumscribed (Rc = sqrt(3) L / 2) and inscribed (Rc = L / 2) spheres: with no-slip walls
-// a larger container gives less drag (the minimum-dissipation theorem; Hill and Power 1956).
-// Returns {low, high}.
+// The drag factor of a sphere moving along the axis of an infinite circular cylinder of radius
+// Rc, l = R / Rc (Haberman and Sayre 1958):
+//   K = (1 - 0.75857 l^5) / (1 - 2.1050 l + 2.0865 l^3 - 1.7068 l^5 + 0.72603 l^6).
+double cylinder_drag_factor(double lambda);
+
+// With no-slip walls a larger container gives less drag (the minimum-dissipation theorem; Hill
+// and Power 1956). A closed cube of side L lies inside the cylinder of radius L / sqrt(2) along
+// the motion and holds its inscribed sphere (Rc = L / 2), so a sphere at its centre has a drag
+// factor between theirs. Returns {low, high}.
 std::pair<double, double> cube_drag_factor_bracket(double radius, double side);
 
 struct TowedSphereMeasurement {
@@ -28,7 +33,7 @@ struct TowedSphereMeasurement {
   double stokes_drag = 0.0;   // 6 pi mu R V, unbounded fluid [N]
   double factor_low = 0.0;    // the cube's drag factor bracket (cube_drag_factor_bracket) [-]
   double factor_high = 0.0;
-  double radius = 0.0;                     // of the sphere as sampled: N particles of volume dx^3 [m]
+  double radius = 0.0;                     // of the sphere as sampled (sampled_sphere_radius) [m]
   double side = 0.0;                       // the cube's inner side [m]
   double reynolds = 0.0;                   // rho V R / mu [-]
   double speed_deviation = 0.0;            // largest |v_x - V| / V over the averaging window [-]
@@ -43,10 +48,10 @@ inline constexpr double kReferenceSpeed = 0.001;
 // speed [m/s]. The sound speed keeps the viscous pressure mu V0 / R at 1e-6 rho c^2, with V0 the
 // reference speed (README.md says why so stiff); dt is 0.8 of the smaller of the viscous
 // (0.125 h^2 rho / mu) and acoustic (0.25 h / c) bounds (docs/model.md, "Time step"). The run lasts
-// 2 (L / 2)^2 / nu, twice the time viscosity takes to reach the walls, and the sphere starts
-// 0.8 V T behind the cube's centre (on a fluid site), so that it crosses the centre in the middle
-// of the averaging window. The sphere's own material ("sphere") has the fluid's values; `extra`
-// overrides follow.
+// 2 (L / 2)^2 / nu, twice the time viscosity takes to reach the walls. The sphere starts on the
+// fluid site nearest the cube's centre, half a spacing off it along each axis, so that the fluid
+// meets it at one spacing (src/model/fluid_fill.hpp). The sphere's own material ("sphere") has the
+// fluid's values; `extra` overrides follow.
 Scene translating_sphere_scene(double dx, double mu, double side, double speed,
                                const std::vector<std::string>& extra = {});
 
@@ -68,15 +73,17 @@ struct LinearDrag {
 LinearDrag measure_linear_drag(const std::string& backend, double dx, double mu, double side,
                                const std::vector<std::string>& extra = {});
 
-// Faxen's expansion of the wall effect, F_S / F = 1 - k R / L + O((R / L)^3), fitted by least
-// squares to cubes of several sides: the intercept extrapolates the drag to an unbounded fluid.
+// Faxen's expansion of the wall effect, 1 / K = 1 - k R / L + O((R / L)^3), fitted as a line to
+// drag factors K at several R / L: the intercept extrapolates the drag to an unbounded fluid. The
+// cubic term the line leaves out biases both; the case fits the bracket's own factors the same way
+// to bound k and to show that bias.
 struct UnboundedDrag {
   double drag_over_stokes = 0.0;  // F_inf / (6 pi mu R V) [-]
   double wall_coefficient = 0.0;  // k, per R / L [-]
 };
-UnboundedDrag extrapolate_to_unbounded(const std::vector<LinearDrag>& cubes);
+UnboundedDrag fit_faxen(const std::vector<double>& radius_over_side, const std::vector<double>& drag_factor);
 
-// k of the circumscribed and inscribed spheres (9/4 times 2 / sqrt(3) and 2): the cube's lies between.
-std::pair<double, double> cube_wall_coefficient_bracket();
+// fit_faxen of the cubes' linear drags.
+UnboundedDrag extrapolate_to_unbounded(const std::vector<LinearDrag>& cubes);
 
 }  // namespace mssph::validation
