@@ -29,8 +29,9 @@ CaseResult run_translating_sphere_case(const CaseContext& context) {
   const std::string fast = exact(2000.0 * kReferenceSpeed) + " mm/s";
   for (const double spacings : radii_in_spacings) {
     const double dx = 0.05 / spacings;
-    // 10 % at the finest spacing (the issue's); a coarser one is reported within 20 %.
-    const double tolerance = spacings == radii_in_spacings.back() ? 0.10 : 0.20;
+    // 10 % at the full run's finest spacing (the issue's); a coarser one, and the quick run's
+    // 3 dx, coarser still, within 20 %.
+    const double tolerance = !context.quick && spacings == radii_in_spacings.back() ? 0.10 : 0.20;
     const std::string label = "R = " + exact(spacings) + " dx: ";
     std::vector<LinearDrag> cubes;
     std::vector<double> x, low, high;
