@@ -3,6 +3,7 @@
 #include "backend_factory/backend_factory.hpp"
 #include "framework/backends.hpp"
 #include "model/scene_builder.hpp"
+#include "physics/controlled_run.hpp"
 #include "physics/stepping.hpp"
 
 #include <algorithm>
@@ -57,39 +58,25 @@ RotatingSphereMeasurement measure_rotating_sphere(const std::string& backend_nam
   m.expected_torque = -8.0 * std::numbers::pi * mu * std::pow(m.radius, 3) * omega * m.wall_factor;
 
   std::unique_ptr<Backend> backend = make_backend(backend_name, setup);
-  const double dt = setup.dt;
-  const double rate = 1.0 / (10.0 * dt);  // the controller's approach rate [1/s]
+  const double rate = 1.0 / (10.0 * setup.dt);  // the controller's approach rate [1/s]
   const double inertia = ball.inertia_body(2, 2);
   const Eigen::Vector3d target(0.0, 0.0, omega);
   const Eigen::Vector3d centre = ball.centre_of_mass;
-  const std::size_t steps = steps_for(scene.simulation.duration, dt);
-  const std::size_t sample_every = std::max<std::size_t>(1, steps / 100);
-  const std::size_t window_start = steps - 2 * steps / 5;
-  const std::size_t earlier_start = steps - 3 * steps / 5;
-  double window_sum = 0.0, earlier_sum = 0.0;
-  BodyState s = backend->rigid_body_state(sphere);
-  for (std::size_t step = 0; step < steps; ++step) {
-    const Eigen::Vector3d velocity = s.linear_momentum / s.mass;
-    const Eigen::Vector3d force =
-        -s.interaction_force - s.mass * rate * rate * (s.centre_of_mass - centre) - 2.0 * s.mass * rate * velocity;
-    const Eigen::Vector3d torque = -s.interaction_torque + inertia * rate * (target - s.angular_velocity);
-    backend->set_external_wrench(sphere, force, torque);
-    backend->step();
-    s = backend->rigid_body_state(sphere);
-    const double fluid_torque = s.interaction_torque.z();
-    if (step >= window_start) {
-      window_sum += fluid_torque;
-      m.omega_deviation = std::max(m.omega_deviation, std::abs(s.angular_velocity.z() - omega) / omega);
-    } else if (step >= earlier_start) {
-      earlier_sum += fluid_torque;
-    }
-    if ((step + 1) % sample_every == 0) {
-      m.time.push_back(backend->time());
-      m.torque_history.push_back(fluid_torque);
-    }
-  }
-  m.torque = window_sum / static_cast<double>(steps - window_start);
-  m.torque_earlier = earlier_sum / static_cast<double>(window_start - earlier_start);
+  ControlledRun run = run_controlled(
+      *backend, sphere, steps_for(scene.simulation.duration, setup.dt),
+      [&](const BodyState& s) {
+        const Eigen::Vector3d velocity = s.linear_momentum / s.mass;
+        return Wrench{
+            -s.interaction_force - s.mass * rate * rate * (s.centre_of_mass - centre) - 2.0 * s.mass * rate * velocity,
+            -s.interaction_torque + inertia * rate * (target - s.angular_velocity)};
+      },
+      [](const BodyState& s) { return s.interaction_torque.z(); },
+      [&](const BodyState& s) { return std::abs(s.angular_velocity.z() - omega) / omega; });
+  m.torque = run.mean;
+  m.torque_earlier = run.mean_earlier;
+  m.omega_deviation = run.largest_deviation;
+  m.time = std::move(run.time);
+  m.torque_history = std::move(run.history);
   return m;
 }
 

@@ -4,6 +4,7 @@
 #include "framework/backends.hpp"
 #include "framework/fits.hpp"
 #include "model/scene_builder.hpp"
+#include "physics/controlled_run.hpp"
 #include "physics/stepping.hpp"
 
 #include <algorithm>
@@ -88,37 +89,23 @@ TowedSphereMeasurement measure_translating_sphere(const std::string& backend_nam
   std::tie(m.factor_low, m.factor_high) = cube_drag_factor_bracket(m.radius, m.side);
 
   std::unique_ptr<Backend> backend = make_backend(backend_name, setup);
-  const double dt = setup.dt;
-  const double rate = 1.0 / (10.0 * dt);  // the controller's approach rate [1/s]
+  const double rate = 1.0 / (10.0 * setup.dt);  // the controller's approach rate [1/s]
   const Eigen::Matrix3d inertia = ball.inertia_body;
   const Eigen::Vector3d target(speed, 0.0, 0.0);
-  const std::size_t steps = steps_for(scene.simulation.duration, dt);
-  const std::size_t sample_every = std::max<std::size_t>(1, steps / 100);
-  const std::size_t window_start = steps - 2 * steps / 5;
-  const std::size_t earlier_start = steps - 3 * steps / 5;
-  double window_sum = 0.0, earlier_sum = 0.0;
-  BodyState s = backend->rigid_body_state(sphere);
-  for (std::size_t step = 0; step < steps; ++step) {
-    const Eigen::Vector3d velocity = s.linear_momentum / s.mass;
-    const Eigen::Vector3d force = -s.interaction_force + s.mass * rate * (target - velocity);
-    const Eigen::Vector3d torque = -s.interaction_torque - rate * (inertia * s.angular_velocity);
-    backend->set_external_wrench(sphere, force, torque);
-    backend->step();
-    s = backend->rigid_body_state(sphere);
-    const double drag = -s.interaction_force.x();
-    if (step >= window_start) {
-      window_sum += drag;
-      m.speed_deviation = std::max(m.speed_deviation, std::abs(s.linear_momentum.x() / s.mass - speed) / speed);
-    } else if (step >= earlier_start) {
-      earlier_sum += drag;
-    }
-    if ((step + 1) % sample_every == 0) {
-      m.time.push_back(backend->time());
-      m.drag_history.push_back(drag);
-    }
-  }
-  m.drag = window_sum / static_cast<double>(steps - window_start);
-  m.drag_earlier = earlier_sum / static_cast<double>(window_start - earlier_start);
+  ControlledRun run = run_controlled(
+      *backend, sphere, steps_for(scene.simulation.duration, setup.dt),
+      [&](const BodyState& s) {
+        const Eigen::Vector3d velocity = s.linear_momentum / s.mass;
+        return Wrench{-s.interaction_force + s.mass * rate * (target - velocity),
+                      -s.interaction_torque - rate * (inertia * s.angular_velocity)};
+      },
+      [](const BodyState& s) { return -s.interaction_force.x(); },
+      [&](const BodyState& s) { return std::abs(s.linear_momentum.x() / s.mass - speed) / speed; });
+  m.drag = run.mean;
+  m.drag_earlier = run.mean_earlier;
+  m.speed_deviation = run.largest_deviation;
+  m.time = std::move(run.time);
+  m.drag_history = std::move(run.history);
   return m;
 }
 
