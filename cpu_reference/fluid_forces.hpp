@@ -33,6 +33,36 @@ inline Eigen::Vector3d viscosity_force_pair(double mu, double volume_i, double v
   return mu * volume_i * volume_j * laplacian * (velocity_j - velocity_i);
 }
 
+// The velocity gradient of a fluid particle for the full_stress viscosity, corrected so that it is
+// exact for any linear velocity field on any particle arrangement (Bonet and Lok 1999):
+//   A_i = G_i M_i^-1, G_i = sum_j V_j (v_j - v_i) (x) grad W_ij, M_i = sum_j V_j (x_j - x_i) (x) grad W_ij,
+// over the neighbours whose pair viscosity is not zero. Float twin: kernels::VelocityGradientSums.
+struct VelocityGradientSums {
+  Eigen::Matrix3d velocity_moment = Eigen::Matrix3d::Zero();  // G_i [1/s]
+  Eigen::Matrix3d position_moment = Eigen::Matrix3d::Zero();  // M_i [-]
+
+  void add(double volume_j, const Eigen::Vector3d& velocity_ji, const Eigen::Vector3d& position_ji,
+           const Eigen::Vector3d& grad_w) {
+    velocity_moment += volume_j * velocity_ji * grad_w.transpose();
+    position_moment += volume_j * position_ji * grad_w.transpose();
+  }
+  Eigen::Matrix3d gradient() const;  // A_i; zero where M_i is singular (no neighbours)
+};
+
+// The full_stress viscosity's second part, one neighbour's term: the divergence of the stress
+// mu (grad u)^T in the pair form of eq. 2 (pressure_force_pair, with sigma = mu A^T for -P I):
+//   f_i = mu (V_i^2 A_i^T + V_j^2 A_j^T) grad W_ij / g.
+// Inside an incompressible fluid it is mu grad(div u), zero; across a surface it carries the
+// traction mu (grad u)^T n that eq. 3 leaves out, a third of a turning sphere's torque. A rigid,
+// deformable or boundary particle meeting a fluid one takes the fluid's A (traction continuous
+// across the contact). Float twin: kernels::transposed_stress_force_pair.
+inline Eigen::Vector3d transposed_stress_force_pair(double mu, double volume_i, const Eigen::Matrix3d& gradient_i,
+                                                    double volume_j, const Eigen::Matrix3d& gradient_j,
+                                                    double gradient_consistency, const Eigen::Vector3d& grad_w) {
+  return (mu / gradient_consistency) *
+         (volume_i * volume_i * gradient_i.transpose() + volume_j * volume_j * gradient_j.transpose()) * grad_w;
+}
+
 // The mu of eq. 3 between bodies: the harmonic mean 2 mu_i mu_j / (mu_i + mu_j) of the two bodies'
 // viscosities (Morris et al. 1997), so a body of zero viscosity, e.g. a free-slip wall, exerts no
 // friction. Float twin: kernels::interface_viscosity.
@@ -50,7 +80,13 @@ inline Eigen::Vector3d interaction_force(const Eigen::Vector3d& pressure, const 
 // go to internal_force, forces between particles of different bodies to interaction_force.
 // Rigid, deformable and boundary bodies feel no pressure or viscosity from their own particles
 // (their internal forces are rigidity and elasticity). Boundary particles receive no force.
+// With the full_stress viscosity, the transposed stress term joins the viscosity part of both; it
+// reads the velocity gradients of compute_velocity_gradients.
 void compute_pressure_viscosity_forces(const ParticleSetup& setup, const NeighbourLists& neighbours,
                                        ParticleState& state);
+
+// Each fluid particle's corrected velocity gradient A_i (VelocityGradientSums), zero for the others;
+// for the full_stress viscosity.
+void compute_velocity_gradients(const ParticleSetup& setup, const NeighbourLists& neighbours, ParticleState& state);
 
 }  // namespace mssph::reference

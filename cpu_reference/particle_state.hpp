@@ -19,6 +19,7 @@ struct ParticleState {
   std::vector<Eigen::Vector3d> interaction_force;  // from particles of other bodies, eq. 7 [N]
   std::vector<Eigen::Vector3d> pressure_force;     // the pressure part of both (eq. 2, 7) [N]
   std::vector<Eigen::Vector3d> viscosity_force;    // the viscosity part of both (eq. 3, 7) [N]
+  std::vector<Eigen::Matrix3d> velocity_gradient;  // A_i, fluid particles, full_stress viscosity only [1/s]
 
   void resize(std::size_t n) {
     position.resize(n);
@@ -31,6 +32,7 @@ struct ParticleState {
     interaction_force.assign(n, Eigen::Vector3d::Zero());
     pressure_force.assign(n, Eigen::Vector3d::Zero());
     viscosity_force.assign(n, Eigen::Vector3d::Zero());
+    velocity_gradient.assign(n, Eigen::Matrix3d::Zero());
   }
 };
 

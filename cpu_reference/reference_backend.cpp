@@ -62,6 +62,8 @@ void ReferenceBackend::compute_forces() {
     compute_elastic_stresses(setup_, deformable_rest_, particles_.position, particles_.velocity, deformables_);
   });
   timed(phase_seconds_[kForces], [&] {
+    if (setup_.viscosity_model == ViscosityModel::full_stress)
+      compute_velocity_gradients(setup_, neighbours_, particles_);
     compute_pressure_viscosity_forces(setup_, neighbours_, particles_);
     add_deformable_forces();
     for (RigidBodyState& body : rigid_bodies_) sum_interaction_wrench(setup_, particles_, body);

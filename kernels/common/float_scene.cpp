@@ -150,6 +150,7 @@ GridShape choose_grid_shape(const std::vector<Vec4>& positions, double h) {
 
 FloatScene make_float_scene(const ParticleSetup& setup) {
   FloatScene scene;
+  scene.full_stress_viscosity = setup.viscosity_model == ViscosityModel::full_stress;
   scene.step.smoothing = SmoothingKernels::for_support(setup.smoothing_length);
   scene.step.dt = static_cast<float>(setup.dt);
   scene.step.gravity = to_vec3(setup.gravity);

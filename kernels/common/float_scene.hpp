@@ -23,6 +23,7 @@ struct FloatScene {
   GridShape grid;
   std::vector<BodyParameters> bodies;
   std::vector<RigidBody> rigid_bodies;  // movable rigid bodies, in body order
+  bool full_stress_viscosity = false;   // viscosity_model full_stress: the force pass adds the transposed stress
   // Canonical particle arrays.
   std::vector<Vec4> position;
   std::vector<Vec4> velocity;

@@ -7,7 +7,8 @@
 // energy-consistent form of eq. 2 with the lattice calibration 1/g). Each equation is one function
 // named as its float64 twin there (tests/equations/ checks each against it): eq. 1 density,
 // equation_of_state, eq. 2 pressure_force_pair, eq. 3 viscosity_force_pair (with
-// interface_viscosity), eq. 7 interaction_force.
+// interface_viscosity), eq. 7 interaction_force; for viscosity_model full_stress
+// VelocityGradientSums and transposed_stress_force_pair.
 //
 // Each quantity is a sum over neighbours, assembled once by density_sum_over() and
 // force_sum_over() from the candidates a source hands them: on a GPU lane `lane` of a particle's
@@ -276,6 +277,36 @@ MSSPH_HD Vec3 viscosity_force_pair(float mu, float volume_i, float volume_j, flo
   return (mu * volume_i * volume_j * laplacian) * (velocity_j - velocity_i);
 }
 
+// The full_stress viscosity's velocity gradient of a fluid particle (reference:
+// VelocityGradientSums): A_i = G_i M_i^-1, G_i = sum_j V_j (v_j - v_i) (x) grad W_ij,
+// M_i = sum_j V_j (x_j - x_i) (x) grad W_ij, over the neighbours whose pair viscosity is not zero.
+struct VelocityGradientSums {
+  Mat3 velocity_moment;  // G_i [1/s]
+  Mat3 position_moment;  // M_i [-]
+
+  MSSPH_HD void add(float volume_j, Vec3 velocity_ji, Vec3 position_ji, Vec3 grad_w) {
+    velocity_moment = velocity_moment + volume_j * outer(velocity_ji, grad_w);
+    position_moment = position_moment + volume_j * outer(position_ji, grad_w);
+  }
+  // A_i = G_i cof(M_i)^T / det M_i; zero where M_i is singular (no neighbours).
+  MSSPH_HD Mat3 gradient() const {
+    const float det = determinant(position_moment);
+    if (det == 0.0f) return zero_mat3();
+    return (1.0f / det) * (velocity_moment * transpose(cofactor(position_moment)));
+  }
+};
+
+MSSPH_HD VelocityGradientSums zero_velocity_gradient_sums() { return {zero_mat3(), zero_mat3()}; }
+
+// The full_stress viscosity's second part, one neighbour's term on i: the divergence of
+// mu (grad u)^T in the pair form of eq. 2, f_i = mu (V_i^2 A_i^T + V_j^2 A_j^T) grad W_ij / g
+// (reference: transposed_stress_force_pair, which says why).
+MSSPH_HD Vec3 transposed_stress_force_pair(float mu, float volume_i, const Mat3& gradient_i, float volume_j,
+                                           const Mat3& gradient_j, float inverse_gradient_consistency, Vec3 grad_w) {
+  const Mat3 stress = (volume_i * volume_i) * transpose(gradient_i) + (volume_j * volume_j) * transpose(gradient_j);
+  return (mu * inverse_gradient_consistency) * (stress * grad_w);
+}
+
 // Paper eq. 7: between particles of different bodies the interaction force is the pressure and
 // viscosity force of eq. 2 and 3 (reference: interaction_force).
 MSSPH_HD Vec3 interaction_force(Vec3 pressure, Vec3 viscosity) { return pressure + viscosity; }
@@ -353,11 +384,45 @@ MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
   const PairDistance d = v.step.smoothing.pair_distance(r2);
   const Vec3 pressure =
       pressure_force_pair(i.vp, vp_j, v.step.inverse_gradient_consistency, v.step.smoothing.spiky_gradient(r_ij, d));
-  const Vec3 viscosity =
+  Vec3 viscosity =
       viscosity_force_pair(mu, i.vp.volume, vp_j.volume, v.step.smoothing.viscosity_laplacian(d.r), i.u, xyz(u_j));
+  if (v.velocity_gradient != nullptr && mu > 0.0f) {
+    // A rigid, deformable or boundary particle meeting a fluid one takes the fluid's gradient.
+    const bool fluid_j = same_body ? fluid : v.bodies[body_j].kind == kFluid;
+    if (fluid || fluid_j) {
+      viscosity += transposed_stress_force_pair(
+          mu, i.vp.volume, v.velocity_gradient[fluid ? i.s : t], vp_j.volume, v.velocity_gradient[fluid_j ? t : i.s],
+          v.step.inverse_gradient_consistency, v.step.smoothing.spiky_gradient(r_ij, d));
+    }
+  }
   sum.pressure += pressure;
   sum.viscosity += viscosity;
   if (!same_body) sum.interaction += interaction_force(pressure, viscosity);
+}
+
+// Sorted particle s's share of its velocity-gradient sums for the full_stress viscosity, over the
+// candidates that candidates(visit) hands to visit (those beyond h add nothing); a particle that is
+// not a fluid's sums nothing.
+template <class Candidates>
+MSSPH_HD VelocityGradientSums velocity_gradient_sums_over(const SortedView& v, std::uint32_t s,
+                                                          Candidates&& candidates) {
+  VelocityGradientSums sums = zero_velocity_gradient_sums();
+  const ForceParticle i = load_force_particle(v, s);
+  if (i.parameters.kind != kFluid) return sums;
+  candidates([&](std::uint32_t t) {
+    if (t == s) return;
+    const Vec4 p_j = v.position[t];
+    const Vec3 r_ij = i.x - xyz(p_j);
+    const float r2 = squared_norm(r_ij);
+    if (r2 >= v.step.smoothing.h2) return;
+    const std::uint32_t body_j = body_of(p_j);
+    const float mu = body_j == i.body ? i.parameters.viscosity
+                                      : interface_viscosity(i.parameters.viscosity, v.bodies[body_j].viscosity);
+    if (mu <= 0.0f) return;
+    const PairDistance d = v.step.smoothing.pair_distance(r2);
+    sums.add(v.volume_pressure[t].volume, xyz(v.velocity[t]) - i.u, -r_ij, v.step.smoothing.spiky_gradient(r_ij, d));
+  });
+  return sums;
 }
 
 // Particle i's pressure and viscosity sums over the candidates that candidates(visit) hands to

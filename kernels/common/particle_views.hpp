@@ -91,6 +91,9 @@ struct SortedView {
   // of its density its walks do not sum (fluid_physics.hpp, takes_own_body_at_rest); null without
   // rigid or deformable bodies.
   const float* own_rest_number_density;
+  // Sorted: each fluid particle's corrected velocity gradient A_i for the full_stress viscosity
+  // (fluid_physics.hpp, VelocityGradientSums), zero for the others; null under the paper's eq. 3.
+  const Mat3* velocity_gradient;
 };
 
 // Why a particle is held in place (CanonicalState::fixed): never, by a deformable body's fixed

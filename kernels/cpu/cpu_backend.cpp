@@ -23,6 +23,7 @@ CpuBackend::CpuBackend(ParticleSetup setup)
   sorted_position_.resize(n);
   sorted_velocity_.resize(n);
   volume_pressure_.resize(n);
+  if (scene_.full_stress_viscosity) velocity_gradient_.assign(n, zero_mat3());
   recorded_count_.resize(n);
   recorded_index_.resize(n * kNeighbourCapacity);
   neighbour_count_.resize(n);
@@ -54,7 +55,8 @@ SortedView CpuBackend::sorted_view() const {
                     sorted_velocity_.data(),
                     sorted_id_.data(),
                     volume_pressure_.data(),
-                    scene_.own_rest_number_density.empty() ? nullptr : scene_.own_rest_number_density.data()};
+                    scene_.own_rest_number_density.empty() ? nullptr : scene_.own_rest_number_density.data(),
+                    velocity_gradient_.empty() ? nullptr : velocity_gradient_.data()};
 }
 
 NeighbourLists CpuBackend::recorded_lists() {
@@ -180,12 +182,17 @@ void CpuBackend::compute_rotations_and_elastic_forces() {
 }
 
 // Step 2, densities and pressures (eq. 1 and the equation of state), in cell order, over the
-// recorded lists, whose entries within h each particle's sum copies for the force pass.
+// recorded lists, whose entries within h each particle's sum copies for the force pass; then, for
+// the full_stress viscosity, each fluid particle's velocity gradient, which reads those volumes.
 void CpuBackend::compute_densities() {
   const SortedView view = sorted_view();
   const NeighbourLists recorded = recorded_lists(), within = neighbour_lists();
   density_partition_.for_each([&](std::uint32_t s) {
     volume_pressure_[s] = density_from(density_sum_keeping_within(view, recorded, within, s), view, s).volume_pressure;
+  });
+  if (velocity_gradient_.empty()) return;
+  density_partition_.for_each([&](std::uint32_t s) {
+    velocity_gradient_[s] = velocity_gradient_sums_over(view, s, neighbours_of(view, within, s)).gradient();
   });
 }
 

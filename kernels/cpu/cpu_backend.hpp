@@ -56,6 +56,7 @@ class CpuBackend final : public Backend {
   std::vector<std::uint32_t> sorted_id_;
   std::vector<Vec4> sorted_position_, sorted_velocity_;  // copied every step
   std::vector<VolumePressure> volume_pressure_;
+  std::vector<Mat3> velocity_gradient_;  // sorted; full_stress viscosity only, else empty
   // A particle has ~30 neighbours within h at h = 2 dx, ~35-40 within h + skin (57 the most seen,
   // in the Figure 3 scenes); a list that overflows costs only speed: the next step rebuilds
   // (neighbour_list.hpp).

@@ -46,6 +46,7 @@ struct DeviceArrays {
   Array<std::uint16_t> cell_body;  // CellRanges::cell_body; empty without rigid or deformable bodies
   Array<Vec4> sorted_position, sorted_velocity;
   Array<VolumePressure> volume_pressure;
+  Array<Mat3> velocity_gradient;        // sorted; empty unless viscosity_model is full_stress
   Array<std::uint8_t> near_other_body;  // sorted, from the density pass: may_feel_forces' second argument
   Array<std::uint32_t> block_total;     // the grid kernel's: each block's share of the cell table
   // A team's neighbour lists, one per lane, where each sorted particle stood when they were
@@ -137,6 +138,8 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   visit("sorted_position", a.sorted_position, Uninitialised{n});
   visit("sorted_velocity", a.sorted_velocity, Uninitialised{n});
   visit("volume_pressure", a.volume_pressure, Filled<VolumePressure>{n, VolumePressure{0, 0}});
+  // The velocity-gradient pass writes every particle's, after the density pass and before the force pass.
+  visit("velocity_gradient", a.velocity_gradient, Uninitialised{scene.full_stress_viscosity ? n : 0});
   visit("near_other_body", a.near_other_body, Uninitialised{n});  // the density pass writes every particle's
   visit("block_total", a.block_total, Uninitialised{grid_blocks});
   // Written by the density pass before the force pass reads them, for every particle that receives forces.

@@ -59,7 +59,8 @@ DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& ch
   return state;
 }
 
-// cell_body and own_rest_number_density are empty, so null, without rigid or deformable bodies.
+// cell_body and own_rest_number_density are empty, so null, without rigid or deformable bodies;
+// velocity_gradient unless the viscosity is full_stress.
 SortedView sorted_view(const FloatScene& scene, const DeviceState& state) {
   return SortedView{scene.step,
                     state.bodies.data(),
@@ -68,7 +69,8 @@ SortedView sorted_view(const FloatScene& scene, const DeviceState& state) {
                     state.sorted_velocity.data(),
                     state.sorted_id.data(),
                     state.volume_pressure.data(),
-                    state.own_rest_number_density.data()};
+                    state.own_rest_number_density.data(),
+                    state.velocity_gradient.data()};
 }
 
 NeighbourLists team_lists(DeviceState& state, unsigned team_lanes) {

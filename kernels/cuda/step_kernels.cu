@@ -178,6 +178,30 @@ __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(
   }
 }
 
+// For the full_stress viscosity, each fluid particle's velocity gradient after the density pass,
+// which gave the volumes it reads (velocity_gradient_sums_over): a team's lanes over the lists that
+// pass recorded or visited, one lane alone over the 27 cells; stored in cell order for the force
+// pass.
+template <unsigned Lanes>
+__global__ void __launch_bounds__(kSumBlock)
+    velocity_gradient_kernel(SortedView view, Mat3* velocity_gradient, NeighbourLists lists) {
+  const TeamSeat seat = team_seat<Lanes>();
+  const std::uint32_t s = seat.member, lane = seat.lane;
+  const bool active = s < view.step.particle_count;
+  VelocityGradientSums sums = zero_velocity_gradient_sums();
+  if (active) {
+    const Vec3 x = xyz(view.position[s]);
+    if constexpr (Lanes > 1) {
+      const std::uint32_t list = blockIdx.x * blockDim.x + threadIdx.x;
+      sums = velocity_gradient_sums_over(view, s, listed_share(view.grid, x, lane, Lanes, lists, list));
+    } else {
+      sums = velocity_gradient_sums_over(view, s, [&](auto&& visit) { view.grid.for_each_candidate(x, visit); });
+    }
+  }
+  sums = {team_sum<Lanes>(sums.velocity_moment), team_sum<Lanes>(sums.position_moment)};
+  if (active && lane == 0) velocity_gradient[s] = sums.gradient();
+}
+
 // Threads of the force kernel that must fit on a multiprocessor at once, which caps its registers
 // at 65536 / threads, rounded down to a multiple of 8. One lane per particle (large scenes) holds
 // its walk's segments in shared memory (SharedHeldSegments, 96 bytes a thread), which the
@@ -319,6 +343,10 @@ void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team
     density_kernel<L><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
         sorted_view(scene, state), state.volume_pressure.data(), state.near_other_body.data(), team_lists(state, L),
         state.list_refresh.data(), list_skin(scene.step.smoothing.h).record_radius2, notes);
+    if (scene.full_stress_viscosity) {
+      velocity_gradient_kernel<L><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
+          sorted_view(scene, state), state.velocity_gradient.data(), team_lists(state, L));
+    }
   });
 }
 

@@ -16,8 +16,14 @@ namespace mssph {
 
 enum class BodyKind { fluid, deformable, rigid, boundary };
 enum class ShapeType { box, sphere, container };
+// The viscous force inside fluids and between bodies (cpu_reference/fluid_forces.hpp):
+//   paper:       eq. 3 as printed, mu lap u, whose pair forces carry mu grad u across a surface;
+//   full_stress: eq. 3 plus the divergence of mu (grad u)^T, so that a surface carries the whole
+//                Newtonian stress mu (grad u + grad u^T) (decision 057).
+enum class ViscosityModel { paper, full_stress };
 
 const char* to_string(BodyKind kind);
+const char* to_string(ViscosityModel model);
 
 struct Shape {
   ShapeType type = ShapeType::box;
@@ -85,6 +91,7 @@ struct SimulationConfig {
   // (scene/simulation_domain.hpp).
   std::optional<Region> domain;
   double max_lost_mass_fraction = 0.001;  // of a body's mass outside the domain before the run fails [-]
+  ViscosityModel viscosity_model = ViscosityModel::paper;
 };
 
 struct ProxyConfig {

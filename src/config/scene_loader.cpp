@@ -102,7 +102,7 @@ std::map<std::string, MaterialEntry> read_materials(const JsonReader& root) {
 SimulationConfig read_simulation(const JsonReader& root) {
   const JsonReader s = root.child("simulation");
   s.allow_only({"dt", "duration", "gravity", "particle_spacing", "smoothing_length", "seed", "jitter", "max_speed",
-                "domain", "max_lost_mass_fraction"});
+                "domain", "max_lost_mass_fraction", "viscosity_model"});
   SimulationConfig sim;
   sim.dt = s.number("dt", Interval::positive());
   sim.duration = s.number("duration", Interval::positive());
@@ -136,6 +136,9 @@ SimulationConfig read_simulation(const JsonReader& root) {
     sim.domain = box;
   }
   sim.max_lost_mass_fraction = s.number_or("max_lost_mass_fraction", 0.001, Interval{0.0, 1.0, false, false});
+  sim.viscosity_model = s.choice_or("viscosity_model", "paper", {"paper", "full_stress"}) == "full_stress"
+                            ? ViscosityModel::full_stress
+                            : ViscosityModel::paper;
   return sim;
 }
 
@@ -345,6 +348,8 @@ bool is_valid_utf8(const std::string& text) {
 }
 
 }  // namespace
+
+const char* to_string(ViscosityModel model) { return model == ViscosityModel::full_stress ? "full_stress" : "paper"; }
 
 const char* to_string(BodyKind kind) {
   switch (kind) {

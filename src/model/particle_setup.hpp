@@ -43,6 +43,7 @@ struct ParticleSetup {
   double max_speed = 0.0;
   Region domain;                        // particles leaving it are deactivated [m]
   double max_lost_mass_fraction = 0.0;  // of a body's mass, before the run fails [-]
+  ViscosityModel viscosity_model = ViscosityModel::paper;
 
   std::vector<Eigen::Vector3d> position;     // [m]
   std::vector<Eigen::Vector3d> velocity;     // [m/s]

@@ -188,6 +188,7 @@ ParticleSetup build_particles(const Scene& scene) {
   setup.domain = sim.domain ? *sim.domain : default_simulation_domain(setup.position, setup.smoothing_length);
   check_domain_holds_moving_particles(scene, setup);
   setup.max_lost_mass_fraction = sim.max_lost_mass_fraction;
+  setup.viscosity_model = sim.viscosity_model;
   return setup;
 }
 

@@ -73,13 +73,21 @@ TEST_P(OneStepAgreement, MixedFarFromTheOrigin) {
   compare(GetParam(), validation::one_step_scene("mixed_far"));
 }
 
+// The mixed scene with the full_stress viscosity: the velocity-gradient pass and the transposed
+// stress term (the spinning ball's contact with the water) against the reference's.
+TEST_P(OneStepAgreement, MixedWithFullStressViscosity) {
+  MSSPH_SKIP_WITHOUT(GetParam());
+  compare(GetParam(), validation::one_step_scene("mixed_full_stress"));
+}
+
 INSTANTIATE_TEST_SUITE_P(FloatBackends, OneStepAgreement, ::testing::ValuesIn(float_backend_names()),
                          [](const auto& test_info) { return test_info.param; });
 
 // The scenes above are small enough for the cuda backend to give each particle a team of lanes
 // that keeps neighbour lists. A scene of about a million particles gets one lane per particle,
-// whose density and force sums walk the 27 cells every step (step_kernels.cu): the fluid and
-// mixed scenes at a 2 mm spacing (about 1.0M and 0.9M particles with their tanks), same bounds.
+// whose density, velocity-gradient and force sums walk the 27 cells every step (step_kernels.cu):
+// the fluid and mixed scenes, the latter also with the full_stress viscosity, at a 2 mm spacing
+// (about 1.0M and 0.9M particles with their tanks), same bounds.
 // The mixed scene's jelly is evaluated at rest, not deformed: the bond passes do not walk the
 // cells, and at this spacing their float32 error nears the bound (elastic force 8.9e-5, against
 // 7.7e-6 at the usual 2 cm). A backend with one lane per particle keeps no lists, so it
@@ -103,7 +111,8 @@ TEST_P(OneStepAgreementAtOneLanePerParticle, Cuda) {
 }
 
 INSTANTIATE_TEST_SUITE_P(MillionParticleScenes, OneStepAgreementAtOneLanePerParticle,
-                         ::testing::Values("fluid", "mixed"), [](const auto& test_info) { return test_info.param; });
+                         ::testing::Values("fluid", "mixed", "mixed_full_stress"),
+                         [](const auto& test_info) { return test_info.param; });
 
 }  // namespace
 }  // namespace mssph::testing

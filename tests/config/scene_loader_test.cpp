@@ -142,6 +142,17 @@ TEST(SceneLoader, ViscousModulusNeedsKernelGradientCorrection) {
               HasSubstr("applies to deformable bodies only"));
 }
 
+// viscosity_model chooses the viscous force for the whole scene; a misspelt model is named with
+// its path and the models there are.
+TEST(SceneLoader, ViscosityModelIsOneOfTheNamedModels) {
+  EXPECT_EQ(load_scene(kBase).simulation.viscosity_model, ViscosityModel::paper);
+  EXPECT_EQ(load_scene(kBase, {"simulation/viscosity_model=full_stress"}).simulation.viscosity_model,
+            ViscosityModel::full_stress);
+  const std::string message = input_error_of([&] { load_scene(kBase, {"simulation/viscosity_model=stress"}); });
+  EXPECT_THAT(message, HasSubstr("/simulation/viscosity_model"));
+  EXPECT_THAT(message, HasSubstr("full_stress"));
+}
+
 TEST(SceneLoader, BodiesComeInNameOrder) {
   // nlohmann::json keeps object members sorted by key, so body indices (particle order, the
   // run log's body index) follow the names, not the order in the file.

@@ -1,10 +1,11 @@
-// Paper eq. 1-3 and 7 and the equation of state, float32 (kernels/common/fluid_physics.hpp) against
-// the float64 twins of the same names (cpu_reference/density.hpp, fluid_forces.hpp). Method and
-// tolerance: twin_support.hpp. Inputs span the scenes' ranges: spacings 1-5 cm, rest densities
-// 500-3000 kg/m^3, stiffnesses up to 1e4 m^2/s^2, viscosities up to 10 Pa s.
+// Paper eq. 1-3 and 7, the equation of state and the full_stress viscosity, float32 (kernels/common/fluid_physics.hpp)
+// against the float64 twins of the same names (cpu_reference/density.hpp, fluid_forces.hpp). Method and tolerance:
+// twin_support.hpp. Inputs span the scenes' ranges: spacings 1-5 cm, rest densities 500-3000 kg/m^3, stiffnesses up to
+// 1e4 m^2/s^2, viscosities up to 10 Pa s.
 #include "common/fluid_physics.hpp"
 #include "density.hpp"
 #include "fluid_forces.hpp"
+#include "model/smoothing_kernels.hpp"
 #include "twin_support.hpp"
 
 #include <numbers>
@@ -125,6 +126,64 @@ TEST(FluidEquationTwins, InteractionForce) {
     const Eigen::Vector3d pressure = draws.vector(1.0), viscosity = draws.vector(0.5);
     force.add(to_double(kernels::interaction_force(to_float(pressure), to_float(viscosity))),
               reference::interaction_force(pressure, viscosity), pressure.norm() + viscosity.norm());
+  }
+}
+
+// The full_stress viscosity's velocity gradient from one neighbourhood: the 26 sites around a
+// particle at h = 2 dx, jittered by 0.2 dx, with random velocities and the spiky gradient; A = G M^-1
+// of both precisions from the same rounded inputs.
+TEST(FluidEquationTwins, VelocityGradient) {
+  TwinDraws draws("FluidEquationTwins.VelocityGradient");
+  TwinComparison gradient("velocity gradient A = G M^-1 (full_stress)");
+  for (int k = 0; k < kDraws; ++k) {
+    const Lattice lattice = draw_lattice(draws);
+    const double dx = lattice.dx;
+    const double cell = dx * dx * dx;
+    reference::VelocityGradientSums expected;
+    kernels::VelocityGradientSums got = kernels::zero_velocity_gradient_sums();
+    double velocity_scale = 0.0;
+    for (int a = -1; a <= 1; ++a) {
+      for (int b = -1; b <= 1; ++b) {
+        for (int c = -1; c <= 1; ++c) {
+          if (a == 0 && b == 0 && c == 0) continue;
+          const double volume = TwinDraws::rounded(draws.uniform(0.8, 1.2) * cell);
+          const Eigen::Vector3d x_ji = to_double(
+              to_float(Eigen::Vector3d(dx * (a + draws.uniform(-0.2, 0.2)), dx * (b + draws.uniform(-0.2, 0.2)),
+                                       dx * (c + draws.uniform(-0.2, 0.2)))));
+          const Eigen::Vector3d u_ji = draws.vector(1.0);
+          const Eigen::Vector3d grad_w = to_double(to_float(SpikyGradient(2.0 * dx)(-x_ji)));
+          expected.add(volume, u_ji, x_ji, grad_w);
+          got.add(static_cast<float>(volume), to_float(u_ji), to_float(x_ji), to_float(grad_w));
+          velocity_scale = std::max(velocity_scale, u_ji.norm());
+        }
+      }
+    }
+    // G sums velocity differences that may cancel: the scale is the largest difference over dx.
+    gradient.add(to_double(got.gradient()), expected.gradient(), velocity_scale / dx);
+  }
+}
+
+TEST(FluidEquationTwins, TransposedStressForcePair) {
+  TwinDraws draws("FluidEquationTwins.TransposedStressForcePair");
+  TwinComparison force("transposed stress force pair (full_stress)");
+  for (int k = 0; k < kDraws; ++k) {
+    const Lattice lattice = draw_lattice(draws);
+    const double cell = lattice.dx * lattice.dx * lattice.dx;
+    const double mu = draws.uniform(1e-3, 10.0);
+    const double volume_i = TwinDraws::rounded(draws.uniform(0.5, 1.5) * cell);
+    const double volume_j = TwinDraws::rounded(draws.uniform(0.5, 1.5) * cell);
+    const Eigen::Matrix3d gradient_i = draws.matrix(10.0), gradient_j = draws.matrix(10.0);
+    const double consistency = draws.uniform(0.9, 1.0);
+    const Eigen::Vector3d grad_w = draws.vector(45.0 / (std::numbers::pi * std::pow(2.0 * lattice.dx, 4)));
+    const Eigen::Vector3d expected =
+        reference::transposed_stress_force_pair(mu, volume_i, gradient_i, volume_j, gradient_j, consistency, grad_w);
+    const kernels::Vec3 got = kernels::transposed_stress_force_pair(
+        static_cast<float>(mu), static_cast<float>(volume_i), to_float(gradient_i), static_cast<float>(volume_j),
+        to_float(gradient_j), static_cast<float>(1.0 / consistency), to_float(grad_w));
+    // The two particles' stresses may cancel: the scale holds both.
+    const double scale = mu / consistency * grad_w.norm() *
+                         (volume_i * volume_i * gradient_i.norm() + volume_j * volume_j * gradient_j.norm());
+    force.add(to_double(got), expected, scale);
   }
 }
 

@@ -37,10 +37,14 @@ TEST(FluidPhysics, SettledColumnHasHydrostaticPressure) {
 
 // Pairwise pressure and viscosity forces are antisymmetric, and rigid bodies sum the same forces:
 // without gravity and boundaries the total linear momentum of fluids and rigid bodies is
-// conserved to rounding while they collide.
-TEST(FluidPhysics, MomentumIsConservedBetweenFluidsAndRigidBodies) {
+// conserved to rounding while they collide, with either viscosity model (the full_stress term
+// gives a rigid particle its fluid neighbour's velocity gradient, so its pairs stay antisymmetric).
+class FluidMomentum : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(FluidMomentum, IsConservedBetweenFluidsAndRigidBodies) {
   const double dx = 0.02;
   nlohmann::json doc = scene_document(dx, 2.5e-4, 1.0, vec(0, 0, 0));
+  doc["simulation"]["viscosity_model"] = GetParam();
   doc["simulation"]["jitter"] = 0.1;
   doc["simulation"]["seed"] = 3;
   doc["materials"]["water"] = {{"rest_density", 1000.0}, {"pressure_stiffness", 100.0}, {"viscosity", 1.0}};
@@ -78,6 +82,8 @@ TEST(FluidPhysics, MomentumIsConservedBetweenFluidsAndRigidBodies) {
   // ... and the total is conserved to rounding (400 steps of sums of ~1e4 terms in double).
   EXPECT_LT((total_momentum() - before).norm(), 1e-10 * scale);
 }
+
+INSTANTIATE_TEST_SUITE_P(ViscosityModels, FluidMomentum, ::testing::Values("paper", "full_stress"));
 
 // A sphere of density 500 floats in water (1000) with half its volume submerged: the depth of
 // its lowest point below the free surface follows from the spherical cap whose volume is

@@ -48,13 +48,16 @@ void round_to_float(std::vector<Eigen::Vector3d>& positions) {
 
 }  // namespace
 
-std::vector<std::string> one_step_scene_names() { return {"fluid", "rigid", "deformable", "mixed", "mixed_far"}; }
+std::vector<std::string> one_step_scene_names() {
+  return {"fluid", "rigid", "deformable", "mixed", "mixed_far", "mixed_full_stress"};
+}
 
 OneStepScene one_step_scene(const std::string& name) {
   const bool far = name == "mixed_far";
-  OneStepScene scene{name,
-                     read_json(validation_file("kernels/one_step/" + (far ? std::string("mixed") : name) + ".json"))};
-  scene.deform = name == "deformable" || name == "mixed" || far;
+  const bool full_stress = name == "mixed_full_stress";
+  const std::string file = far || full_stress ? std::string("mixed") : name;
+  OneStepScene scene{name, read_json(validation_file("kernels/one_step/" + file + ".json"))};
+  scene.deform = name == "deformable" || file == "mixed";
   // No rotation in the mixed scenes: the jelly must stay clear of the water and the walls.
   scene.rotate_degrees = name == "deformable" ? 25.0 : 0.0;
   if (far) {
@@ -63,6 +66,10 @@ OneStepScene one_step_scene(const std::string& name) {
       for (int k = 0; k < 3; ++k) body["position"][k] = body["position"][k].get<double>() + offset[k];
     }
     scene.document["name"] = "one_step_mixed_far";
+  }
+  if (full_stress) {
+    scene.document["simulation"]["viscosity_model"] = "full_stress";
+    scene.document["name"] = "one_step_mixed_full_stress";
   }
   return scene;
 }
