@@ -24,13 +24,13 @@ Scene rotating_sphere_scene(double dx, double mu, double omega) {
   const double nu = mu / rho;
   const double c = std::max(100.0 * omega * radius, std::sqrt(100.0 * mu * omega / rho));
   const double dt = 0.8 * std::min(0.125 * h * h / nu, 0.25 * h / c);
-  // The 40 cm cube holds an even number of cells (32, 48, 80), so its fluid sites lie at
+  // The 40 cm cube holds an even number of cells (32, 80, 160), so its fluid sites lie at
   // (k + 1/2) dx; a sphere centred on one of them is sampled on the fluid's lattice and the fluid
   // meets it at one spacing (src/model/fluid_fill.hpp), not 1.5-1.7 as from the cube's centre.
   const std::string corner = exact(0.5 * dx);
   const std::vector<std::string> overrides{"simulation/particle_spacing=" + exact(dx),
                                            "simulation/dt=" + exact(dt),
-                                           "simulation/duration=" + exact(6.0 * radius * radius / nu),
+                                           "simulation/duration=" + exact(10.0 * radius * radius / nu),
                                            "materials/fluid/viscosity=" + exact(mu),
                                            "materials/fluid/pressure_stiffness=" + exact(c * c),
                                            "bodies/sphere/angular_velocity=[0, 0, " + exact(omega) + "]",

@@ -9,9 +9,9 @@ namespace mssph::validation {
 CaseResult run_rotating_sphere_case(const CaseContext& context) {
   CaseResult result;
   if (auto skipped = skipped_without_physics_backend(context, "torque on the rotating sphere")) return *skipped;
-  // Sphere radius R = 5 cm in spacings: --quick 4 (for 2 CPU cores), full 6 and 10.
+  // Sphere radius R = 5 cm in spacings: --quick 4 (for 2 CPU cores), full 10 and 20.
   const std::vector<double> radii_in_spacings =
-      context.quick ? std::vector<double>{4.0} : std::vector<double>{6.0, 10.0};
+      context.quick ? std::vector<double>{4.0} : std::vector<double>{10.0, 20.0};
   const double omega = 1.0;  // [rad/s]: Re = rho omega R^2 / mu = 0.25 at mu = 10 Pa s
   for (const double spacings : radii_in_spacings) {
     const double dx = 0.05 / spacings;
@@ -39,7 +39,7 @@ CaseResult run_rotating_sphere_case(const CaseContext& context) {
                         exact(m.omega_deviation) + ".\n";
     }
   }
-  result.resolution = context.quick ? "sphere radius 4 dx (dx = 1.25 cm)" : "sphere radius 6 and 10 dx";
+  result.resolution = context.quick ? "sphere radius 4 dx (dx = 1.25 cm)" : "sphere radius 10 and 20 dx";
   for (Check& c : result.checks) c.backend = context.physics_backend;
   return result;
 }
