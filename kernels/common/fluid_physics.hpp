@@ -354,6 +354,9 @@ MSSPH_HD ForceSum zero_force_sum() { return {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, st
 // body the kind is i's, never a boundary's (boundary particles receive no forces). A rigid or
 // deformable particle's own-body neighbours add nothing, and it loads the rest after the test
 // that leaves them out, so that its many left-out candidates load nothing more.
+// FullStress (viscosity_model full_stress, v.velocity_gradient set) adds the transposed stress term;
+// a template parameter, so that eq. 3's scenes run the pair loop without it.
+template <bool FullStress>
 MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const SortedView& v, std::uint32_t t) {
   if (t == i.s) return;
   const bool fluid = i.parameters.kind == kFluid;
@@ -386,10 +389,10 @@ MSSPH_HD void add_force_pair(ForceSum& sum, const ForceParticle& i, const Sorted
       pressure_force_pair(i.vp, vp_j, v.step.inverse_gradient_consistency, v.step.smoothing.spiky_gradient(r_ij, d));
   Vec3 viscosity =
       viscosity_force_pair(mu, i.vp.volume, vp_j.volume, v.step.smoothing.viscosity_laplacian(d.r), i.u, xyz(u_j));
-  if (v.velocity_gradient != nullptr && mu > 0.0f) {
+  if constexpr (FullStress) {
     // A rigid, deformable or boundary particle meeting a fluid one takes the fluid's gradient.
     const bool fluid_j = same_body ? fluid : v.bodies[body_j].kind == kFluid;
-    if (fluid || fluid_j) {
+    if (mu > 0.0f && (fluid || fluid_j)) {
       viscosity += transposed_stress_force_pair(
           mu, i.vp.volume, v.velocity_gradient[fluid ? i.s : t], vp_j.volume, v.velocity_gradient[fluid_j ? t : i.s],
           v.step.inverse_gradient_consistency, v.step.smoothing.spiky_gradient(r_ij, d));
@@ -426,12 +429,12 @@ MSSPH_HD VelocityGradientSums velocity_gradient_sums_over(const SortedView& v, s
 }
 
 // Particle i's pressure and viscosity sums over the candidates that candidates(visit) hands to
-// visit.
-template <class Candidates>
+// visit; FullStress as add_force_pair.
+template <bool FullStress = false, class Candidates>
 MSSPH_HD ForceSum force_sum_over(const SortedView& v, const ForceParticle& i, Candidates&& candidates) {
   ForceSum sum = zero_force_sum();
   if (receives_forces(i.parameters)) {
-    candidates([&](std::uint32_t t) { add_force_pair(sum, i, v, t); });
+    candidates([&](std::uint32_t t) { add_force_pair<FullStress>(sum, i, v, t); });
   }
   return sum;
 }
@@ -439,9 +442,9 @@ MSSPH_HD ForceSum force_sum_over(const SortedView& v, const ForceParticle& i, Ca
 // Particle i's pressure and viscosity sums in one lane, from the grid: the candidates within h,
 // found first and their segments kept in `held` (CellRanges::for_each_candidate_within), which
 // add_force_pair tests again.
-template <class Held>
+template <bool FullStress = false, class Held>
 MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, Held& held) {
-  return force_sum_over(
+  return force_sum_over<FullStress>(
       v, i, [&](auto&& visit) { v.grid.for_each_candidate_within(i.x, v.step.smoothing.h2, v.position, held, visit); });
 }
 
@@ -449,11 +452,11 @@ MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i, Held& h
 // first segments' masks from the notes, those past them tested. One walk for every particle, the
 // masks' source chosen per segment, so the force kernel holds one copy of it. Where no notes were
 // taken (`notes` empty), every segment is tested, as above.
-template <class Held>
+template <bool FullStress = false, class Held>
 MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& p, std::uint32_t i, const NearNotes& notes,
                             Held& held) {
   const std::uint32_t noted = notes.taken() && takes_near_notes(p.parameters) ? NearNotes::capacity : 0u;
-  return force_sum_over(v, p, [&](auto&& visit) {
+  return force_sum_over<FullStress>(v, p, [&](auto&& visit) {
     v.grid.for_each_candidate_near(
         p.x,
         [&](std::uint32_t k, std::uint32_t first, int size) {
@@ -478,9 +481,10 @@ MSSPH_HD ForceSum force_sum(const SortedView& v, const ForceParticle& i) {
 
 // The same share from list `list`, which a rebuild's density pass recorded from it
 // (density_sum_recording); an overflowed list walks the share itself.
+template <bool FullStress = false>
 MSSPH_HD ForceSum force_sum_listed(const SortedView& v, const ForceParticle& i, std::uint32_t lane, std::uint32_t lanes,
                                    const NeighbourLists& lists, std::uint32_t list) {
-  return force_sum_over(v, i, listed_share(v.grid, i.x, lane, lanes, lists, list));
+  return force_sum_over<FullStress>(v, i, listed_share(v.grid, i.x, lane, lanes, lists, list));
 }
 
 // ---- Step 4: integration ----

@@ -14,6 +14,18 @@
 
 namespace mssph::kernels {
 
+namespace {
+
+// Particle p's pressure and viscosity sums over its list, with the transposed stress term where the
+// scene's viscosity is full_stress (the pair loop is chosen once per particle).
+ForceSum force_sum_of(const SortedView& view, const ForceParticle& p, const NeighbourLists& lists) {
+  const auto candidates = neighbours_of(view, lists, p.s);
+  return view.velocity_gradient != nullptr ? force_sum_over<true>(view, p, candidates)
+                                           : force_sum_over<false>(view, p, candidates);
+}
+
+}  // namespace
+
 CpuBackend::CpuBackend(ParticleSetup setup)
     : setup_(std::move(setup)), scene_(make_float_scene_with_list_cells(setup_)) {
   const std::size_t n = setup_.size();
@@ -205,7 +217,7 @@ void CpuBackend::compute_forces_and_advance_particles() {
   const NeighbourLists lists = neighbour_lists();
   force_partition_.for_each([&](std::uint32_t s) {
     const ForceParticle particle = load_force_particle(view, s);
-    apply_forces(view, state, particle, force_sum_over(view, particle, neighbours_of(view, lists, s)));
+    apply_forces(view, state, particle, force_sum_of(view, particle, lists));
   });
 }
 
@@ -251,8 +263,7 @@ ForceEvaluation CpuBackend::evaluate_forces() {
   std::vector<ForceSum> sums(setup_.size());
   const auto n = static_cast<std::uint32_t>(setup_.size());
 #pragma omp parallel for schedule(static)
-  for (std::uint32_t s = 0; s < n; ++s)
-    sums[s] = force_sum_over(view, load_force_particle(view, s), neighbours_of(view, lists, s));
+  for (std::uint32_t s = 0; s < n; ++s) sums[s] = force_sum_of(view, load_force_particle(view, s), lists);
   return pack_force_evaluation(scene_, sorted_id_, volume_pressure_, sums, elastic_force_, rotation_);
 }
 

@@ -226,7 +226,7 @@ struct SharedHeldSegments {
   __device__ std::uint32_t near(std::uint32_t k) const { return near_[k][threadIdx.x]; }
 };
 
-template <unsigned Lanes>
+template <unsigned Lanes, bool FullStress>
 __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kSumBlock)
     forces_kernel(SortedView view, CanonicalState state, const std::uint8_t* near_other_body, NeighbourLists lists,
                   NearNotes notes) {
@@ -247,11 +247,11 @@ __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kS
     particle = load_force_particle(view, s);
     if (may_feel_forces(particle.parameters, near_other_body[s] != 0)) {
       if constexpr (kTeam) {
-        sum = force_sum_listed(view, particle, lane, Lanes, lists, list);
+        sum = force_sum_listed<FullStress>(view, particle, lane, Lanes, lists, list);
       } else {
         __shared__ std::uint32_t held_first[kHeldSegments][kSumBlock], held_near[kHeldSegments][kSumBlock];
         SharedHeldSegments held{held_first, held_near};
-        sum = force_sum(view, particle, i, notes, held);
+        sum = force_sum<FullStress>(view, particle, i, notes, held);
       }
     }
   }
@@ -355,8 +355,14 @@ void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_la
   const std::size_t n = state.position.size();
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
-    forces_kernel<L><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
-        sorted_view(scene, state), canonical_state(state), state.near_other_body.data(), team_lists(state, L), notes);
+    const SortedView view = sorted_view(scene, state);
+    if (scene.full_stress_viscosity) {
+      forces_kernel<L, true><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
+          view, canonical_state(state), state.near_other_body.data(), team_lists(state, L), notes);
+    } else {
+      forces_kernel<L, false><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
+          view, canonical_state(state), state.near_other_body.data(), team_lists(state, L), notes);
+    }
   });
 }
 
