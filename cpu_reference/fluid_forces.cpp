@@ -29,18 +29,18 @@ void compute_velocity_gradients(const ParticleSetup& setup, const NeighbourLists
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const BodySetup& body_i = setup.bodies[setup.body[i]];
+    state.velocity_gradient[i].setZero();
+    if (body_i.kind != BodyKind::fluid) continue;
     VelocityGradientSums sums;
-    if (body_i.kind == BodyKind::fluid) {
-      for (const std::size_t* jp = neighbours.begin(i); jp != neighbours.end(i); ++jp) {
-        const std::size_t j = *jp;
-        if (j == i) continue;
-        const BodySetup& body_j = setup.bodies[setup.body[j]];
-        if (pair_viscosity(body_i, body_j, setup.body[j] == setup.body[i]) <= 0.0) continue;
-        sums.add(state.volume[j], state.velocity[j] - state.velocity[i], state.position[j] - state.position[i],
-                 grad_w(state.position[i] - state.position[j]));
-      }
+    for (const std::size_t* jp = neighbours.begin(i); jp != neighbours.end(i); ++jp) {
+      const std::size_t j = *jp;
+      if (j == i) continue;
+      const BodySetup& body_j = setup.bodies[setup.body[j]];
+      if (pair_viscosity(body_i, body_j, setup.body[j] == setup.body[i]) <= 0.0) continue;
+      sums.add(state.volume[j], state.velocity[j] - state.velocity[i], state.position[j] - state.position[i],
+               grad_w(state.position[i] - state.position[j]));
     }
-    state.velocity_gradient[i] = body_i.kind == BodyKind::fluid ? sums.gradient() : Eigen::Matrix3d::Zero();
+    state.velocity_gradient[i] = sums.gradient();
   }
 }
 

@@ -23,7 +23,6 @@ enum class ShapeType { box, sphere, container };
 enum class ViscosityModel { paper, full_stress };
 
 const char* to_string(BodyKind kind);
-const char* to_string(ViscosityModel model);
 
 struct Shape {
   ShapeType type = ShapeType::box;

@@ -349,8 +349,6 @@ bool is_valid_utf8(const std::string& text) {
 
 }  // namespace
 
-const char* to_string(ViscosityModel model) { return model == ViscosityModel::full_stress ? "full_stress" : "paper"; }
-
 const char* to_string(BodyKind kind) {
   switch (kind) {
     case BodyKind::fluid:

@@ -17,6 +17,9 @@ namespace {
 struct Lattice {
   double dx;
   double rest_number_density;
+
+  // A particle volume of 0.5 to 1.5 cells dx^3, rounded to float32.
+  double draw_volume(TwinDraws& draws) const { return TwinDraws::rounded(draws.uniform(0.5, 1.5) * dx * dx * dx); }
 };
 Lattice draw_lattice(TwinDraws& draws) {
   const double dx = draws.uniform(0.01, 0.05);
@@ -64,9 +67,8 @@ TEST(FluidEquationTwins, PressureForcePair) {
   TwinComparison force("pressure force pair (eq. 2)");
   for (int k = 0; k < kDraws; ++k) {
     const Lattice lattice = draw_lattice(draws);
-    const double cell = lattice.dx * lattice.dx * lattice.dx;
-    const double volume_i = TwinDraws::rounded(draws.uniform(0.5, 1.5) * cell);
-    const double volume_j = TwinDraws::rounded(draws.uniform(0.5, 1.5) * cell);
+    const double volume_i = lattice.draw_volume(draws);
+    const double volume_j = lattice.draw_volume(draws);
     const double pressure_i = draws.uniform(0.0, 1e4), pressure_j = draws.uniform(0.0, 1e4);
     const double consistency = draws.uniform(0.9, 1.0);
     const double h = 2.0 * lattice.dx;
@@ -88,11 +90,10 @@ TEST(FluidEquationTwins, ViscosityForcePair) {
   TwinComparison force("viscosity force pair (eq. 3)");
   for (int k = 0; k < kDraws; ++k) {
     const Lattice lattice = draw_lattice(draws);
-    const double cell = lattice.dx * lattice.dx * lattice.dx;
     const double h = 2.0 * lattice.dx;
     const double mu = draws.uniform(1e-3, 10.0);
-    const double volume_i = TwinDraws::rounded(draws.uniform(0.5, 1.5) * cell);
-    const double volume_j = TwinDraws::rounded(draws.uniform(0.5, 1.5) * cell);
+    const double volume_i = lattice.draw_volume(draws);
+    const double volume_j = lattice.draw_volume(draws);
     const double laplacian = TwinDraws::rounded(draws.uniform(0.0, 1.0) * 45.0 / (std::numbers::pi * std::pow(h, 5)));
     const Eigen::Vector3d velocity_i = draws.vector(1.0), velocity_j = draws.vector(1.0);
     const Eigen::Vector3d expected =
@@ -168,10 +169,9 @@ TEST(FluidEquationTwins, TransposedStressForcePair) {
   TwinComparison force("transposed stress force pair (full_stress)");
   for (int k = 0; k < kDraws; ++k) {
     const Lattice lattice = draw_lattice(draws);
-    const double cell = lattice.dx * lattice.dx * lattice.dx;
     const double mu = draws.uniform(1e-3, 10.0);
-    const double volume_i = TwinDraws::rounded(draws.uniform(0.5, 1.5) * cell);
-    const double volume_j = TwinDraws::rounded(draws.uniform(0.5, 1.5) * cell);
+    const double volume_i = lattice.draw_volume(draws);
+    const double volume_j = lattice.draw_volume(draws);
     const Eigen::Matrix3d gradient_i = draws.matrix(10.0), gradient_j = draws.matrix(10.0);
     const double consistency = draws.uniform(0.9, 1.0);
     const Eigen::Vector3d grad_w = draws.vector(45.0 / (std::numbers::pi * std::pow(2.0 * lattice.dx, 4)));
