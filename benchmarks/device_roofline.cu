@@ -1,6 +1,7 @@
 // The card's own limits, for the roofline estimates beside the step times (results/current/):
-// DRAM bandwidth (a streaming copy far larger than L2) and FP32 rate (independent FMA chains).
-// Both report what they achieve, not the datasheet's peak.
+// DRAM bandwidth (a streaming copy far larger than L2), FP32 rate (independent FMA chains) and the
+// time a replayed graph spends per dependent kernel node that does no work (the floor of a step of
+// N kernels is N times it). All report what they achieve, not the datasheet's peak.
 #include <benchmark/benchmark.h>
 #include <cuda_runtime.h>
 
@@ -34,6 +35,8 @@ __global__ void fma_kernel(float* out, float seed) {
   for (int c = 0; c < kChains; ++c) sum += acc[c];
   if (sum == 12345.0f) out[0] = sum;  // keeps the chains alive; never true for these inputs
 }
+
+__global__ void empty_kernel() {}
 
 double elapsed_seconds(cudaEvent_t start, cudaEvent_t stop) {
   float ms = 0.0f;
@@ -88,8 +91,45 @@ void BM_fp32_fma(benchmark::State& state) {
   cudaEventDestroy(stop);
 }
 
+// A graph of kNodes empty kernels, each depending on the one before, as a step's graph chains its
+// passes; state.range(0) blocks of 256 threads each (1, or as many as a 30k-particle pass).
+constexpr int kNodes = 64;
+
+void BM_graph_node(benchmark::State& state) {
+  const unsigned blocks = static_cast<unsigned>(state.range(0));
+  cudaStream_t stream = nullptr;
+  if (!cuda_ok(cudaStreamCreateWithFlags(&stream, cudaStreamNonBlocking), state)) return;
+  cudaGraph_t graph = nullptr;
+  cudaGraphExec_t exec = nullptr;
+  cudaStreamBeginCapture(stream, cudaStreamCaptureModeThreadLocal);
+  for (int k = 0; k < kNodes; ++k) empty_kernel<<<blocks, 256, 0, stream>>>();
+  if (!cuda_ok(cudaStreamEndCapture(stream, &graph), state) || !cuda_ok(cudaGraphInstantiate(&exec, graph, 0), state)) {
+    return;
+  }
+  cudaEvent_t start, stop;
+  cudaEventCreate(&start);
+  cudaEventCreate(&stop);
+  cudaGraphLaunch(exec, stream);  // the first replay uploads the graph
+  cudaStreamSynchronize(stream);
+  for (auto _ : state) {
+    cudaEventRecord(start, stream);
+    cudaGraphLaunch(exec, stream);
+    cudaEventRecord(stop, stream);
+    cudaEventSynchronize(stop);
+    state.SetIterationTime(elapsed_seconds(start, stop));
+  }
+  state.counters["seconds_per_node"] =
+      benchmark::Counter(kNodes, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  cudaGraphExecDestroy(exec);
+  cudaGraphDestroy(graph);
+  cudaEventDestroy(start);
+  cudaEventDestroy(stop);
+  cudaStreamDestroy(stream);
+}
+
 }  // namespace
 
+BENCHMARK(BM_graph_node)->Name("device/graph_node")->Arg(1)->Arg(118)->UseManualTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_dram_copy)->Name("device/dram_copy")->UseManualTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_fp32_fma)->Name("device/fp32_fma")->UseManualTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK_MAIN();

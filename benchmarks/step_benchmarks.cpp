@@ -130,6 +130,11 @@ void time_steps(benchmark::State& state, const Scene& scene, const std::string& 
     state.counters["phase_" + phases[p] + "_seconds"] = phase_seconds[p] / static_cast<double>(state.iterations());
   }
   state.counters["particles"] = sim.particles();
+  // A backend that replays a captured step: its launch floor is set by how many nodes it holds.
+  if (const auto graph = sim.backend().step_graph_size()) {
+    state.counters["graph_nodes_per_step"] = static_cast<double>(graph->nodes);
+    state.counters["graph_kernels_per_step"] = static_cast<double>(graph->kernels);
+  }
   state.counters["step_seconds"] = benchmark::Counter(static_cast<double>(state.iterations()) * kBatch,
                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }

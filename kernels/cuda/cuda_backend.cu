@@ -22,6 +22,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace mssph::kernels {
 namespace {
@@ -51,6 +52,7 @@ class CudaBackend final : public Backend {
   void set_phase_timing(bool on) override { phase_timing_ = on; }
   void synchronize() override { cuda_check(cudaStreamSynchronize(stream_), "synchronise"); }
   std::optional<std::uint64_t> neighbour_grid_builds() override;
+  std::optional<StepGraphSize> step_graph_size() const override;
   ForceEvaluation evaluate_forces() override;
   void set_particle_positions(const std::vector<Eigen::Vector3d>& positions) override;
   StateArrays save_state() override;
@@ -258,6 +260,21 @@ void CudaBackend::step() {
   time_ += setup_.dt;
   ++steps_;
   last_step_timed_ = phase_timing_;
+}
+
+// The untimed step's graph: what one launch of step() runs.
+std::optional<Backend::StepGraphSize> CudaBackend::step_graph_size() const {
+  std::size_t count = 0;
+  cuda_check(cudaGraphGetNodes(plain_step_.graph, nullptr, &count), "count the step graph's nodes");
+  std::vector<cudaGraphNode_t> nodes(count);
+  cuda_check(cudaGraphGetNodes(plain_step_.graph, nodes.data(), &count), "list the step graph's nodes");
+  StepGraphSize size{count, 0};
+  for (cudaGraphNode_t node : nodes) {
+    cudaGraphNodeType type{};
+    cuda_check(cudaGraphNodeGetType(node, &type), "read a step graph node's type");
+    if (type == cudaGraphNodeTypeKernel) ++size.kernels;
+  }
+  return size;
 }
 
 // NaN for every phase when the last step ran without its events (Backend::set_phase_timing).

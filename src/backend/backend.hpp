@@ -107,6 +107,14 @@ class Backend {
   // when they expire (kernels/common/list_skin.hpp). Empty when it is built every step.
   virtual std::optional<std::uint64_t> neighbour_grid_builds() { return std::nullopt; }
 
+  // The size of one step where a backend replays it as a captured graph (the cuda backend): all
+  // its nodes, and of them the kernels. Empty where a step runs as host code.
+  struct StepGraphSize {
+    std::size_t nodes = 0;
+    std::size_t kernels = 0;
+  };
+  virtual std::optional<StepGraphSize> step_graph_size() const { return std::nullopt; }
+
   // The step's phases, the same for every backend so that `/timing/phases` compare by name:
   // the paper's loop (3.2) after the neighbour search.
   //   neighbours   the neighbour search (the float backends' cell grid);
