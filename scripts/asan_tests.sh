@@ -51,8 +51,8 @@ programs=(
 
 # Left out for time: each of these simulates seconds of settling or many periods, one to several
 # minutes under the sanitizers (measured on 2 cores: the Hertz contact over 5 minutes, the
-# cantilever's deflection 80 s and frequency 53 s, the free bar 46 s, the fluid column and the
-# floating sphere several minutes). They run uninstrumented in scripts/test.sh; the same step
+# cantilever's deflection 80 s and frequency 53 s, the free bar 46 s, the fluid column several
+# minutes; the floating sphere settles through 1.5 s of simulated time). They run uninstrumented in scripts/test.sh; the same step
 # functions run here in the shorter cases (the bar's damping case is the free bar over 4 periods
 # instead of 10). Programs: deformable_cantilever_test, deformable_cantilever_frequency_test,
 # deformable_hertz_test are not built; single cases (the restart runs simulate 4.8 s of

@@ -87,8 +87,9 @@ INSTANTIATE_TEST_SUITE_P(ViscosityModels, FluidMomentum, ::testing::Values("pape
 
 // A sphere of density 500 floats in water (1000) with half its volume submerged: the depth of
 // its lowest point below the free surface follows from the spherical cap whose volume is
-// M / rho_water. Tolerance 10% (the issue's), for a sphere of radius 3 spacings: the quick case's
-// spacing, which the cpu backend runs in CI's quick validation; here the reference runs it.
+// M / rho_water. Tolerance 10% (the issue's, set for a sphere of radius 5 spacings), here at the
+// quick case's 3 spacings, which keep it (validation/physics/archimedes/README.md); the cpu
+// backend runs that case in CI's quick validation, the reference runs it here.
 TEST(FluidPhysics, LightSphereFloatsAtArchimedesDepth) {
   // 1.5 s: the bobbing (period ~0.5 s) dies out under viscosity.
   const Scene base = case_scene("archimedes");

@@ -18,12 +18,12 @@ std::pair<double, double> cube_wall_factor_bracket(double radius, double half_wi
 }
 
 Scene rotating_sphere_scene(double dx, double mu, double omega) {
-  const double rho = 1000.0;
-  const double radius = 0.05;
+  const double rho = kRotatingSphereFluidDensity;
+  const double radius = kRotatingSphereRadius;
   const double h = 2.0 * dx;
   const double nu = mu / rho;
   // Mach number omega R / c <= 0.01 and viscous stress over rho c^2 <= 4e-4 (decision 058: the
-  // torque settles lower and later as mu omega / (rho c^2) grows).
+  // torque settles lower as mu omega / (rho c^2) grows).
   const double c = std::max(100.0 * omega * radius, std::sqrt(mu * omega / (4.0e-4 * rho)));
   const double dt = 0.8 * std::min(0.125 * h * h / nu, 0.25 * h / c);
   // The 40 cm cube holds an even number of cells (32, 80, 160), so its fluid sites lie at

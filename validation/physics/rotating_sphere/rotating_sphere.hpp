@@ -1,6 +1,6 @@
 #pragma once
-// The fluid's torque on a sphere turned at a prescribed angular velocity, on any backend; shared by
-// the physics case and its unit test.
+// The fluid's torque on a sphere turned at a prescribed angular velocity, on any backend: the
+// physics case's measurement.
 #include "config/scene.hpp"
 
 #include <string>
@@ -34,6 +34,10 @@ struct RotatingSphereMeasurement {
 // (Lamb, sec. 334; Happel and Brenner, Low Reynolds Number Hydrodynamics, sec. 5-3), a factor that
 // falls as the container grows. Returns {low, high}: the circumscribed and inscribed spheres'.
 std::pair<double, double> cube_wall_factor_bracket(double radius, double half_width);
+
+// The sphere's radius [m] and the fluid's rest density [kg/m^3] of the case's scene (scene.json).
+inline constexpr double kRotatingSphereRadius = 0.05;
+inline constexpr double kRotatingSphereFluidDensity = 1000.0;
 
 // The case's scene (scene.json) at spacing dx with viscosity mu [Pa s], the sphere turning at
 // omega [rad/s] from the start: the sound speed keeps the flow's Mach number omega R / c at or

@@ -13,12 +13,13 @@ CaseResult run_rotating_sphere_case(const CaseContext& context) {
   const std::vector<double> radii_in_spacings =
       context.quick ? std::vector<double>{4.0} : std::vector<double>{10.0, 20.0};
   for (const double spacings : radii_in_spacings) {
-    const double dx = 0.05 / spacings;
+    const double dx = kRotatingSphereRadius / spacings;
     const bool finest = spacings == radii_in_spacings.back();
     for (const double mu : {10.0, 100.0}) {
       // Re = rho omega R^2 / mu = 0.25 at both viscosities (omega 1 and 10 rad/s): the SPH torque
       // depends on the strain the flow has carried, which Re sets per viscous time (decision 058).
-      const double omega = 0.25 * mu / (1000.0 * 0.05 * 0.05);  // [rad/s]
+      const double omega =
+          0.25 * mu / (kRotatingSphereFluidDensity * kRotatingSphereRadius * kRotatingSphereRadius);  // [rad/s]
       const RotatingSphereMeasurement m =
           measure_rotating_sphere(context.physics_backend, rotating_sphere_scene(dx, mu, omega), omega);
       const std::string label =
