@@ -12,16 +12,20 @@ namespace mssph::testing {
 namespace {
 
 // The deformable drop gives every phase work: the grid, the rotations and elastic forces, the
-// densities, the forces and the rigid sphere's dynamics.
+// densities, the forces and the rigid sphere's dynamics. The fluid drop has no deformable body,
+// so its step leaves out the rotation and elastic kernels.
 ParticleSetup every_phase_scene() { return coarse_scene("sphere_drop_deformable.json", 0.01); }
+ParticleSetup no_deformable_scene() { return coarse_scene("sphere_drop_fluid.json", 0.01); }
 
-TEST(StepGraph, CudaStepHoldsAKernelForEachPhaseAtLeast) {
+TEST(StepGraph, CudaStepHoldsAKernelForEachPhaseAndOnlyThePassesItsSceneNeeds) {
   MSSPH_SKIP_WITHOUT("cuda");
-  const std::unique_ptr<Backend> backend = make_backend("cuda", every_phase_scene());
-  const std::optional<Backend::StepGraphSize> size = backend->step_graph_size();
-  ASSERT_TRUE(size.has_value());
-  EXPECT_GE(size->kernels, static_cast<std::size_t>(Backend::kPhaseCount));
-  EXPECT_GE(size->nodes, size->kernels);
+  const std::optional<Backend::StepGraphSize> every = make_backend("cuda", every_phase_scene())->step_graph_size();
+  const std::optional<Backend::StepGraphSize> fewer = make_backend("cuda", no_deformable_scene())->step_graph_size();
+  ASSERT_TRUE(every.has_value());
+  ASSERT_TRUE(fewer.has_value());
+  EXPECT_GE(every->kernels, static_cast<std::size_t>(Backend::kPhaseCount));
+  EXPECT_LT(fewer->kernels, every->kernels);
+  EXPECT_LT(fewer->nodes, every->nodes);
 }
 
 TEST(StepGraph, HostBackendsReportNone) {
