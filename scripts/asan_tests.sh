@@ -52,15 +52,15 @@ programs=(
 # Left out for time: each of these simulates seconds of settling or many periods, one to several
 # minutes under the sanitizers (measured on 2 cores: the Hertz contact over 5 minutes, the
 # cantilever's deflection 80 s and frequency 53 s, the free bar 46 s, the fluid column several
-# minutes; the floating sphere settles through 1.5 s of simulated time). They run uninstrumented in scripts/test.sh; the same step
-# functions run here in the shorter cases (the bar's damping case is the free bar over 4 periods
-# instead of 10). Programs: deformable_cantilever_test, deformable_cantilever_frequency_test,
-# deformable_hertz_test are not built; single cases (the restart runs simulate 4.8 s of
-# tap_squeeze_stir three times per backend; the checkpoint code runs here in mssph_io_tests'
-# Checkpoints cases and the CLI's RestartRefusal cases; the three sphere drops, 2000 steps each
-# on the cpu backend and the reference, took 43 to 110 s, while BackendAgreement.RunsAreBitIdentical
-# runs the cpu backend's fluid and deformable drops here, and the reference's step runs in the
-# physics programs above):
+# minutes; the floating sphere settles through 1.5 s of simulated time). They run uninstrumented in
+# scripts/test.sh; the same step functions run here in the shorter cases (the bar's damping case is
+# the free bar over 4 periods instead of 10). Programs: deformable_cantilever_test,
+# deformable_cantilever_frequency_test, deformable_hertz_test are not built; single cases (the
+# restart runs simulate 4.8 s of tap_squeeze_stir three times per backend; the checkpoint code runs
+# here in mssph_io_tests' Checkpoints cases and the CLI's RestartRefusal cases; the three sphere
+# drops, 2000 steps each on the cpu backend and the reference, took 43 to 110 s, while
+# BackendAgreement.RunsAreBitIdentical runs the cpu backend's fluid and deformable drops here, and
+# the reference's step runs in the physics programs above):
 left_out=(
   'FluidPhysics\.SettledColumnHasHydrostaticPressure'
   'FluidPhysics\.LightSphereFloatsAtArchimedesDepth'

@@ -93,7 +93,8 @@ INSTANTIATE_TEST_SUITE_P(ViscosityModels, FluidMomentum, ::testing::Values("pape
 TEST(FluidPhysics, LightSphereFloatsAtArchimedesDepth) {
   // 1.5 s: the bobbing (period ~0.5 s) dies out under viscosity.
   const Scene base = case_scene("archimedes");
-  const Scene scene = validation::case_scene("physics/archimedes", validation::resolution_overrides(base, 0.2 / 6.0));
+  const Scene scene = validation::case_scene(
+      "physics/archimedes", validation::resolution_overrides(base, validation::kArchimedesQuickSpacing));
   const validation::FloatingMeasurement m = validation::measure_floating("reference", scene);
   EXPECT_NEAR(m.depth, m.expected_depth, 0.1 * m.expected_depth);
   EXPECT_LT(m.vertical_speed, 0.02);  // settled

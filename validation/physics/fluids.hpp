@@ -43,4 +43,8 @@ struct FloatingMeasurement {
 };
 FloatingMeasurement measure_floating(const std::string& backend, const Scene& scene);
 
+// The archimedes case's --quick spacing [m]: its sphere of radius 10 cm is 3 spacings across in
+// radius, coarse enough for 2 CPU cores. The reference's unit test runs it too.
+inline constexpr double kArchimedesQuickSpacing = 0.2 / 6.0;
+
 }  // namespace mssph::validation

@@ -7,8 +7,8 @@ namespace mssph::validation {
 CaseResult run_archimedes_case(const CaseContext& context) {
   CaseResult result;
   if (auto skipped = skipped_without_physics_backend(context, "floating depth")) return *skipped;
-  // --quick: sphere radius 3 dx, for 2 CPU cores (the reference's unit test runs it too); full: 0.01 m.
-  const double dx = context.quick ? 0.2 / 6.0 : 0.01;
+  // --quick: sphere radius 3 dx (kArchimedesQuickSpacing); full: 0.01 m, 10 dx.
+  const double dx = context.quick ? kArchimedesQuickSpacing : 0.01;
   const Scene base = case_scene("physics/archimedes");
   for (const double density : {500.0, 700.0}) {
     std::vector<std::string> overrides = resolution_overrides(base, dx);
