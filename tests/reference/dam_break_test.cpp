@@ -52,9 +52,10 @@ struct Collapse {
 };
 
 // The case's checks at a = 10 dx (coarser than the case's, for the suite's time).
+constexpr double kSpacing = validation::kDamBreakColumnWidth / 10.0;
 Collapse collapse(const std::vector<std::string>& overrides, const std::string& backend = "reference") {
   const validation::DamBreakMeasurement m =
-      validation::measure_dam_break(backend, validation::dam_break_scene(0.146 / 10.0, overrides), 0.002);
+      validation::measure_dam_break(backend, validation::dam_break_scene(kSpacing, overrides), 0.002);
   const validation::NondimensionalCollapse c = validation::nondimensional(m);
   const validation::DamBreakExperiment& experiment = validation::martin_moyce_1952();
   return {validation::compare_surge(c, experiment), validation::largest_height_deviation(c, experiment)};
@@ -76,10 +77,9 @@ TEST(DamBreak, WaterColumnCollapsesAsMartinAndMoyceMeasuredAndAViscousOneDoesNot
 // height's largest deviation is 21.6 % at h = 1.5 dx and 3.2 % at h = 2.5 dx (9.3 % at the
 // default 2 dx). The full case lets h / dx grow with the resolution for this (decision 061).
 TEST(DamBreak, AWiderKernelSupportDrainsTheColumnAsMeasured) {
-  const double dx = 0.146 / 10.0;
-  const std::string narrow_h = "simulation/smoothing_length=" + validation::exact(1.5 * dx);
-  const std::string wide_h = "simulation/smoothing_length=" + validation::exact(2.5 * dx);
-  ASSERT_DOUBLE_EQ(validation::dam_break_scene(dx, {wide_h}).simulation.smoothing_length, 2.5 * dx);
+  const std::string narrow_h = "simulation/smoothing_length=" + validation::exact(1.5 * kSpacing);
+  const std::string wide_h = "simulation/smoothing_length=" + validation::exact(2.5 * kSpacing);
+  ASSERT_DOUBLE_EQ(validation::dam_break_scene(kSpacing, {wide_h}).simulation.smoothing_length, 2.5 * kSpacing);
   const Collapse narrow = collapse({narrow_h}, "cpu");
   const Collapse wide = collapse({wide_h}, "cpu");
   EXPECT_GT(narrow.largest_height_deviation - wide.largest_height_deviation, 0.10);

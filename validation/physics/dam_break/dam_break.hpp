@@ -26,6 +26,9 @@ struct DamBreakMeasurement {
 };
 DamBreakMeasurement measure_dam_break(const std::string& backend, const Scene& scene, double sample_interval);
 
+// The column's width a of the case's scene (scene.json, the water box's x size) [m].
+inline constexpr double kDamBreakColumnWidth = 0.146;
+
 // The case's scene at spacing dx (a divisor of a / 2, the slab's thickness), the step in
 // proportion to dx (the acoustic bound), then `overrides` (--set syntax).
 Scene dam_break_scene(double dx, const std::vector<std::string>& overrides = {});

@@ -32,7 +32,7 @@ CaseResult run_dam_break_case(const CaseContext& context) {
   const DamBreakExperiment& primary = martin_moyce_1952();
   const DamBreakExperiment& second = koshizuka_oka_1996();
   for (const Resolution& r : resolutions) {
-    const double dx = 0.146 / r.spacings;
+    const double dx = kDamBreakColumnWidth / r.spacings;
     const Scene scene = dam_break_scene(dx, {"simulation/smoothing_length=" + exact(r.support * dx)});
     const DamBreakMeasurement m = measure_dam_break(context.physics_backend, scene, 0.002);
     const NondimensionalCollapse c = nondimensional(m);
