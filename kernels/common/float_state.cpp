@@ -26,7 +26,7 @@ constexpr std::size_t kFloatsPerVec4 = sizeof(Vec4) / sizeof(float);
 
 // The moving part of a rigid body, in this order.
 struct RigidMotion {
-  Vec3 position;
+  Vec3 position, position_carry;
   Quat orientation;
   Vec3 velocity, angular_momentum, external_force, external_torque, interaction_force, interaction_torque;
 };
@@ -48,8 +48,8 @@ StateArrays save_float_state(const FloatRunState& state) {
   out.put("fixed", state.fixed);
   std::vector<RigidMotion> motion;
   for (const RigidBody& b : state.rigid_bodies) {
-    motion.push_back({b.position, b.orientation, b.velocity, b.angular_momentum, b.external_force, b.external_torque,
-                      b.interaction_force, b.interaction_torque});
+    motion.push_back({b.position, b.position_carry, b.orientation, b.velocity, b.angular_momentum, b.external_force,
+                      b.external_torque, b.interaction_force, b.interaction_torque});
   }
   out.put("rigid_bodies", as_floats(motion));
   out.put("rotation", as_floats(state.rotation));
@@ -75,6 +75,7 @@ FloatRunState restore_float_state(const StateArrays& saved, const FloatScene& sc
     RigidBody& body = state.rigid_bodies[b];
     const RigidMotion& m = motion[b];
     body.position = m.position;
+    body.position_carry = m.position_carry;
     body.orientation = m.orientation;
     body.velocity = m.velocity;
     body.angular_momentum = m.angular_momentum;

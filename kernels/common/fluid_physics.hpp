@@ -19,6 +19,7 @@
 // force_sum_listed; list_skin.hpp); the host visits the particle's neighbour list. Lists
 // (neighbour_list.hpp) give the same bits as the walks they were recorded from, as long as the
 // particles stay where they were.
+#include "compensated_position.hpp"
 #include "near_notes.hpp"
 #include "neighbour_list.hpp"
 #include "particle_views.hpp"
@@ -320,13 +321,15 @@ struct ForceParticle {
   BodyParameters parameters;
   Vec3 x;
   Vec3 u;
+  float position_carry;  // the last position update's rounding (compensated_position.hpp)
   VolumePressure vp;
 };
 
 MSSPH_HD ForceParticle load_force_particle(const SortedView& v, std::uint32_t s) {
   const Vec4 p = v.position[s];
   const std::uint32_t body = body_of(p);
-  return {s, body, v.bodies[body], xyz(p), xyz(v.velocity[s]), v.volume_pressure[s]};
+  const Vec4 u = v.velocity[s];
+  return {s, body, v.bodies[body], xyz(p), xyz(u), u.w, v.volume_pressure[s]};
 }
 
 struct ForceSum {
@@ -491,14 +494,18 @@ MSSPH_HD ForceSum force_sum_listed(const SortedView& v, const ForceParticle& i, 
 
 // Leap-frog with staggered velocities for fluid and deformable particles:
 // v_{n+1/2} = v_{n-1/2} + (f / m + g) dt, x_{n+1} = x_n + v_{n+1/2} dt; held particles stay.
+// The position update is compensated: its rounding rides in velocity.w (compensated_position.hpp).
 MSSPH_HD void leapfrog(Vec4& position, Vec4& velocity, Vec3 force, float mass, bool held, const StepParameters& step) {
   if (held) {
     velocity = Vec4{0, 0, 0, 0};
     return;
   }
   const Vec3 v = xyz(velocity) + step.dt * (force * (1.0f / mass) + step.gravity);
-  velocity = make_vec4(v, 0.0f);
-  position = make_vec4(xyz(position) + step.dt * v, 0.0f);
+  Vec3 x = xyz(position);
+  float carry = velocity.w;
+  move_compensated(x, carry, step.dt * v);
+  velocity = make_vec4(v, carry);
+  position = make_vec4(x, 0.0f);
 }
 
 // Step 4 of sorted particle s before its wall check, in registers: nothing is written, so every
@@ -525,7 +532,7 @@ MSSPH_HD Advance advance_particle(const StepParameters& step, const CanonicalSta
   if (c.elastic_force) total += xyz(c.elastic_force[a.i]);
   a.integrates = true;
   a.position = make_vec4(p.x, 0.0f);
-  a.velocity = make_vec4(p.u, 0.0f);
+  a.velocity = make_vec4(p.u, p.position_carry);
   a.previous = p.x;
   leapfrog(a.position, a.velocity, total, p.parameters.sph_mass, c.fixed[a.i] != 0, step);
   a.may_hit_wall = !surely_clear_of_walls(f.nearest_boundary2, squared_norm(xyz(a.position) - a.previous),

@@ -84,7 +84,7 @@ struct SortedView {
   const BodyParameters* bodies;
   CellRanges grid;
   const Vec4* position;                   // sorted: xyz [m], w = body index bits
-  const Vec4* velocity;                   // sorted: xyz [m/s]
+  const Vec4* velocity;                   // sorted: xyz [m/s], w the position carry
   const std::uint32_t* id;                // sorted -> canonical index
   const VolumePressure* volume_pressure;  // sorted, written by the density pass
   // Canonical: a rigid or deformable particle's own-body number density at rest [1/m^3], the part
@@ -103,7 +103,7 @@ enum HoldCode : std::uint8_t { kFree = 0, kFixedRegion = 1, kLeftDomain = 2 };
 // The evolving canonical state.
 struct CanonicalState {
   Vec4* position;             // xyz [m]
-  Vec4* velocity;             // xyz [m/s]
+  Vec4* velocity;             // xyz [m/s], w the position carry (compensated_position.hpp)
   Vec4* interaction_force;    // xyz [N]: from other bodies, eq. 7
   const Vec4* elastic_force;  // xyz [N]: deformable particles, else zero (may be null)
   std::uint8_t* fixed;        // HoldCode: held by a fixed region, or since it left the domain

@@ -4,6 +4,7 @@
 // (cpu_reference/rigid_body_dynamics.hpp): semi-implicit Euler on the linear and angular
 // momentum, orientation advanced by exp(omega dt). Eq. 8 and 9 are rigid_body_force and
 // rigid_body_torque, named as their float64 twins (tests/equations/ checks each against it).
+#include "compensated_position.hpp"
 #include "vec_math.hpp"
 
 #include <cstdint>
@@ -15,6 +16,7 @@ struct RigidBody {
   float mass;                  // [kg]
   Mat3 inverse_inertia_body;   // [1/(kg m^2)]
   Vec3 position;               // centre of mass [m]
+  Vec3 position_carry;         // what its last move rounded off (compensated_position.hpp) [m]
   Quat orientation;
   Vec3 velocity;            // [m/s]
   Vec3 angular_momentum;    // [kg m^2/s]
@@ -48,11 +50,12 @@ MSSPH_HD Vec3 rigid_body_force(const RigidBody& b) { return b.interaction_force 
 // Paper eq. 9: tau = sum_i tau_i^interaction + tau_device, about the centre of mass.
 MSSPH_HD Vec3 rigid_body_torque(const RigidBody& b) { return b.interaction_torque + b.external_torque; }
 
-// Semi-implicit Euler under the force and torque of eq. 8, 9 (reference: integrate_rigid_body).
+// Semi-implicit Euler under the force and torque of eq. 8, 9 (reference: integrate_rigid_body),
+// the centre moved by a compensated sum.
 MSSPH_HD void integrate_rigid_body(RigidBody& b, Vec3 gravity, float dt) {
   b.velocity += dt * (rigid_body_force(b) * (1.0f / b.mass) + gravity);
   b.angular_momentum += dt * rigid_body_torque(b);
-  b.position += dt * b.velocity;
+  add_compensated(b.position, b.position_carry, dt * b.velocity);
   const Vec3 omega = angular_velocity(b);
   const float speed = norm(omega);
   if (speed > 0.0f) b.orientation = normalized(axis_angle((1.0f / speed) * omega, speed * dt) * b.orientation);

@@ -270,8 +270,9 @@ ForceEvaluation CpuBackend::evaluate_forces() {
 void CpuBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& positions) {
   for (std::size_t i = 0; i < setup_.size(); ++i) {
     const std::uint32_t kind = scene_.bodies[scene_.body[i]].kind;
-    if (kind == kFluid || kind == kDeformable)
-      scene_.position[i] = make_vec4(scene_.to_kernel_frame(positions[i]), 0.0f);
+    if (kind != kFluid && kind != kDeformable) continue;
+    scene_.position[i] = make_vec4(scene_.to_kernel_frame(positions[i]), 0.0f);
+    scene_.velocity[i].w = 0.0f;  // no carry: the position is a new start (compensated_position.hpp)
   }
   rebuild_requested_ = true;
 }

@@ -197,13 +197,16 @@ ForceEvaluation CudaBackend::evaluate_forces() {
 void CudaBackend::set_particle_positions(const std::vector<Eigen::Vector3d>& positions) {
   cuda_check(cudaStreamSynchronize(stream_), "set positions");
   std::vector<Vec4> current = state_.position.download();
+  std::vector<Vec4> velocity = state_.velocity.download();
   for (std::size_t i = 0; i < current.size(); ++i) {
     const std::uint32_t kind = scene_.bodies[scene_.body[i]].kind;
     if (kind == kFluid || kind == kDeformable) {
       current[i] = make_vec4(scene_.to_kernel_frame(positions[i]), 0.0f);
+      velocity[i].w = 0.0f;  // no carry: the position is a new start (compensated_position.hpp)
     }
   }
   state_.position.upload(current);
+  state_.velocity.upload(velocity);
   request_list_rebuild();
 }
 
