@@ -40,7 +40,8 @@ class StateArrays {
     if (!values) throw InputError("checkpoint: array \"" + name + "\" has another element type than " + type_name<T>());
     if (expected_size && values->size() != *expected_size) {
       throw InputError("checkpoint: array \"" + name + "\" has " + std::to_string(values->size()) + " values, " +
-                       std::to_string(*expected_size) + " expected (is the log of another scene?)");
+                       std::to_string(*expected_size) +
+                       " expected (a log of another scene, or of a version that saved other state?)");
     }
     return *values;
   }
