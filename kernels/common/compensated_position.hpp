@@ -53,10 +53,12 @@ MSSPH_HD float carry_component(float carry, int axis) {
 }
 
 // The carry of `error` (the part of coordinate `stored` rounded off), on `axis`'s 10 bits.
+// Rounded to the nearest unit by a cast, without a call to the maths library.
 MSSPH_HD std::uint32_t carry_field(float stored, float error, int axis) {
-  float units = std::nearbyint(error / float_spacing(stored) * kCarryUnits);
-  units = std::fmin(std::fmax(units, -static_cast<float>(kCarryLimit)), static_cast<float>(kCarryLimit));
-  return (static_cast<std::uint32_t>(static_cast<std::int32_t>(units)) & 0x3ffu) << (10 * axis);
+  const float scaled = error / float_spacing(stored) * kCarryUnits;  // within [-512, 512]
+  std::int32_t units = static_cast<std::int32_t>(scaled + (scaled < 0.0f ? -0.5f : 0.5f));
+  units = units < -kCarryLimit ? -kCarryLimit : (units > kCarryLimit ? kCarryLimit : units);
+  return (static_cast<std::uint32_t>(units) & 0x3ffu) << (10 * axis);
 }
 
 // x_{n+1} = x_n + displacement, plus the carry of the last step, which it replaces.
