@@ -61,16 +61,15 @@ MSSPH_HD std::uint32_t carry_field(float stored, float error, int axis) {
   return (static_cast<std::uint32_t>(units) & 0x3ffu) << (10 * axis);
 }
 
-// x_{n+1} = x_n + displacement, plus the carry of the last step, which it replaces.
+// x_{n+1} = x_n + displacement, plus the carry of the last step, which it replaces: the packed
+// carry unpacked, the rigid body's update, and its exact carry packed again.
 MSSPH_HD void move_compensated(Vec3& position, float& carry, Vec3 displacement) {
-  const Vec3 carried{carry_component(carry, 0) * (float_spacing(position.x) / kCarryUnits),
-                     carry_component(carry, 1) * (float_spacing(position.y) / kCarryUnits),
-                     carry_component(carry, 2) * (float_spacing(position.z) / kCarryUnits)};
-  const Vec3 d = displacement + carried;
-  const ExactSum x = two_sum(position.x, d.x), y = two_sum(position.y, d.y), z = two_sum(position.z, d.z);
-  position = {x.sum, y.sum, z.sum};
-  carry = index_as_float_bits(carry_field(x.sum, x.error, 0) | carry_field(y.sum, y.error, 1) |
-                              carry_field(z.sum, z.error, 2));
+  Vec3 exact{carry_component(carry, 0) * (float_spacing(position.x) / kCarryUnits),
+             carry_component(carry, 1) * (float_spacing(position.y) / kCarryUnits),
+             carry_component(carry, 2) * (float_spacing(position.z) / kCarryUnits)};
+  add_compensated(position, exact, displacement);
+  carry = index_as_float_bits(carry_field(position.x, exact.x, 0) | carry_field(position.y, exact.y, 1) |
+                              carry_field(position.z, exact.z, 2));
 }
 
 }  // namespace mssph::kernels
