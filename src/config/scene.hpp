@@ -15,7 +15,7 @@
 namespace mssph {
 
 enum class BodyKind { fluid, deformable, rigid, boundary };
-enum class ShapeType { box, sphere, container };
+enum class ShapeType { box, sphere, container, spherical_container };
 // The viscous force inside fluids and between bodies (cpu_reference/fluid_forces.hpp):
 //   paper:       eq. 3 as printed, mu lap u, whose pair forces carry mu grad u across a surface;
 //   full_stress: eq. 3 plus the divergence of mu (grad u)^T, so that a surface carries the whole
@@ -27,8 +27,8 @@ const char* to_string(BodyKind kind);
 struct Shape {
   ShapeType type = ShapeType::box;
   Eigen::Vector3d size = Eigen::Vector3d::Zero();  // box: full edge lengths; container: inner size [m]
-  double radius = 0.0;                             // sphere [m]
-  int wall_layers = 0;                             // container: wall thickness in particle layers
+  double radius = 0.0;                             // sphere; spherical_container: inner radius [m]
+  int wall_layers = 0;                             // containers: wall thickness in particle layers
   bool open_top = true;                            // container
 };
 

@@ -145,7 +145,9 @@ SimulationConfig read_simulation(const JsonReader& root) {
 Shape read_shape(const JsonReader& body, double smoothing_length, double spacing) {
   const JsonReader s = body.child("shape");
   if (!s.value().is_object()) s.fail_here("expected an object with a \"type\"");
-  const std::string type = s.choice("type", {"box", "sphere", "container"});
+  const std::string type = s.choice("type", {"box", "sphere", "container", "spherical_container"});
+  // Enough wall layers that a particle touching a container's wall sees a full kernel support of wall.
+  const auto default_layers = static_cast<long long>(std::ceil(smoothing_length / spacing - 1e-9));
   Shape shape;
   if (type == "box") {
     s.allow_only({"type", "size"});
@@ -155,12 +157,15 @@ Shape read_shape(const JsonReader& body, double smoothing_length, double spacing
     s.allow_only({"type", "radius"});
     shape.type = ShapeType::sphere;
     shape.radius = s.number("radius", Interval::positive());
+  } else if (type == "spherical_container") {
+    s.allow_only({"type", "inner_radius", "wall_layers"});
+    shape.type = ShapeType::spherical_container;
+    shape.radius = s.number("inner_radius", Interval::positive());
+    shape.wall_layers = static_cast<int>(s.integer_or("wall_layers", default_layers, Interval::closed(1, 16)));
   } else {
     s.allow_only({"type", "inner_size", "wall_layers", "open_top"});
     shape.type = ShapeType::container;
     shape.size = s.vec3("inner_size", Interval::positive());
-    // Enough layers that a particle touching the wall sees a full kernel support of wall.
-    const auto default_layers = static_cast<long long>(std::ceil(smoothing_length / spacing - 1e-9));
     shape.wall_layers = static_cast<int>(s.integer_or("wall_layers", default_layers, Interval::closed(1, 16)));
     shape.open_top = s.boolean_or("open_top", true);
   }
@@ -234,7 +239,8 @@ BodyConfig read_body(const std::string& name, const JsonReader& reader,
   }
 
   body.shape = read_shape(reader, sim.smoothing_length, sim.particle_spacing);
-  if (body.shape.type == ShapeType::container && body.kind != BodyKind::boundary) {
+  const bool container = body.shape.type == ShapeType::container || body.shape.type == ShapeType::spherical_container;
+  if (container && body.kind != BodyKind::boundary) {
     reader.child("shape").fail("type", "a container is a boundary shape; use kind \"boundary\"");
   }
   body.position = reader.vec3_or("position", body.position);

@@ -71,6 +71,15 @@ std::vector<Eigen::Vector3d> sample_container(const Eigen::Vector3d& inner, int 
   return points;
 }
 
+std::vector<Eigen::Vector3d> sample_spherical_container(double inner_radius, int layers, double dx) {
+  const double outer_radius = inner_radius + layers * dx;
+  std::vector<Eigen::Vector3d> points;
+  for (const Eigen::Vector3d& p : sample_sphere(outer_radius, dx)) {
+    if (p.norm() >= inner_radius) points.push_back(p);
+  }
+  return points;
+}
+
 std::vector<Eigen::Vector3d> sample_shape(const Shape& shape, double dx) {
   switch (shape.type) {
     case ShapeType::box:
@@ -79,6 +88,8 @@ std::vector<Eigen::Vector3d> sample_shape(const Shape& shape, double dx) {
       return sample_sphere(shape.radius, dx);
     case ShapeType::container:
       return sample_container(shape.size, shape.wall_layers, shape.open_top, dx);
+    case ShapeType::spherical_container:
+      return sample_spherical_container(shape.radius, shape.wall_layers, dx);
   }
   return {};
 }

@@ -21,6 +21,12 @@ std::vector<Eigen::Vector3d> sample_sphere(double radius, double dx);
 // an inner edge is under half a spacing (no cavity to hold anything).
 std::vector<Eigen::Vector3d> sample_container(const Eigen::Vector3d& inner, int layers, bool open_top, double dx);
 
+// The shell of a closed spherical container of inner radius `inner_radius`, `layers` particles
+// thick: the nodes of the sphere's lattice at a distance d from the centre with inner_radius <=
+// d < inner_radius + layers dx, so a fluid `sphere` of radius `inner_radius` at the same position
+// fills its cavity exactly (the same lattice, the nodes at d < inner_radius).
+std::vector<Eigen::Vector3d> sample_spherical_container(double inner_radius, int layers, double dx);
+
 std::vector<Eigen::Vector3d> sample_shape(const Shape& shape, double dx);
 
 }  // namespace mssph

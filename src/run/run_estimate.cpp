@@ -48,14 +48,18 @@ double shape_particles(const Shape& shape, double dx) {
           shape.size + Eigen::Vector3d(2.0 * wall, 2.0 * wall, shape.open_top ? wall : 2.0 * wall);
       return lattice_count(outer, dx) - lattice_count(shape.size, dx);
     }
+    case ShapeType::spherical_container:
+      return 4.0 / 3.0 * std::numbers::pi *
+             (std::pow(shape.radius / dx + shape.wall_layers, 3) - std::pow(shape.radius / dx, 3));
   }
   return 0.0;
 }
 
 // Half the edge of the shape's axis-aligned bounding box in any orientation (its bounding
-// sphere's radius for boxes and containers).
+// sphere's radius for boxes and box containers).
 double shape_reach(const Shape& shape, double dx) {
   if (shape.type == ShapeType::sphere) return shape.radius;
+  if (shape.type == ShapeType::spherical_container) return shape.radius + shape.wall_layers * dx;
   const Eigen::Vector3d full = shape.type == ShapeType::container
                                    ? shape.size + Eigen::Vector3d::Constant(2.0 * shape.wall_layers * dx)
                                    : shape.size;

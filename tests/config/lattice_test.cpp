@@ -1,5 +1,5 @@
-// Lattice sampling of box, sphere and container. Expected counts come from the geometry (volumes
-// in cells, counts of integer points in a ball), not from re-running the sampling loops.
+// Lattice sampling of box, sphere and the two containers. Expected counts come from the geometry
+// (volumes in cells, counts of integer points in a ball), not from re-running the sampling loops.
 #include "model/lattice.hpp"
 
 #include <gtest/gtest.h>
@@ -186,6 +186,35 @@ TEST(SampleContainer, ACavityUnderHalfASpacingLeavesItEmpty) {
   EXPECT_TRUE(sample_container({0.1, 0.009, 0.1}, 2, true, 0.02).empty());
 }
 
+TEST(SampleSphericalContainer, TheShellAndAFluidSphereOfItsInnerRadiusTileTheOuterBall) {
+  // One lattice: the cavity's fluid sits one spacing from the shell, neither overlapping nor
+  // gapped, and the shell is `layers` spacings thick (every node at inner_radius <= d < outer).
+  const double dx = 0.02;
+  const double inner_radius = 4.3 * dx;
+  const int layers = 2;
+  const Points shell = sample_spherical_container(inner_radius, layers, dx);
+  const Points contents = sample_sphere(inner_radius, dx);
+  const Points outer = sample_sphere(inner_radius + layers * dx, dx);
+  const Vector3d origin = Vector3d::Zero();
+  auto shell_sites = sites(shell, dx, origin);
+  const auto content_sites = sites(contents, dx, origin);
+  for (const auto& s : content_sites) EXPECT_EQ(shell_sites.count(s), 0u) << "shell particle inside the cavity";
+  EXPECT_EQ(shell.size() + contents.size(), outer.size());
+  shell_sites.insert(content_sites.begin(), content_sites.end());
+  EXPECT_EQ(shell_sites, sites(outer, dx, origin));
+  for (const Vector3d& p : shell) EXPECT_GE(p.norm(), inner_radius);
+}
+
+TEST(SampleSphericalContainer, CountApproachesTheShellVolume) {
+  // As for the ball (SampleSphere.VolumeConvergesToTheBall): the lattice count of a shell of
+  // radii 10 and 13 spacings lies within 5 % of its volume in cells; a shell a layer thinner or
+  // thicker is 39-46 % off.
+  const double dx = 0.01;
+  const double exact = 4.0 / 3.0 * std::numbers::pi * (std::pow(13.0, 3) - std::pow(10.0, 3));
+  const double sampled = static_cast<double>(sample_spherical_container(10.0 * dx, 3, dx).size());
+  EXPECT_NEAR(sampled / exact, 1.0, 0.05);
+}
+
 TEST(SampleShape, DispatchesOnTheShapeType) {
   const double dx = 0.02;
   Shape box;
@@ -202,6 +231,11 @@ TEST(SampleShape, DispatchesOnTheShapeType) {
   container.wall_layers = 2;
   container.open_top = false;
   EXPECT_EQ(sample_shape(container, dx).size(), sample_container(container.size, 2, false, dx).size());
+  Shape shell;
+  shell.type = ShapeType::spherical_container;
+  shell.radius = 3.5 * dx;
+  shell.wall_layers = 2;
+  EXPECT_EQ(sample_shape(shell, dx).size(), sample_spherical_container(shell.radius, 2, dx).size());
 }
 
 }  // namespace
