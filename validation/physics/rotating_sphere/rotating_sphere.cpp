@@ -12,9 +12,8 @@
 
 namespace mssph::validation {
 
-std::pair<double, double> cube_wall_factor_bracket(double radius, double half_width) {
-  const auto concentric = [&](double container) { return 1.0 / (1.0 - std::pow(radius / container, 3)); };
-  return {concentric(std::sqrt(3.0) * half_width), concentric(half_width)};
+double concentric_wall_factor(double radius, double container_radius) {
+  return 1.0 / (1.0 - std::pow(radius / container_radius, 3));
 }
 
 Scene rotating_sphere_scene(double dx, double mu, double omega) {
@@ -26,17 +25,14 @@ Scene rotating_sphere_scene(double dx, double mu, double omega) {
   // torque settles lower as mu omega / (rho c^2) grows).
   const double c = std::max(100.0 * omega * radius, std::sqrt(mu * omega / (4.0e-4 * rho)));
   const double dt = 0.8 * std::min(0.125 * h * h / nu, 0.25 * h / c);
-  // The 40 cm cube holds an even number of cells (32, 80, 160), so its fluid sites lie at
-  // (k + 1/2) dx; a sphere centred on one of them is sampled on the fluid's lattice and the fluid
-  // meets it at one spacing (src/model/fluid_fill.hpp), not 1.5-1.7 as from the cube's centre.
-  const std::string corner = exact(0.5 * dx);
+  // The sphere, the fluid and the container share one centre and so one lattice: the fluid meets
+  // the sphere and the container's wall at one spacing (src/model/fluid_fill.hpp, lattice.hpp).
   const std::vector<std::string> overrides{"simulation/particle_spacing=" + exact(dx),
                                            "simulation/dt=" + exact(dt),
                                            "simulation/duration=" + exact(30.0 * radius * radius / nu),
                                            "materials/fluid/viscosity=" + exact(mu),
                                            "materials/fluid/pressure_stiffness=" + exact(c * c),
-                                           "bodies/sphere/angular_velocity=[0, 0, " + exact(omega) + "]",
-                                           "bodies/sphere/position=[" + corner + ", " + corner + ", " + corner + "]"};
+                                           "bodies/sphere/angular_velocity=[0, 0, " + exact(omega) + "]"};
   return case_scene("physics/rotating_sphere", overrides);
 }
 
@@ -44,7 +40,6 @@ RotatingSphereMeasurement measure_rotating_sphere(const std::string& backend_nam
   const ParticleSetup setup = build_particles(scene);
   const std::size_t sphere = body_index(setup, "sphere", scene);
   const BodySetup& fluid = setup.bodies[body_index(setup, "fluid", scene)];
-  const BodyConfig& box = scene.bodies[body_index(setup, "box", scene)];
   const BodySetup ball = setup.bodies[sphere];
   const double dx = setup.spacing;
   const double mu = fluid.material.viscosity;
@@ -54,9 +49,8 @@ RotatingSphereMeasurement measure_rotating_sphere(const std::string& backend_nam
   m.particles = setup.size();
   m.radius = sampled_sphere_radius(ball.count, dx);
   m.reynolds = rho * omega * m.radius * m.radius / mu;
-  const double half_width = 0.5 * box.shape.size.minCoeff();
-  std::tie(m.wall_factor_low, m.wall_factor_high) = cube_wall_factor_bracket(m.radius, half_width);
-  m.wall_factor = 0.5 * (m.wall_factor_low + m.wall_factor_high);
+  m.container_radius = sampled_sphere_radius(fluid.count + ball.count, dx);
+  m.wall_factor = concentric_wall_factor(m.radius, m.container_radius);
   m.expected_torque = -8.0 * std::numbers::pi * mu * std::pow(m.radius, 3) * omega * m.wall_factor;
 
   std::unique_ptr<Backend> backend = make_backend(backend_name, setup);

@@ -8,32 +8,30 @@
 
 namespace mssph::validation {
 
-// The scene's rigid "sphere" at the centre of the fluid "fluid" in the closed cube "box" (a
-// container) is turned about z at `omega` by a controller: each step its external torque cancels
+// The scene's rigid "sphere" at the centre of the fluid "fluid" in the closed spherical container
+// "container" is turned about z at `omega` by a controller: each step its external torque cancels
 // the fluid's torque of the last step and drives the angular velocity to (0, 0, omega) at rate
 // 1 / (10 dt), and a spring-damper holds its centre. The fluid's torque about z, averaged over the
 // last two fifths of the run, is compared with the Stokes (Kirchhoff) torque of a sphere rotating
 // in an unbounded fluid, T = -8 pi mu R^3 omega (Lamb, Hydrodynamics, sec. 334), times the wall
-// factor of the cube (wall_factor).
+// factor of the concentric container (concentric_wall_factor).
 struct RotatingSphereMeasurement {
-  double torque = 0.0;           // mean fluid torque about z over the last two fifths [N m]
-  double torque_earlier = 0.0;   // mean over the fifth before them: the run has settled when close [N m]
-  double expected_torque = 0.0;  // -8 pi mu R^3 omega times the wall factor [N m]
-  double wall_factor = 0.0;      // of the cube (the mean of its bracket) [-]
-  double wall_factor_low = 0.0, wall_factor_high = 0.0;
+  double torque = 0.0;                       // mean fluid torque about z over the last two fifths [N m]
+  double torque_earlier = 0.0;               // mean over the fifth before them: the run has settled when close [N m]
+  double expected_torque = 0.0;              // -8 pi mu R^3 omega times the wall factor [N m]
+  double wall_factor = 0.0;                  // of the container [-]
   double radius = 0.0;                       // of the sphere as sampled: N particles of volume dx^3 [m]
+  double container_radius = 0.0;             // of the cavity as sampled: its fluid and sphere particles [m]
   double reynolds = 0.0;                     // rho omega R^2 / mu [-]
   double omega_deviation = 0.0;              // largest |omega_z - omega| / omega over the averaging window [-]
   std::vector<double> time, torque_history;  // every 1 % of the run [s], [N m]
   std::size_t particles = 0;
 };
 
-// The wall factor of a sphere of radius R turning at the centre of a cube of half-width L: the
-// cube lies between its inscribed (radius L) and circumscribed (radius sqrt(3) L) spheres, and a
-// concentric spherical container of radius Rc multiplies the torque by 1 / (1 - (R / Rc)^3)
-// (Lamb, sec. 334; Happel and Brenner, Low Reynolds Number Hydrodynamics, sec. 5-3), a factor that
-// falls as the container grows. Returns {low, high}: the circumscribed and inscribed spheres'.
-std::pair<double, double> cube_wall_factor_bracket(double radius, double half_width);
+// A concentric spherical container of radius Rc multiplies the torque on a sphere of radius R
+// turning at its centre by 1 / (1 - (R / Rc)^3) (Lamb, sec. 334; Happel and Brenner, Low Reynolds
+// Number Hydrodynamics, sec. 5-3).
+double concentric_wall_factor(double radius, double container_radius);
 
 // The sphere's radius [m] and the fluid's rest density [kg/m^3] of the case's scene (scene.json).
 inline constexpr double kRotatingSphereRadius = 0.05;
