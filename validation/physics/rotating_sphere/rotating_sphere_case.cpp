@@ -12,10 +12,14 @@ CaseResult run_rotating_sphere_case(const CaseContext& context) {
   // Sphere radius R = 5 cm in spacings: --quick 6 (for 2 CPU cores), full 10 and 20.
   const std::vector<double> radii_in_spacings =
       context.quick ? std::vector<double>{6.0} : std::vector<double>{10.0, 20.0};
+  // Two viscosities a decade apart in the full run: the same problem in units of mu omega, so
+  // their torques agree to four digits when the torque scales with the viscosity in Pa s. The
+  // quick run (CI's time) turns the sphere in the first only.
+  const std::vector<double> viscosities = context.quick ? std::vector<double>{10.0} : std::vector<double>{10.0, 100.0};
   for (const double spacings : radii_in_spacings) {
     const double dx = kRotatingSphereRadius / spacings;
     const bool finest = spacings == radii_in_spacings.back();
-    for (const double mu : {10.0, 100.0}) {
+    for (const double mu : viscosities) {
       // Re = rho omega R^2 / mu = 0.25 at both viscosities (omega 1 and 10 rad/s): the SPH torque
       // depends on the strain the flow has carried, which Re sets per viscous time (decision 058).
       const double omega =
