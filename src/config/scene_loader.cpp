@@ -146,8 +146,12 @@ Shape read_shape(const JsonReader& body, double smoothing_length, double spacing
   const JsonReader s = body.child("shape");
   if (!s.value().is_object()) s.fail_here("expected an object with a \"type\"");
   const std::string type = s.choice("type", {"box", "sphere", "container", "spherical_container"});
-  // Enough wall layers that a particle touching a container's wall sees a full kernel support of wall.
-  const auto default_layers = static_cast<long long>(std::ceil(smoothing_length / spacing - 1e-9));
+  // A container's wall thickness: by default enough layers that a particle touching the wall sees
+  // a full kernel support of wall.
+  const auto read_wall_layers = [&] {
+    const auto default_layers = static_cast<long long>(std::ceil(smoothing_length / spacing - 1e-9));
+    return static_cast<int>(s.integer_or("wall_layers", default_layers, Interval::closed(1, 16)));
+  };
   Shape shape;
   if (type == "box") {
     s.allow_only({"type", "size"});
@@ -161,12 +165,12 @@ Shape read_shape(const JsonReader& body, double smoothing_length, double spacing
     s.allow_only({"type", "inner_radius", "wall_layers"});
     shape.type = ShapeType::spherical_container;
     shape.radius = s.number("inner_radius", Interval::positive());
-    shape.wall_layers = static_cast<int>(s.integer_or("wall_layers", default_layers, Interval::closed(1, 16)));
+    shape.wall_layers = read_wall_layers();
   } else {
     s.allow_only({"type", "inner_size", "wall_layers", "open_top"});
     shape.type = ShapeType::container;
     shape.size = s.vec3("inner_size", Interval::positive());
-    shape.wall_layers = static_cast<int>(s.integer_or("wall_layers", default_layers, Interval::closed(1, 16)));
+    shape.wall_layers = read_wall_layers();
     shape.open_top = s.boolean_or("open_top", true);
   }
   return shape;
