@@ -74,7 +74,7 @@ TEST_P(OneStepAgreement, MixedFarFromTheOrigin) {
 }
 
 // The mixed scene with the full_stress viscosity: the velocity-gradient pass and the transposed
-// stress term (the spinning ball's contact with the water) against the reference's.
+// stress term (the current's shear along the tank, the jelly and the ball) against the reference's.
 TEST_P(OneStepAgreement, MixedWithFullStressViscosity) {
   MSSPH_SKIP_WITHOUT(GetParam());
   compare(GetParam(), validation::one_step_scene("mixed_full_stress"));
