@@ -16,10 +16,10 @@ double concentric_wall_factor(double radius, double container_radius) {
   return 1.0 / (1.0 - std::pow(radius / container_radius, 3));
 }
 
-Scene rotating_sphere_scene(double dx, double mu, double omega) {
+Scene rotating_sphere_scene(double dx, double support, double mu, double omega) {
   const double rho = kRotatingSphereFluidDensity;
   const double radius = kRotatingSphereRadius;
-  const double h = 2.0 * dx;
+  const double h = 2.0 * dx;  // the step's bounds at the default support, the smaller: one dt for both
   const double nu = mu / rho;
   // Mach number omega R / c <= 0.01 and viscous stress over rho c^2 <= 4e-4 (decision 058: the
   // torque settles lower as mu omega / (rho c^2) grows).
@@ -27,7 +27,9 @@ Scene rotating_sphere_scene(double dx, double mu, double omega) {
   const double dt = 0.8 * std::min(0.125 * h * h / nu, 0.25 * h / c);
   // The sphere, the fluid and the container share one centre and so one lattice: the fluid meets
   // the sphere and the container's wall at one spacing (src/model/fluid_fill.hpp, lattice.hpp).
+  // The container's wall is ceil(h / dx) layers thick by default: a full support of wall.
   const std::vector<std::string> overrides{"simulation/particle_spacing=" + exact(dx),
+                                           "simulation/smoothing_length=" + exact(support * dx),
                                            "simulation/dt=" + exact(dt),
                                            "simulation/duration=" + exact(30.0 * radius * radius / nu),
                                            "materials/fluid/viscosity=" + exact(mu),

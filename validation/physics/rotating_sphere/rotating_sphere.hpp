@@ -37,13 +37,13 @@ double concentric_wall_factor(double radius, double container_radius);
 inline constexpr double kRotatingSphereRadius = 0.05;
 inline constexpr double kRotatingSphereFluidDensity = 1000.0;
 
-// The case's scene (scene.json) at spacing dx with viscosity mu [Pa s], the sphere turning at
-// omega [rad/s] from the start: the sound speed keeps the flow's Mach number omega R / c at or
-// below 0.01 and its viscous stress over rho c^2, mu omega / (rho c^2), at or below 4e-4; dt is 0.8
-// of the smaller of the viscous (0.125 h^2 rho / mu) and acoustic (0.25 h / c) bounds
-// (docs/model.md, "Time step"); the run lasts 30 R^2 / nu, in which the torque settles at
-// Re = 0.25 (decision 058).
-Scene rotating_sphere_scene(double dx, double mu, double omega);
+// The case's scene (scene.json) at spacing dx with kernel support h = support * dx, viscosity mu
+// [Pa s], the sphere turning at omega [rad/s] from the start: the sound speed keeps the flow's Mach
+// number omega R / c at or below 0.01 and its viscous stress over rho c^2, mu omega / (rho c^2), at
+// or below 4e-4; dt is 0.8 of the smaller of the viscous (0.125 h^2 rho / mu) and acoustic
+// (0.25 h / c) bounds at h = 2 dx (docs/model.md, "Time step"), so every support takes the same
+// step; the run lasts 30 R^2 / nu, in which the torque settles at Re = 0.25 (decision 058).
+Scene rotating_sphere_scene(double dx, double support, double mu, double omega);
 
 RotatingSphereMeasurement measure_rotating_sphere(const std::string& backend, const Scene& scene, double omega);
 
