@@ -3,12 +3,15 @@
 // viscosity between bodies (paper eq. 7) give a towed sphere a drag linear in its speed that,
 // extrapolated from two cubes to an unbounded fluid, is Stokes' within the case's tolerance at
 // its coarse spacing; a free-slip sphere (the planted error: its viscosity zero, so the interface
-// viscosity is zero) falls outside it.
+// viscosity is zero) falls outside it. The case's check on the drag's part that does not change
+// with the speed catches a planted force of that kind.
 #include "physics/translating_sphere/translating_sphere.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
+#include <string>
 
 namespace mssph::testing {
 namespace {
@@ -39,6 +42,24 @@ TEST(TranslatingSphere, ExtrapolatedDragIsStokes) {
 
 TEST(TranslatingSphere, FreeSlipSphereFailsTheCheck) {
   EXPECT_GT(std::abs(unbounded_drag_over_stokes({"materials/sphere/viscosity=0"}) - 1.0), kCoarseTolerance);
+}
+
+// A body force along the tow (planted: the case's scene has none) gives the sphere a buoyancy
+// rho_f V_s g against the motion at every speed (Archimedes). g is chosen so that it is 0.2 of
+// 6 pi mu R V0, four times the case's bound: the offset check must reject it, pass without it,
+// and the linear part must not move.
+TEST(TranslatingSphere, SpeedIndependentForceFailsTheOffsetCheck) {
+  const double dx = 0.025, mu = 100.0, side = 0.3, radius = 0.05;
+  const double sphere_volume = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+  const double stokes = 6.0 * std::numbers::pi * mu * radius * validation::kReferenceSpeed;
+  const double g = 0.2 * stokes / (1000.0 * sphere_volume);
+  const validation::LinearDrag clean = validation::measure_linear_drag("cpu", dx, mu, side);
+  const validation::LinearDrag planted =
+      validation::measure_linear_drag("cpu", dx, mu, side, {"simulation/gravity=[" + std::to_string(g) + ", 0, 0]"});
+  EXPECT_LT(std::abs(clean.offset), validation::kSpeedIndependentDragBound);
+  EXPECT_GT(std::abs(planted.offset), validation::kSpeedIndependentDragBound);
+  // The part linear in the speed, Stokes' drag, stays as it was (measured: within 0.4 %).
+  EXPECT_NEAR(planted.factor, clean.factor, 0.02 * clean.factor);
 }
 
 }  // namespace

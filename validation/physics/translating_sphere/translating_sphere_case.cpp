@@ -8,10 +8,6 @@
 namespace mssph::validation {
 namespace {
 
-// The bound on the drag's speed-independent part, in units of Stokes' drag at V0: above the
-// compensated float32 update's -0.011 to -0.019 (decision 064), below the uncompensated 0.17.
-constexpr double kSpeedIndependentDragBound = 0.05;
-
 std::vector<double> halved(std::vector<double> values) {
   for (double& v : values) v *= 0.5;
   return values;
