@@ -10,6 +10,7 @@ drawn with matplotlib's Agg backend.
 import json
 import math
 import os
+import re
 import sys
 
 import h5py
@@ -25,6 +26,13 @@ def fmt(x):
     if x == 0 or (1e-3 <= abs(x) < 1e5):
         return f"{x:.4g}"
     return f"{x:.3e}"
+
+
+def file_name(text):
+    """A plot's file name from its suite, case and series: runs of characters other than letters,
+    digits, '.', '-' and '_' (a series may be named after a paper, with spaces) become one '_',
+    so that the name is a valid Markdown link and a plain shell word."""
+    return re.sub(r"[^A-Za-z0-9._-]+", "_", text)
 
 
 def plot_series(h5, case, series, out_dir):
@@ -44,7 +52,7 @@ def plot_series(h5, case, series, out_dir):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
-    name = f"{case['suite']}_{case['case']}_{series['name']}.png"
+    name = file_name(f"{case['suite']}_{case['case']}_{series['name']}") + ".png"
     fig.savefig(os.path.join(out_dir, name), dpi=110)
     plt.close(fig)
     return name
