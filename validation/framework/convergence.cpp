@@ -6,8 +6,15 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace mssph::validation {
+
+Check observed_order_check(std::string quantity, const std::vector<double>& spacing, const std::vector<double>& error,
+                           double smallest_order) {
+  return range_check(std::move(quantity), "-", smallest_order, std::numeric_limits<double>::infinity(),
+                     observed_order(spacing, error));
+}
 
 CaseResult convergence_result(const std::string& quantity, const std::vector<double>& spacing,
                               const std::vector<double>& expected, const std::vector<double>& measured,
@@ -22,8 +29,7 @@ CaseResult convergence_result(const std::string& quantity, const std::vector<dou
   const std::size_t finest = spacing.size() - 1;
   result.checks.push_back(relative_check(quantity + " at the finest dx = " + exact(spacing[finest]).substr(0, 7) + " m",
                                          "-", expected[finest], measured[finest], finest_tolerance));
-  result.checks.push_back(range_check("observed order p of the relative error", "-", 0.0,
-                                      std::numeric_limits<double>::infinity(), observed_order(spacing, error)));
+  result.checks.push_back(observed_order_check("observed order p of the relative error", spacing, error, 0.0));
   for (Check& c : result.checks) c.backend = backend;
   Series series{"error", "particle spacing dx [m]", spacing, {{"relative error", error}}, true};
   result.series.push_back(series);

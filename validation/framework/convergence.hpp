@@ -14,6 +14,11 @@
 
 namespace mssph::validation {
 
+// The check that an error shrinks as the particles get finer: the observed order of `error`
+// against `spacing` (observed_order, fits.hpp) at least smallest_order.
+Check observed_order_check(std::string quantity, const std::vector<double>& spacing, const std::vector<double>& error,
+                           double smallest_order);
+
 CaseResult convergence_result(const std::string& quantity, const std::vector<double>& spacing,
                               const std::vector<double>& expected, const std::vector<double>& measured,
                               double finest_tolerance, const std::string& backend);

@@ -1,11 +1,10 @@
 // Physics case: the drag of an impulsively started plate against Stokes' first problem, the
 // viscosity between bodies (README.md beside this file).
 #include "framework/case_functions.hpp"
-#include "framework/fits.hpp"
+#include "framework/convergence.hpp"
 #include "physics/plate_shear/plate_shear.hpp"
 
 #include <cmath>
-#include <limits>
 #include <map>
 
 namespace mssph::validation {
@@ -35,9 +34,8 @@ CaseResult run_plate_shear_case(const CaseContext& context) {
   // convergence suite.
   if (spacings.size() > 1) {
     for (const auto& [mu, errors] : errors_by_viscosity) {
-      result.checks.push_back(range_check("mu = " + exact(mu) + " Pa s: observed order of the drag's error (shrinks)",
-                                          "-", 0.0, std::numeric_limits<double>::infinity(),
-                                          observed_order(spacings, errors)));
+      result.checks.push_back(observed_order_check(
+          "mu = " + exact(mu) + " Pa s: observed order of the drag's error (shrinks)", spacings, errors, 0.0));
     }
   }
   result.resolution = context.quick ? "layer 20 dx (dx = 1 cm)" : "layer 20 and 40 dx (dx = 1 cm, 5 mm)";

@@ -1,10 +1,9 @@
 // Physics case: the viscous torque on a rotating sphere against Stokes (README.md beside this file).
 #include "framework/case_functions.hpp"
-#include "framework/fits.hpp"
+#include "framework/convergence.hpp"
 #include "physics/rotating_sphere/rotating_sphere.hpp"
 
 #include <cmath>
-#include <limits>
 #include <map>
 
 namespace mssph::validation {
@@ -86,10 +85,9 @@ CaseResult run_rotating_sphere_case(const CaseContext& context) {
     }
   }
   for (const auto& [mu, runs] : converging) {
-    result.checks.push_back(range_check("h = " + exact(kConvergenceSupport) + " dx, mu = " + exact(mu) +
-                                            " Pa s: observed order of the torque's error (converges)",
-                                        "-", kSmallestObservedOrder, std::numeric_limits<double>::infinity(),
-                                        observed_order(runs.spacing, runs.error)));
+    result.checks.push_back(observed_order_check("h = " + exact(kConvergenceSupport) + " dx, mu = " + exact(mu) +
+                                                     " Pa s: observed order of the torque's error (converges)",
+                                                 runs.spacing, runs.error, kSmallestObservedOrder));
   }
   result.resolution = context.quick ? "sphere radius 6 dx (dx = 8.3 mm), h = 2 dx"
                                     : "sphere radius 10 and 20 dx at h = 2 dx and at h = 3 dx";
