@@ -77,19 +77,19 @@ class MergeReports(unittest.TestCase):
         self.assertIn("**3 passed, 0 failed, 0 skipped**", text)
         self.assertTrue(os.path.isfile(os.path.join(out, "physics_coupling_step_translation_step.png")))
 
-    def test_parts_of_different_runs_are_refused(self):
-        out = os.path.join(self.tmp.name, "refused_seed")
-        result = merge(self.a, self.other_seed, out)
+    def assert_refused(self, parts, message):
+        """merge_reports.py refuses the parts with exit 2, names the reason and writes nothing."""
+        out = os.path.join(self.tmp.name, "refused")
+        result = merge(*parts, out)
         self.assertEqual(result.returncode, 2)
-        self.assertIn("run/seed", result.stderr)
-        self.assertFalse(os.path.exists(os.path.join(out, "report.json")))
+        self.assertIn(message, result.stderr)
+        self.assertFalse(os.path.exists(out))
+
+    def test_parts_of_different_runs_are_refused(self):
+        self.assert_refused([self.a, self.other_seed], "run/seed")
 
     def test_a_case_in_two_parts_is_refused(self):
-        out = os.path.join(self.tmp.name, "refused_twice")
-        result = merge(self.b, self.b, out)
-        self.assertEqual(result.returncode, 2)
-        self.assertIn("kernels/one_step is also in", result.stderr)
-        self.assertFalse(os.path.exists(out))
+        self.assert_refused([self.b, self.b], "kernels/one_step is also in")
 
     def test_an_earlier_report_is_replaced_only_with_force(self):
         out = os.path.join(self.tmp.name, "again")
