@@ -1,12 +1,13 @@
-// convergence_result (validation/framework/convergence.hpp) on made-up series: the order check;
-// self_convergence_result, whose second check asks that the values settle; and grid_convergence
-// (fits.hpp), the apparent order and Richardson limit it reports.
+// convergence_result (validation/framework/convergence.hpp) on made-up series: the order check
+// (observed_order_check); self_convergence_result, whose second check asks that the values
+// settle; and grid_convergence (fits.hpp), the apparent order and Richardson limit it reports.
 #include "framework/convergence.hpp"
 #include "framework/fits.hpp"
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -26,6 +27,20 @@ Status second_check(const std::vector<double>& measured) {
 TEST(ConvergenceResult, TheOrderCheckFailsAnErrorThatGrowsWithRefinement) {
   EXPECT_EQ(second_check({104.0, 102.0, 101.0}), Status::pass);  // p = 1
   EXPECT_EQ(second_check({101.0, 102.0, 104.0}), Status::fail);  // p = -1
+}
+
+// The bound rotating_sphere asks of its torque's error: with h halved, the error at most 2^-1/2 of
+// the coarser one (order 1/2). An error that shrinks more slowly fails.
+TEST(ObservedOrderCheck, FailsAnErrorThatShrinksMoreSlowlyThanAsked) {
+  EXPECT_EQ(observed_order_check("q", {0.02, 0.01}, {0.2, 0.1}, 0.5).status, Status::pass);   // p = 1
+  EXPECT_EQ(observed_order_check("q", {0.02, 0.01}, {0.2, 0.16}, 0.5).status, Status::fail);  // p = 0.32
+}
+
+// shear_decay's order check reads grid_convergence's order, NaN where the values do not converge
+// monotonically: a range check fails it.
+TEST(RangeCheck, FailsAnOrderThatIsNotDefined) {
+  const GridConvergence g = grid_convergence({0.04, 0.02, 0.01}, {0.96, 0.99, 0.97});
+  EXPECT_EQ(range_check("q", "-", 0.5, std::numeric_limits<double>::infinity(), g.order).status, Status::fail);
 }
 
 Status settling_check(const std::vector<double>& measured) {
