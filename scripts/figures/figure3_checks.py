@@ -56,8 +56,8 @@ def rebound_fraction(log, contact):
 
 
 def sampled_radius(log):
-    """The sphere as sampled: N particles of volume dx^3 make a ball of this radius [m]."""
-    return np.cbrt(3.0 * log.particle_count * log.spacing ** 3 / (4.0 * np.pi))
+    """The sphere as sampled: N lattice sites of volume dx^3 make a ball of this radius [m]."""
+    return np.cbrt(3.0 * log.lattice_sites * log.spacing ** 3 / (4.0 * np.pi))
 
 
 def archimedes_depth(radius, density_ratio):

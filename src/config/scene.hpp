@@ -91,6 +91,9 @@ struct SimulationConfig {
   std::optional<Region> domain;
   double max_lost_mass_fraction = 0.001;  // of a body's mass outside the domain before the run fails [-]
   ViscosityModel viscosity_model = ViscosityModel::paper;
+  // Whether rigid bodies keep every lattice site, or only those within reach of their surface
+  // (model/rigid_interior.hpp): the same physics, fewer particles.
+  bool sample_rigid_interiors = false;
 };
 
 struct ProxyConfig {

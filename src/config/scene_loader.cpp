@@ -102,7 +102,7 @@ std::map<std::string, MaterialEntry> read_materials(const JsonReader& root) {
 SimulationConfig read_simulation(const JsonReader& root) {
   const JsonReader s = root.child("simulation");
   s.allow_only({"dt", "duration", "gravity", "particle_spacing", "smoothing_length", "seed", "jitter", "max_speed",
-                "domain", "max_lost_mass_fraction", "viscosity_model"});
+                "domain", "max_lost_mass_fraction", "viscosity_model", "sample_rigid_interiors"});
   SimulationConfig sim;
   sim.dt = s.number("dt", Interval::positive());
   sim.duration = s.number("duration", Interval::positive());
@@ -139,6 +139,7 @@ SimulationConfig read_simulation(const JsonReader& root) {
   sim.viscosity_model = s.choice_or("viscosity_model", "paper", {"paper", "full_stress"}) == "full_stress"
                             ? ViscosityModel::full_stress
                             : ViscosityModel::paper;
+  sim.sample_rigid_interiors = s.boolean_or("sample_rigid_interiors", false);
   return sim;
 }
 

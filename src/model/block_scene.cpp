@@ -58,7 +58,7 @@ Scene block_scene(BodyKind medium, std::size_t block_particles, BlockGeometry ge
   const nlohmann::json document = {
       {"name", std::string("block_") + to_string(medium)},
       {"description", "Figure 2 benchmark block, " + to_string(geometry) + " geometry"},
-      {"simulation", {{"dt", dt}, {"duration", 1000 * dt}, {"particle_spacing", dx}}},
+      {"simulation", {{"dt", dt}, {"duration", 1000 * dt}, {"particle_spacing", dx}, {"sample_rigid_interiors", true}}},
       {"materials",
        {{"block", material},
         {"wall", {{"rest_density", kRestDensity}, {"pressure_stiffness", k}, {"viscosity", 0.0}}}}},

@@ -4,6 +4,7 @@
 #include "fluid_fill.hpp"
 #include "lattice.hpp"
 #include "model/lattice_calibration.hpp"
+#include "rigid_interior.hpp"
 #include "simulation_domain.hpp"
 #include "util/errors.hpp"
 
@@ -184,7 +185,10 @@ ParticleSetup build_particles(const Scene& scene) {
     }
     setup.bodies.push_back(body);
   }
-  check_overlaps(scene, setup, lattice_site);
+  check_overlaps(scene, setup, lattice_site);  // on every site: a body inside another's interior is refused
+  if (!sim.sample_rigid_interiors) {
+    leave_out_rigid_interiors(setup, lattice_site, rigid_surface_reach(sim.smoothing_length, sim.particle_spacing));
+  }
   setup.domain = sim.domain ? *sim.domain : default_simulation_domain(setup.position, setup.smoothing_length);
   check_domain_holds_moving_particles(scene, setup);
   setup.max_lost_mass_fraction = sim.max_lost_mass_fraction;

@@ -37,8 +37,8 @@ def drop(kind, z, fz, duration):
     log.fluid_density = 1000.0
     log.young_modulus = 2e5
     log.poisson_ratio = 0.3
-    # 485 particles of (4 cm)^3 sample a ball of radius 0.195 m; a density of 500 kg/m^3.
-    log.particle_count = 485
+    # 485 lattice sites of (4 cm)^3 sample a ball of radius 0.195 m; a density of 500 kg/m^3.
+    log.lattice_sites = 485
     log.mass = 500.0 * 4.0 / 3.0 * np.pi * sampled_radius(log) ** 3
     log.haptic_time = log.time
     log.coupling_force = np.zeros((n, 3))
