@@ -16,9 +16,11 @@ struct BodySetup {
   std::string name;
   BodyKind kind = BodyKind::fluid;
   Material material;
-  std::size_t first = 0;        // first particle
-  std::size_t count = 0;        // number of particles
-  std::size_t fixed_count = 0;  // deformable: particles held by fixed regions
+  std::size_t first = 0;          // first particle
+  std::size_t count = 0;          // number of particles
+  std::size_t lattice_sites = 0;  // sites of its shape's lattice: count, plus a rigid body's interior
+                                  // left out (rigid_interior.hpp); lattice_sites dx^3 is its volume
+  std::size_t fixed_count = 0;    // deformable: particles held by fixed regions
 
   // Rigid bodies: physical mass properties from the body's density and its particles.
   double mass = 0.0;                                           // [kg]

@@ -141,6 +141,7 @@ ParticleSetup build_particles(const Scene& scene) {
     body.material = config.material;
     body.first = setup.size();
     body.count = body_sites.size();
+    body.lattice_sites = body_sites.size();
     body.orientation = config.orientation;
     body.velocity = config.velocity;
     body.angular_velocity = config.angular_velocity;

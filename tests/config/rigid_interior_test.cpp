@@ -122,6 +122,7 @@ TEST(RigidInterior, SceneKeepsMassPropertiesAndStillRefusesOverlaps) {
     EXPECT_EQ(kept.bodies[b].mass, full.bodies[b].mass);
     EXPECT_EQ(kept.bodies[b].centre_of_mass, full.bodies[b].centre_of_mass);
     EXPECT_EQ(kept.bodies[b].inertia_body, full.bodies[b].inertia_body);
+    EXPECT_EQ(kept.bodies[b].lattice_sites, full.bodies[b].count);  // the volume the body stands for
   }
   // Every kept particle is one of the full body's, with its velocity and rest offset.
   for (std::size_t i = 0; i < kept.size(); ++i) {

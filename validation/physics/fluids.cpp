@@ -72,8 +72,8 @@ FloatingMeasurement measure_floating(const std::string& backend_name, const Scen
   const double rho_fluid = water.material.rest_density;
   FloatingMeasurement m;
   m.particles = setup.size();
-  // The sphere as sampled: N particles of volume dx^3 make a ball of this radius.
-  m.radius = std::cbrt(3.0 * static_cast<double>(ball_setup.count) * dx * dx * dx / (4.0 * std::numbers::pi));
+  // The sphere as sampled: N lattice sites of volume dx^3 make a ball of this radius.
+  m.radius = sampled_sphere_radius(ball_setup.lattice_sites, dx);
   const double submerged_volume = ball_setup.mass / rho_fluid;
   // Cap depth d with pi d^2 (3 R - d) / 3 = V, by bisection on [0, 2R].
   double lo = 0.0;

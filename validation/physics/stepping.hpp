@@ -20,9 +20,9 @@ inline std::size_t body_index(const ParticleSetup& setup, const std::string& nam
   throw std::runtime_error(scene.source_file + ": this measurement needs a body \"" + name + "\"");
 }
 
-// The radius of a sphere sampled as `count` particles of volume dx^3 [m].
-inline double sampled_sphere_radius(std::size_t count, double dx) {
-  return std::cbrt(3.0 * static_cast<double>(count) * dx * dx * dx / (4.0 * std::numbers::pi));
+// The radius of a sphere sampled as `sites` lattice sites of volume dx^3 (BodySetup::lattice_sites) [m].
+inline double sampled_sphere_radius(std::size_t sites, double dx) {
+  return std::cbrt(3.0 * static_cast<double>(sites) * dx * dx * dx / (4.0 * std::numbers::pi));
 }
 
 // Whole steps of `dt` in `seconds`.

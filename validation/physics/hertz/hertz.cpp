@@ -47,6 +47,7 @@ ParticleSetup with_body_particles(const ParticleSetup& in, std::size_t replaced,
       for (std::size_t i = body.first; i < body.first + body.count; ++i) add(in.position[i], i, b);
     }
     out.bodies[b].count = out.position.size() - out.bodies[b].first;
+    if (b == replaced) out.bodies[b].lattice_sites = out.bodies[b].count;
   }
   return out;
 }

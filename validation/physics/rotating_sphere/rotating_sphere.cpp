@@ -49,9 +49,9 @@ RotatingSphereMeasurement measure_rotating_sphere(const std::string& backend_nam
 
   RotatingSphereMeasurement m;
   m.particles = setup.size();
-  m.radius = sampled_sphere_radius(ball.count, dx);
+  m.radius = sampled_sphere_radius(ball.lattice_sites, dx);
   m.reynolds = rho * omega * m.radius * m.radius / mu;
-  m.container_radius = sampled_sphere_radius(fluid.count + ball.count, dx);
+  m.container_radius = sampled_sphere_radius(fluid.lattice_sites + ball.lattice_sites, dx);
   m.wall_factor = concentric_wall_factor(m.radius, m.container_radius);
   m.expected_torque = -8.0 * std::numbers::pi * mu * std::pow(m.radius, 3) * omega * m.wall_factor;
 

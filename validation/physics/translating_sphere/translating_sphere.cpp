@@ -82,7 +82,7 @@ TowedSphereMeasurement measure_translating_sphere(const std::string& backend_nam
 
   TowedSphereMeasurement m;
   m.particles = setup.size();
-  m.radius = sampled_sphere_radius(ball.count, dx);
+  m.radius = sampled_sphere_radius(ball.lattice_sites, dx);
   m.side = box.shape.size.minCoeff();
   m.reynolds = rho * speed * m.radius / mu;
   m.stokes_drag = 6.0 * std::numbers::pi * mu * m.radius * speed;
