@@ -151,6 +151,13 @@ void check_outputs(const SceneRunRequest& request, const Scene& scene, const std
   }
 }
 
+// A body's particles, and its lattice sites where it left out its interior (rigid_interior.hpp).
+std::string particles_of(const BodySetup& body) {
+  std::string text = std::to_string(body.count);
+  if (body.count < body.lattice_sites) text += " of " + std::to_string(body.lattice_sites) + " lattice sites";
+  return text;
+}
+
 void print_plan(const Scene& scene, const std::string& backend, const RunEstimate& estimate, const ParticleSetup& setup,
                 const std::string& output, int threads) {
   std::ostringstream out;
@@ -158,7 +165,7 @@ void print_plan(const Scene& scene, const std::string& backend, const RunEstimat
       << ": nothing is written\n"
       << "  particles: " << setup.size() << "\n";
   for (const BodySetup& b : setup.bodies)
-    out << "    " << b.name << " (" << to_string(b.kind) << "): " << b.count << "\n";
+    out << "    " << b.name << " (" << to_string(b.kind) << "): " << particles_of(b) << "\n";
   out << "  memory estimate: host " << format_bytes(estimate.host_bytes);
   if (backend == "cuda") out << ", GPU " << format_bytes(estimate.device_bytes);
   if (const auto available = available_host_memory()) out << " (host available: " << format_bytes(*available) << ")";
@@ -405,7 +412,7 @@ SceneRunResult run_scene(const SceneRunRequest& request) {
   if (!request.quiet) {
     std::cerr << "mssph: " << scene.name << ": " << setup.size() << " particles (";
     for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
-      std::cerr << (b ? ", " : "") << setup.bodies[b].name << " " << setup.bodies[b].count;
+      std::cerr << (b ? ", " : "") << setup.bodies[b].name << " " << particles_of(setup.bodies[b]);
     }
     std::cerr << "), " << std::llround(estimate.steps) << " steps of " << scene.simulation.dt << " s on "
               << backend_name << ", " << threads << " threads ("

@@ -35,6 +35,7 @@ std::vector<BodySeries> add_body_series(RunLog& log, const ParticleSetup& setup)
     const std::string g = "/bodies/" + body.name;
     log.set_attribute(g, "kind", std::string(to_string(body.kind)));
     log.set_attribute(g, "particle_count", static_cast<long long>(body.count));
+    log.set_attribute(g, "lattice_sites", static_cast<long long>(body.lattice_sites));
     log.set_attribute(g, "first_particle", static_cast<long long>(body.first));
     BodySeries s;
     s.centre_of_mass = log.add_series(g + "/centre_of_mass", 3, "m", "centre of mass", xyz);
