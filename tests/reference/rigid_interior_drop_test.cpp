@@ -8,6 +8,7 @@
 #include "config/scene_loader.hpp"
 #include "model/rigid_interior.hpp"
 #include "model/scene_builder.hpp"
+#include "scene_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,8 +22,9 @@ namespace {
 using Eigen::Vector3d;
 using nlohmann::json;
 
-constexpr double kBallSpacing = 0.01;  // the ball's radius is 10 spacings: a core of ~500 sites beyond reach
-constexpr std::size_t kSteps = 120;    // 30 ms from touching at 1 m/s
+constexpr double kBallSpacing = 0.01;  // the ball's radius is 10 spacings, so that a core lies beyond reach
+constexpr double kStep = 2.5e-4;       // [s]
+constexpr double kStrike = 0.03;       // the ball's travel into the target and its push back [s]
 
 // A ball of radius 10 dx moving down at 1 m/s, one spacing above a 30 x 30 x 12-site target: a
 // fixed rigid block, or a fluid pool in a container.
@@ -47,7 +49,7 @@ Scene ball_strike_scene(const std::string& target, bool sample_interiors) {
   }
   const json doc = {{"name", "rigid_interior_" + target},
                     {"simulation",
-                     {{"dt", 2.5e-4},
+                     {{"dt", kStep},
                       {"duration", 0.1},
                       {"particle_spacing", kBallSpacing},
                       {"jitter", 0.02},
@@ -60,18 +62,12 @@ Scene ball_strike_scene(const std::string& target, bool sample_interiors) {
   return parse_scene(doc, "rigid_interior_" + target + ".json");
 }
 
-std::size_t body_named(const ParticleSetup& setup, const std::string& name) {
-  for (std::size_t b = 0; b < setup.bodies.size(); ++b)
-    if (setup.bodies[b].name == name) return b;
-  throw std::runtime_error("no body " + name);
-}
-
 // The ball's interaction force, step by step, on the float32 cpu backend.
 std::vector<Vector3d> ball_force(ParticleSetup setup) {
-  const std::size_t ball = body_named(setup, "ball");
+  const std::size_t ball = testing::body_index(setup, "ball");
   const auto backend = make_backend("cpu", std::move(setup));
   std::vector<Vector3d> force;
-  for (std::size_t s = 0; s < kSteps; ++s) {
+  for (std::size_t s = 0; s < static_cast<std::size_t>(std::lround(kStrike / kStep)); ++s) {
     backend->step();
     force.push_back(backend->body_states()[ball].interaction_force);
   }
@@ -88,12 +84,12 @@ double largest_difference(const std::vector<Vector3d>& a, const std::vector<Vect
   return difference / peak;
 }
 
-class RigidInteriorStrike : public testing::TestWithParam<std::string> {};
+class RigidInteriorStrike : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RigidInteriorStrike, LeavingOutTheInteriorsChangesNoForce) {
   const ParticleSetup full = build_particles(ball_strike_scene(GetParam(), true));
   const ParticleSetup cut = build_particles(ball_strike_scene(GetParam(), false));
-  const std::size_t ball = body_named(full, "ball");
+  const std::size_t ball = testing::body_index(full, "ball");
   ASSERT_LT(cut.bodies[ball].count, full.bodies[ball].count);
   const std::vector<Vector3d> reference = ball_force(full);
   const double peak = std::max_element(reference.begin(), reference.end(), [](const Vector3d& a, const Vector3d& b) {
@@ -117,7 +113,7 @@ TEST_P(RigidInteriorStrike, LeavingOutTheInteriorsChangesNoForce) {
   EXPECT_GT(surface_only_difference, 1e-3);
 }
 
-INSTANTIATE_TEST_SUITE_P(Targets, RigidInteriorStrike, testing::Values("rigid", "fluid"));
+INSTANTIATE_TEST_SUITE_P(Targets, RigidInteriorStrike, ::testing::Values("rigid", "fluid"));
 
 }  // namespace
 }  // namespace mssph
