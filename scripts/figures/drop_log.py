@@ -33,9 +33,9 @@ class DropLog:
             self.poisson_ratio = block_material.get("poisson_ratio")
             body = h5["bodies"][sphere_name]
             self.mass = float(body.attrs["mass"])
-            # The sphere's lattice sites, interior included: its mass is rho_s dx^3 per site, while
-            # its particle_count leaves out the interior beyond reach (src/model/rigid_interior.hpp).
-            self.lattice_sites = round(self.mass / (sphere["density"] * self.spacing ** 3))
+            # The sphere's lattice sites, interior included; its particle_count leaves out the
+            # interior beyond reach (src/model/rigid_interior.hpp).
+            self.lattice_sites = int(body.attrs["lattice_sites"])
             self.time = h5["time"][:]
             self.z = body["centre_of_mass"][:, 2]
             self.vz = body["linear_momentum"][:, 2] / self.mass

@@ -29,7 +29,7 @@ std::vector<Node> offsets_within(double radius) {
 
 double rigid_surface_reach(double smoothing_length, double spacing) { return 2.0 * smoothing_length + spacing; }
 
-std::vector<std::uint8_t> sites_within_reach_of_surface(const std::vector<Eigen::Vector3d>& sites,
+std::vector<std::uint8_t> sites_within_reach_of_surface(std::span<const Eigen::Vector3d> sites,
                                                         const Eigen::Matrix3d& to_lattice, double dx, double reach) {
   if (sites.empty()) return {};
   // Integer lattice coordinates relative to the first site; a box around them, widened by the
@@ -72,10 +72,9 @@ void leave_out_rigid_interiors(ParticleSetup& setup, const std::vector<Eigen::Ve
   std::vector<std::uint8_t> keep(setup.size(), 1);
   for (const BodySetup& body : setup.bodies) {
     if (body.kind != BodyKind::rigid) continue;
-    const auto first = site.begin() + static_cast<std::ptrdiff_t>(body.first);
-    const std::vector<Eigen::Vector3d> sites(first, first + static_cast<std::ptrdiff_t>(body.count));
     const std::vector<std::uint8_t> within =
-        sites_within_reach_of_surface(sites, body.orientation.toRotationMatrix().transpose(), setup.spacing, reach);
+        sites_within_reach_of_surface(std::span(site).subspan(body.first, body.count),
+                                      body.orientation.toRotationMatrix().transpose(), setup.spacing, reach);
     std::copy(within.begin(), within.end(), keep.begin() + static_cast<std::ptrdiff_t>(body.first));
   }
   std::size_t kept = 0;

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace mssph {
@@ -24,7 +25,7 @@ double rigid_surface_reach(double smoothing_length, double spacing);
 // Which of a body's lattice sites (one lattice of spacing dx, in any frame the lattice is aligned
 // with: `to_lattice` maps a site into it) lie within `reach` of a lattice node the body leaves
 // empty, i.e. of the space outside it (1), or not (0): its interior beyond reach.
-std::vector<std::uint8_t> sites_within_reach_of_surface(const std::vector<Eigen::Vector3d>& sites,
+std::vector<std::uint8_t> sites_within_reach_of_surface(std::span<const Eigen::Vector3d> sites,
                                                         const Eigen::Matrix3d& to_lattice, double dx, double reach);
 
 // Leaves out each rigid body's particles beyond `reach` of its surface, keeping the order of the
