@@ -2,14 +2,16 @@
 // a CUDA graph and replayed each step (a second graph with events between the phases for when
 // phase timing is asked for); the device arrays (device_state) and what the logs and the haptic
 // loop read back (body_readback). A scene small
-// enough for teams of lanes keeps neighbour lists with a skin and rebuilds the grid only when they
-// expire (list_skin.hpp), a decision the grid kernel takes on the device.
+// enough for teams of lanes, or one that asks for lists (team_lanes.hpp), keeps neighbour lists with
+// a skin and rebuilds the grid only when they expire (list_skin.hpp), a decision the grid kernel
+// takes on the device.
 #include "cuda_backend.hpp"
 
 #include "../common/eigen_conversion.hpp"
 #include "../common/float_state.hpp"
 #include "../common/list_skin.hpp"
 #include "../common/read_back.hpp"
+#include "../common/team_lanes.hpp"
 #include "body_readback.cuh"
 #include "cuda_device.cuh"
 #include "force_probe.cuh"
@@ -26,6 +28,11 @@
 
 namespace mssph::kernels {
 namespace {
+
+// Lanes per particle of the scene's neighbour sums on this GPU (choose_team_lanes).
+unsigned team_lanes_for(const ParticleSetup& setup) {
+  return choose_team_lanes(setup.size(), resident_threads(), setup.neighbour_lists == NeighbourListUse::always);
+}
 
 // The scene in the kernels' form. With teams of lanes (choose_team_lanes), whose lists have a
 // skin, the grid's cells are h + skin wide (list_skin.hpp).
@@ -73,7 +80,7 @@ class CudaBackend final : public Backend {
 
   ParticleSetup setup_;
   std::string device_name_;
-  unsigned team_lanes_ = 1;  // lanes per particle in the neighbour sums (choose_team_lanes)
+  unsigned team_lanes_ = 1;  // lanes per particle in the neighbour sums (team_lanes_for)
   FloatScene scene_;
   ChunkTables chunks_;
   unsigned deformable_team_lanes_ = 1;  // lanes per deformable particle in its bond sums (choose_bond_team_lanes)
@@ -94,7 +101,7 @@ class CudaBackend final : public Backend {
 CudaBackend::CudaBackend(ParticleSetup setup)
     : setup_(std::move(setup)),
       device_name_(require_usable_device()),
-      team_lanes_(choose_team_lanes(setup_.size(), resident_threads())),
+      team_lanes_(team_lanes_for(setup_)),
       scene_(cuda_scene(setup_, team_lanes_)),
       chunks_(make_chunk_tables(scene_, setup_.bodies)),
       deformable_team_lanes_(choose_bond_team_lanes(scene_.deformable_body.size(), resident_threads())),
@@ -338,7 +345,7 @@ ParticleSnapshot CudaBackend::snapshot() {
 }  // namespace
 
 std::size_t cuda_backend_bytes(const ParticleSetup& setup) {
-  const unsigned team_lanes = choose_team_lanes(setup.size(), resident_threads());
+  const unsigned team_lanes = team_lanes_for(setup);
   const FloatScene scene = cuda_scene(setup, team_lanes);
   return device_array_sizes(scene, make_chunk_tables(scene, setup.bodies),
                             grid_kernel_blocks(setup.size(), scene.grid.cell_count()), team_lanes)

@@ -12,7 +12,7 @@ namespace mssph::kernels {
 namespace {
 
 // The neighbour sums give each particle a team of Lanes consecutive lanes of a warp (1 to 8,
-// see choose_team_lanes): the lanes split its candidates (CellRanges::for_each_candidate) and add
+// see team_lanes.hpp): the lanes split its candidates (CellRanges::for_each_candidate) and add
 // their partial sums by shuffles in a fixed order, so a sum's order depends only on Lanes. Every
 // lane ends with the same bits: at each xor stage the two partners add the same two values, in
 // swapped order, and float addition is commutative.
@@ -293,31 +293,7 @@ void with_team_lanes(unsigned lanes, Launch&& launch) {
   }
 }
 
-// The most lanes (up to 8) that keep particles * lanes within `threads`.
-unsigned most_lanes_within(std::size_t particles, std::size_t threads) {
-  unsigned lanes = 8;
-  while (lanes > 1 && particles * lanes > threads) lanes /= 2;
-  return lanes;
-}
-
 }  // namespace
-
-// As many lanes (up to 8) as keep the teams within one wave of the threads the GPU holds: a small
-// scene then has ~8x the threads in flight; a scene that fills the GPU on its own keeps one lane
-// per particle, which wastes no shuffles. Between them, up to four waves of resident threads,
-// teams of 2 lanes: with them come the lists (list_skin.hpp), whose skipped grid walks pay for the
-// second lane.
-unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads) {
-  const unsigned lanes = most_lanes_within(particles, resident_threads);
-  return lanes == 1 && particles * 2 <= 4 * resident_threads ? 2 : lanes;
-}
-
-// The bond passes' ~60 registers let half as many threads reside as the GPU could hold, and since
-// their teams hand the serial rest of step 1 to one thread per particle, more lanes pay only while
-// they fit one wave of those.
-unsigned choose_bond_team_lanes(std::size_t deformables, std::size_t resident_threads) {
-  return most_lanes_within(deformables, resident_threads / 2);
-}
 
 void launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream) {
   const DeformableView view = deformable_view(scene, state);

@@ -8,13 +8,6 @@
 
 namespace mssph::kernels {
 
-// Lanes per particle of the density and force sums: the most (up to 8) that keep
-// particles * lanes within one wave of resident threads, and 2 while that stays within four.
-unsigned choose_team_lanes(std::size_t particles, std::size_t resident_threads);
-// Lanes per deformable particle of the bond sums: the most (up to 8) that keep
-// deformables * lanes within one wave of the bond passes' resident threads, half the GPU's.
-unsigned choose_bond_team_lanes(std::size_t deformables, std::size_t resident_threads);
-
 // Rotations and stresses of every deformable particle, then their elastic forces (nothing
 // without deformable bodies).
 void launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream);

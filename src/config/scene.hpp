@@ -21,6 +21,10 @@ enum class ShapeType { box, sphere, container, spherical_container };
 //   full_stress: eq. 3 plus the divergence of mu (grad u)^T, so that a surface carries the whole
 //                Newtonian stress mu (grad u + grad u^T) (decision 057).
 enum class ViscosityModel { paper, full_stress };
+// Whether the GPU's neighbour sums keep neighbour lists with a skin (kernels/common/team_lanes.hpp):
+//   automatic: by the scene's size, up to about four waves of the device's resident threads;
+//   always:    at any size, for ~470 more bytes of device memory a particle.
+enum class NeighbourListUse { automatic, always };
 
 const char* to_string(BodyKind kind);
 
@@ -94,6 +98,7 @@ struct SimulationConfig {
   // Whether rigid bodies keep every lattice site, or only those within reach of their surface
   // (model/rigid_interior.hpp): the same physics, fewer particles.
   bool sample_rigid_interiors = false;
+  NeighbourListUse neighbour_lists = NeighbourListUse::automatic;
 };
 
 struct ProxyConfig {

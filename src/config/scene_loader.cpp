@@ -102,7 +102,7 @@ std::map<std::string, MaterialEntry> read_materials(const JsonReader& root) {
 SimulationConfig read_simulation(const JsonReader& root) {
   const JsonReader s = root.child("simulation");
   s.allow_only({"dt", "duration", "gravity", "particle_spacing", "smoothing_length", "seed", "jitter", "max_speed",
-                "domain", "max_lost_mass_fraction", "viscosity_model", "sample_rigid_interiors"});
+                "domain", "max_lost_mass_fraction", "viscosity_model", "sample_rigid_interiors", "neighbour_lists"});
   SimulationConfig sim;
   sim.dt = s.number("dt", Interval::positive());
   sim.duration = s.number("duration", Interval::positive());
@@ -140,6 +140,9 @@ SimulationConfig read_simulation(const JsonReader& root) {
                             ? ViscosityModel::full_stress
                             : ViscosityModel::paper;
   sim.sample_rigid_interiors = s.boolean_or("sample_rigid_interiors", false);
+  sim.neighbour_lists = s.choice_or("neighbour_lists", "auto", {"auto", "always"}) == "always"
+                            ? NeighbourListUse::always
+                            : NeighbourListUse::automatic;
   return sim;
 }
 

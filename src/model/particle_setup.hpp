@@ -46,6 +46,7 @@ struct ParticleSetup {
   Region domain;                        // particles leaving it are deactivated [m]
   double max_lost_mass_fraction = 0.0;  // of a body's mass, before the run fails [-]
   ViscosityModel viscosity_model = ViscosityModel::paper;
+  NeighbourListUse neighbour_lists = NeighbourListUse::automatic;
 
   std::vector<Eigen::Vector3d> position;     // [m]
   std::vector<Eigen::Vector3d> velocity;     // [m/s]

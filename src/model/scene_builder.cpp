@@ -194,6 +194,7 @@ ParticleSetup build_particles(const Scene& scene) {
   check_domain_holds_moving_particles(scene, setup);
   setup.max_lost_mass_fraction = sim.max_lost_mass_fraction;
   setup.viscosity_model = sim.viscosity_model;
+  setup.neighbour_lists = sim.neighbour_lists;
   return setup;
 }
 

@@ -153,6 +153,17 @@ TEST(SceneLoader, ViscosityModelIsOneOfTheNamedModels) {
   EXPECT_THAT(message, HasSubstr("full_stress"));
 }
 
+// neighbour_lists: by size unless a scene asks for lists always; another value is named with its
+// path and the choices.
+TEST(SceneLoader, NeighbourListsAreBySizeOrAlways) {
+  EXPECT_EQ(load_scene(kBase).simulation.neighbour_lists, NeighbourListUse::automatic);
+  EXPECT_EQ(load_scene(kBase, {"simulation/neighbour_lists=always"}).simulation.neighbour_lists,
+            NeighbourListUse::always);
+  const std::string message = input_error_of([&] { load_scene(kBase, {"simulation/neighbour_lists=never"}); });
+  EXPECT_THAT(message, HasSubstr("/simulation/neighbour_lists"));
+  EXPECT_THAT(message, HasSubstr("always"));
+}
+
 TEST(SceneLoader, BodiesComeInNameOrder) {
   // nlohmann::json keeps object members sorted by key, so body indices (particle order, the
   // run log's body index) follow the names, not the order in the file.
