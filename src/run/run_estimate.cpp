@@ -24,6 +24,11 @@ constexpr double kHostFloatBytes = 900.0, kHostFloatDeformableBytes = 4900.0;
 // 377 deformable bytes).
 constexpr double kCudaHostBytes = 200.0;
 constexpr double kCudaDeviceBytes = 330.0, kCudaDeviceDeformableBytes = 4900.0;
+// A scene that asks for neighbour lists at any size (simulation/neighbour_lists: always) adds two
+// lanes of 56 four-byte entries a particle, their counts and the rebuild positions
+// (kernels/cuda/device_arrays.hpp, team_list_capacity); by size, only scenes too small for the
+// device's memory to matter keep them.
+constexpr double kCudaListBytes = 2.0 * 56.0 * 4.0 + 2.0 * 4.0 + 16.0;
 
 // float32 has a 24-bit significand: at a distance R from the origin positions are resolved to
 // R 2^-23. Requiring that to be at most 2^-10 (about 0.1 %) of a spacing keeps lattice offsets
@@ -111,6 +116,7 @@ RunEstimate estimate_run(const Scene& scene, const std::string& backend) {
   per_particle_bytes *= neighbour_scale;
   if (backend == "cuda") {
     e.device_bytes = device_bytes * neighbour_scale;
+    if (scene.simulation.neighbour_lists == NeighbourListUse::always) e.device_bytes += e.particles * kCudaListBytes;
     e.host_bytes = e.particles * kCudaHostBytes;
   } else {
     e.host_bytes = per_particle_bytes;

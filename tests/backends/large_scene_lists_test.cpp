@@ -1,8 +1,9 @@
 // simulation/neighbour_lists: always on the cuda backend (kernels/common/team_lanes.hpp). The 1M
-// rigid block (1.16M particles with its container) lies beyond four waves of any GPU's resident
-// threads at two lanes a particle, where the size rule walks the grid with one lane every step;
-// asked for, the lists come at that size too, the grid is kept between steps, and the densities
-// agree with the walk's to float rounding (the same pairs summed in another order).
+// rigid block (1.16M particles with its container) lies beyond four waves of a GPU's resident
+// threads at two lanes a particle (on GPUs of up to 282 multiprocessors), where the size rule walks
+// the grid with one lane every step; asked for, the lists come at that size too, the grid is kept
+// between steps, and the densities agree with the walk's to float rounding (the same pairs summed
+// in another order).
 #include "backend_fixtures.hpp"
 #include "model/block_scene.hpp"
 
@@ -22,7 +23,9 @@ TEST(LargeSceneLists, TheCudaBackendKeepsListsAtAnySizeWhenTheSceneAsksForThem) 
   const std::unique_ptr<Backend> walked = make_backend("cuda", build_particles(scene));
   scene.simulation.neighbour_lists = NeighbourListUse::always;
   const std::unique_ptr<Backend> listed = make_backend("cuda", build_particles(scene));
-  ASSERT_FALSE(walked->neighbour_grid_builds().has_value()) << "by size, one lane walks the grid";
+  if (walked->neighbour_grid_builds().has_value()) {
+    GTEST_SKIP() << "this GPU holds the block within four waves: the size rule gives it lists already";
+  }
   ASSERT_TRUE(listed->neighbour_grid_builds().has_value()) << "asked for, the lists come at any size";
   for (int k = 0; k < kListedSteps; ++k) {
     walked->step();

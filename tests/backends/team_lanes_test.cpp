@@ -13,6 +13,10 @@ namespace {
 constexpr std::size_t kResident = 132 * 2048;
 
 TEST(TeamLanes, SmallScenesTakeTheMostLanesThatFitOneWave) {
+  EXPECT_EQ(choose_team_lanes(kResident / 8, kResident, false), 8u);
+  EXPECT_EQ(choose_team_lanes(kResident / 8 + 1, kResident, false), 4u);
+  EXPECT_EQ(choose_team_lanes(kResident / 4, kResident, false), 4u);
+  EXPECT_EQ(choose_team_lanes(kResident / 4 + 1, kResident, false), 2u);
   EXPECT_EQ(choose_team_lanes(2'000, kResident, false), 8u);
   EXPECT_EQ(choose_team_lanes(46'188, kResident, false), 4u);   // the 30k block
   EXPECT_EQ(choose_team_lanes(134'203, kResident, false), 2u);  // the 100k block

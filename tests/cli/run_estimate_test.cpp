@@ -70,5 +70,26 @@ TEST(RunEstimate, ParticlesPerBodyMatchTheSampledLattice) {
   }
 }
 
+// A scene that asks for neighbour lists at any size budgets their 472 bytes a particle on the device
+// (two lanes of 56 four-byte entries, counts and rebuild positions); the host's share is the same.
+TEST(RunEstimate, NeighbourListsAddTheirDeviceBytes) {
+  const double dx = 0.01;
+  Scene scene;
+  scene.simulation.particle_spacing = dx;
+  scene.simulation.smoothing_length = 2.0 * dx;
+  scene.simulation.dt = 1e-3;
+  scene.simulation.duration = 1.0;
+  BodyConfig pool;
+  pool.name = "pool";
+  pool.kind = BodyKind::fluid;
+  pool.shape = box({0.2, 0.1, 0.05});
+  scene.bodies.push_back(pool);
+  const cli::RunEstimate by_size = cli::estimate_run(scene, "cuda");
+  scene.simulation.neighbour_lists = NeighbourListUse::always;
+  const cli::RunEstimate with_lists = cli::estimate_run(scene, "cuda");
+  EXPECT_NEAR(with_lists.device_bytes - by_size.device_bytes, 472.0 * by_size.particles, 1e-6 * by_size.device_bytes);
+  EXPECT_EQ(with_lists.host_bytes, by_size.host_bytes);
+}
+
 }  // namespace
 }  // namespace mssph::test

@@ -245,7 +245,7 @@ TEST(SetOverride, MayAddAKeyWhichIsThenValidatedLikeTheFile) {
             kBase +
                 ": /simulation/time_step: unknown key 'time_step'; allowed keys: dt duration gravity "
                 "particle_spacing smoothing_length seed jitter max_speed domain max_lost_mass_fraction viscosity_model "
-                "sample_rigid_interiors (this value comes from --set simulation/time_step=0.001)");
+                "sample_rigid_interiors neighbour_lists (this value comes from --set simulation/time_step=0.001)");
   EXPECT_EQ(input_error_of([&] { load_scene(kBase, {"simulation/dt=fast"}); }),
             kBase +
                 ": /simulation/dt: expected a number > 0, got string \"fast\" (this value comes from --set "
