@@ -8,6 +8,16 @@
 namespace mssph::test {
 namespace {
 
+// A scene of no bodies yet at spacing dx, h = 2 dx, 1000 steps.
+Scene empty_scene(double dx) {
+  Scene scene;
+  scene.simulation.particle_spacing = dx;
+  scene.simulation.smoothing_length = 2.0 * dx;
+  scene.simulation.dt = 1e-3;
+  scene.simulation.duration = 1.0;
+  return scene;
+}
+
 Shape box(const Eigen::Vector3d& size) {
   Shape s;
   s.type = ShapeType::box;
@@ -44,11 +54,7 @@ Shape spherical_container(double inner_radius, int layers) {
 // rejects a shell or ball a layer too thick or thin (26 % or more here).
 TEST(RunEstimate, ParticlesPerBodyMatchTheSampledLattice) {
   const double dx = 0.01;
-  Scene scene;
-  scene.simulation.particle_spacing = dx;
-  scene.simulation.smoothing_length = 2.0 * dx;
-  scene.simulation.dt = 1e-3;
-  scene.simulation.duration = 1.0;
+  Scene scene = empty_scene(dx);
   const std::vector<std::pair<Shape, double>> shapes{{box({0.2, 0.1, 0.05}), 0.0},
                                                      {container({0.2, 0.1, 0.15}, 2, true), 0.0},
                                                      {container({0.2, 0.1, 0.15}, 3, false), 0.0},
@@ -73,12 +79,7 @@ TEST(RunEstimate, ParticlesPerBodyMatchTheSampledLattice) {
 // A scene that asks for neighbour lists at any size budgets their 472 bytes a particle on the device
 // (two lanes of 56 four-byte entries, counts and rebuild positions); the host's share is the same.
 TEST(RunEstimate, NeighbourListsAddTheirDeviceBytes) {
-  const double dx = 0.01;
-  Scene scene;
-  scene.simulation.particle_spacing = dx;
-  scene.simulation.smoothing_length = 2.0 * dx;
-  scene.simulation.dt = 1e-3;
-  scene.simulation.duration = 1.0;
+  Scene scene = empty_scene(0.01);
   BodyConfig pool;
   pool.name = "pool";
   pool.kind = BodyKind::fluid;
