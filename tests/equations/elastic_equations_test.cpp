@@ -222,22 +222,21 @@ TEST(ElasticEquationTwins, VelocityGradient) {
   }
 }
 
-// Step 1: the float code's iterative rotation extraction (Mueller et al. 2016) and the
+// Step 1: the float code's rotation extraction (Newton's method on tr(R^T A)) and the
 // reference's polar decomposition by SVD agree on A = R S, S symmetric positive definite,
-// warm-started 0.3 rad away. The iteration stops after 20 rounds: for stretches up to 25 % that
-// converges within one call; for stretches up to a factor 2 (one axis squeezed to half, another
-// doubled) it may take longer, as the next steps' calls continue from the last rotation, which
-// the check repeats with three calls.
+// warm-started 0.3 rad away, after one call (20 iterations at most), for stretches up to 25 % and
+// up to a factor 2 (one axis squeezed to half, another doubled). Mueller et al.'s fixed step,
+// which the extraction keeps for flat or inverted neighbourhoods, fails the second case in one
+// call: it takes a third or more of the error into each next iteration.
 TEST(ElasticEquationTwins, RotationOfTheMomentMatrix) {
   TwinDraws draws("ElasticEquationTwins.RotationOfTheMomentMatrix");
   struct Case {
     double largest_stretch;
-    int calls;
     const char* name;
   };
   // A function that returned its warm start would be off by |R(0.3 rad) - I| = 0.42 (scale 1).
-  for (const Case c : {Case{1.25, 1, "R_i from A_i (step 1), stretches to 1.25, one call"},
-                       Case{2.0, 3, "R_i from A_i (step 1), stretches to 2, three calls"}}) {
+  for (const Case c :
+       {Case{1.25, "R_i from A_i (step 1), stretches to 1.25"}, Case{2.0, "R_i from A_i (step 1), stretches to 2"}}) {
     const double largest_stretch = c.largest_stretch;
     TwinComparison rotation(c.name);
     for (int k = 0; k < kDraws; ++k) {
@@ -252,11 +251,43 @@ TEST(ElasticEquationTwins, RotationOfTheMomentMatrix) {
       const Eigen::Vector3d axis = draws.vector(1.0).normalized();
       const Eigen::Quaterniond start = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, axis)) * q;
       const Eigen::Matrix3d expected = reference::rotation_from_moment_matrix(a, start.toRotationMatrix());
-      kernels::Quat got = to_float(start);
-      for (int call = 0; call < c.calls; ++call) got = kernels::extract_rotation(to_float(a), got);
+      const kernels::Quat got = kernels::extract_rotation(to_float(a), to_float(start));
       rotation.add(to_double(kernels::rotation_matrix(got)), expected, 1.0);
     }
   }
+}
+
+// Step 1 on degenerate neighbourhoods, where the Newton step's Hessian is singular or the
+// moment matrix holds no rotation: the float extraction returns what the reference's polar
+// decomposition returns, a proper rotation. Flat (one layer, rank 2), warm-started 0.3 rad away:
+// Q. Inverted (det A < 0): the identity, not a reflection. On one line: the line goes to Q's image
+// of it. Empty: the warm start. 1e-5: float32 rounding of a rotation, as kTolerance.
+TEST(ElasticEquationTwins, RotationOfDegenerateMomentMatrices) {
+  const Eigen::Matrix3d q = Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Quaterniond near_q =
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d(0, 1, 0))) * Eigen::Quaterniond(q);
+  auto rotation_of = [](const Eigen::Matrix3d& a, const Eigen::Quaterniond& start) {
+    const kernels::Quat got = kernels::extract_rotation(to_float(a), to_float(start));
+    EXPECT_NEAR(to_double(got).norm(), 1.0, 1e-6) << "not a unit quaternion";
+    return to_double(kernels::rotation_matrix(got));
+  };
+  Eigen::Matrix3d flat = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& rest :
+       {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(-1, 0.5, 0), Eigen::Vector3d(0.3, -1, 0)}) {
+    flat += reference::moment_matrix_term(0.7, q * rest, rest);
+  }
+  EXPECT_LT((rotation_of(flat, near_q) - q).norm(), 1e-5) << "flat";
+
+  const Eigen::Matrix3d inverted = Eigen::Vector3d(3.0, 2.0, -1.0).asDiagonal();
+  const Eigen::Matrix3d from_inverted = rotation_of(inverted, Eigen::Quaterniond::Identity());
+  EXPECT_LT((from_inverted - Eigen::Matrix3d::Identity()).norm(), 1e-5) << "inverted";
+
+  const Eigen::Vector3d line(1.0, 0.0, 0.0);
+  const Eigen::Matrix3d linear =
+      reference::moment_matrix_term(1.0, q * line, line) + reference::moment_matrix_term(1.0, -q * line, -line);
+  EXPECT_LT((rotation_of(linear, Eigen::Quaterniond::Identity()) * line - q * line).norm(), 1e-5) << "linear";
+
+  EXPECT_LT((rotation_of(Eigen::Matrix3d::Zero(), near_q) - near_q.toRotationMatrix()).norm(), 1e-6) << "empty";
 }
 
 TEST(ElasticEquationTwins, Strains) {
