@@ -64,8 +64,13 @@ __device__ BondSums team_sum(const BondSums& s) {
 // 32 particles at once rather than for its 32 / Lanes teams with the other lanes idle. Viscous:
 // the scene has a body with a viscous modulus, whose particles also sum their velocities; a scene
 // without one runs the kernel without that sum, its registers, shuffles and shared memory.
+// Both bond passes wait mostly on their gathers of neighbour data, so they are held to 64
+// registers, four blocks a multiprocessor: the warps this adds hide more of those loads than the
+// few spilled values of the viscous variant and the rotation's Newton steps cost.
+inline constexpr int kBondBlocksPerMultiprocessor = 4;
+
 template <unsigned Lanes, bool Viscous>
-__global__ void rotation_stress_kernel(DeformableView view) {
+__global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor) rotation_stress_kernel(DeformableView view) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t d = seat.member, lane = seat.lane;
   const bool active = d < view.count;
@@ -102,7 +107,7 @@ __global__ void rotation_stress_kernel(DeformableView view) {
 }
 
 template <unsigned Lanes>
-__global__ void elastic_force_kernel(DeformableView view) {
+__global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor) elastic_force_kernel(DeformableView view) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t d = seat.member, lane = seat.lane;
   const bool active = d < view.count;
