@@ -90,32 +90,38 @@ MSSPH_HD std::uint32_t particle_index(const ElasticParameters& body, std::uint32
 // by Newton's method on that objective, starting from last step's rotation. Rotating R by a small
 // omega changes the objective by omega . t - 1/2 omega^T H omega, with the torque
 // t = sum_c r_c x a_c and H = tr(B) I - sym(B), B = A R^T = sum_c a_c r_c^T (r_c, a_c: columns of
-// R and A), so the step is omega = H^-1 t; it converges quadratically. Mueller et al. 2016 ("A
-// robust method to extract the rotational part of deformations") step by t / |tr(B)|, which
-// replaces H by 3/2 of it near a rest shape and takes a third of the error into each next
-// iteration. Where H is not positive definite (flat or inverted neighbourhoods) the step is
-// theirs, which stays a proper rotation and keeps the rotation it has there. The iteration stops
-// when |t| / |tr(B)|, about the angle still to turn, falls below twice float32's machine epsilon:
-// near that, rounding in t and in the unit quaternion keeps it from shrinking.
-inline constexpr float kRotationTolerance = 2.5e-7f;
+// R and A), so the step is omega = H^-1 t, which converges quadratically near the solution.
+// Mueller et al. 2016 ("A robust method to extract the rotational part of deformations") step by
+// t / |tr(B)|, which replaces H by 3/2 of it near a rest shape and keeps a third of the error for
+// the next iteration; their step stays a proper rotation and leaves the rotation about a line of
+// neighbours as it is. Their step is taken where Newton's is not to be trusted: H not positive
+// definite (a line of neighbours, some inverted neighbourhoods, warm starts far off) or a Newton
+// step beyond kLargestNewtonStep (H nearly singular). Both are computed from t and B divided by
+// |tr(B)|, so that no product overflows or underflows whatever the scale of A. The iteration
+// stops when Mueller's step falls below twice float32's machine epsilon: near that, rounding in
+// t and in the unit quaternion keeps it from shrinking.
+inline constexpr float kRotationTolerance = 2.5e-7f;  // [rad]
+inline constexpr float kLargestNewtonStep = 0.5f;     // [rad]
 MSSPH_HD Quat extract_rotation(const Mat3& a, Quat q) {
   const Vec3 a0 = column(a, 0), a1 = column(a, 1), a2 = column(a, 2);
   for (int iteration = 0; iteration < 20; ++iteration) {
     const Mat3 r = rotation_matrix(q);
     const Vec3 r0 = column(r, 0), r1 = column(r, 1), r2 = column(r, 2);
-    const Vec3 torque = cross(r0, a0) + cross(r1, a1) + cross(r2, a2);
-    const float alignment = dot(r0, a0) + dot(r1, a1) + dot(r2, a2);
-    if (norm(torque) <= kRotationTolerance * std::fabs(alignment)) break;
-    const Mat3 b = outer(a0, r0) + outer(a1, r1) + outer(a2, r2);
-    Mat3 hessian = -0.5f * (b + transpose(b));
-    for (int k = 0; k < 3; ++k) hessian(k, k) += alignment;
+    const float alignment = dot(r0, a0) + dot(r1, a1) + dot(r2, a2);  // tr(B)
+    const float scale = 1.0f / (std::fabs(alignment) + 1e-30f);
+    const Vec3 mueller_step = scale * (cross(r0, a0) + cross(r1, a1) + cross(r2, a2));
+    if (norm(mueller_step) <= kRotationTolerance) break;
+    const Mat3 b = scale * (outer(a0, r0) + outer(a1, r1) + outer(a2, r2));
+    Mat3 hessian = -0.5f * (b + transpose(b));  // H / |tr(B)|
+    for (int k = 0; k < 3; ++k) hessian(k, k) += alignment * scale;
     const Mat3 adjugate = cofactor(hessian);  // symmetric, as the Hessian is
     const float det = dot(column(hessian, 0), column(adjugate, 0));
-    const bool positive_definite = hessian(0, 0) > 0.0f && adjugate(2, 2) > 0.0f && det > 0.0f;
-    const Vec3 omega =
-        positive_definite ? (1.0f / det) * (adjugate * torque) : (1.0f / (std::fabs(alignment) + 1e-30f)) * torque;
-    const float angle = norm(omega);
-    if (angle == 0.0f) break;
+    const bool positive_definite = hessian(0, 0) > 0.0f && adjugate(2, 2) > 0.0f && det > 0.0f;  // Sylvester
+    const Vec3 newton_step = (1.0f / det) * (adjugate * mueller_step);
+    const float newton_angle = norm(newton_step);
+    const bool trusted = positive_definite && newton_angle > 0.0f && newton_angle <= kLargestNewtonStep;
+    const Vec3 omega = trusted ? newton_step : mueller_step;
+    const float angle = trusted ? newton_angle : norm(mueller_step);
     q = normalized(axis_angle((1.0f / angle) * omega, angle) * q);
   }
   return q;

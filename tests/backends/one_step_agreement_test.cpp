@@ -39,8 +39,8 @@ void compare(const std::string& backend, const validation::OneStepScene& scene) 
   if (e.deformed) {
     std::cout << ", elastic force " << e.elastic_force << ", rotation " << e.rotation;
     EXPECT_LT(e.elastic_force, 1e-4);
-    // Rotations: an SVD polar decomposition in double against float32 Newton iterations stopped
-    // below 2.5e-7 rad still to turn: agreement to float rounding, 1e-5.
+    // Rotations: an SVD polar decomposition in double against float32 Newton iterations, stopped
+    // when Mueller et al.'s step is below 2.5e-7 rad: agreement to float rounding, 1e-5.
     EXPECT_LT(e.rotation, 1e-5);
   }
   std::cout << "\n";

@@ -257,15 +257,22 @@ TEST(ElasticEquationTwins, RotationOfTheMomentMatrix) {
   }
 }
 
-// Step 1 on degenerate neighbourhoods, where the Newton step's Hessian is singular or the
-// moment matrix holds no rotation: the float extraction returns what the reference's polar
-// decomposition returns, a proper rotation. Flat (one layer, rank 2), warm-started 0.3 rad away:
-// Q. Inverted (det A < 0): the identity, not a reflection. On one line: the line goes to Q's image
-// of it. Empty: the warm start. 1e-5: float32 rounding of a rotation, as kTolerance.
-TEST(ElasticEquationTwins, RotationOfDegenerateMomentMatrices) {
+// Step 1 where Newton's step is not to be trusted: the float extraction returns what the
+// reference's polar decomposition returns, a proper rotation. Flat (one layer, rank 2), 0.3 rad
+// off: Q. Inverted (det A < 0), 0.3 rad off: the identity, not a reflection. A Hessian that fails
+// Sylvester's second minor at the start (its first minor and determinant positive): the
+// reference's rotation. Nearly on a line (stretches 1, 0.01, 0.01), 0.3 rad off, where H is
+// nearly singular and an unbounded Newton step turns by up to pi: the reference's rotation. On a
+// line: the line goes to Q's image of it. Empty: the warm start. Tolerances: 1e-5, float32
+// rounding of a rotation (as kTolerance); 1e-4 nearly on a line, where rounding of A's 1 %
+// directions (1e-7 of |A|) moves the rotation about the line by ~1e-5; 1e-6 on a quaternion's norm
+// and on the empty case, which returns its start rounded to float.
+TEST(ElasticEquationTwins, RotationWhereNewtonsStepIsNotTrusted) {
+  TwinDraws draws("ElasticEquationTwins.RotationWhereNewtonsStepIsNotTrusted");
   const Eigen::Matrix3d q = Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-  const Eigen::Quaterniond near_q =
-      Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d(0, 1, 0))) * Eigen::Quaterniond(q);
+  auto off_by_0_3_rad = [](const Eigen::Quaterniond& start) {
+    return Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized())) * start;
+  };
   auto rotation_of = [](const Eigen::Matrix3d& a, const Eigen::Quaterniond& start) {
     const kernels::Quat got = kernels::extract_rotation(to_float(a), to_float(start));
     EXPECT_NEAR(to_double(got).norm(), 1.0, 1e-6) << "not a unit quaternion";
@@ -276,18 +283,37 @@ TEST(ElasticEquationTwins, RotationOfDegenerateMomentMatrices) {
        {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(-1, 0.5, 0), Eigen::Vector3d(0.3, -1, 0)}) {
     flat += reference::moment_matrix_term(0.7, q * rest, rest);
   }
-  EXPECT_LT((rotation_of(flat, near_q) - q).norm(), 1e-5) << "flat";
+  EXPECT_LT((rotation_of(flat, off_by_0_3_rad(Eigen::Quaterniond(q))) - q).norm(), 1e-5) << "flat";
 
   const Eigen::Matrix3d inverted = Eigen::Vector3d(3.0, 2.0, -1.0).asDiagonal();
-  const Eigen::Matrix3d from_inverted = rotation_of(inverted, Eigen::Quaterniond::Identity());
+  const Eigen::Matrix3d from_inverted = rotation_of(inverted, off_by_0_3_rad(Eigen::Quaterniond::Identity()));
   EXPECT_LT((from_inverted - Eigen::Matrix3d::Identity()).norm(), 1e-5) << "inverted";
+
+  // From R = I, H = tr(S) I - S for the symmetric part S of A: H = [[1, 2, 0], [2, -1, 0], [0, 0, -1]].
+  Eigen::Matrix3d indefinite;
+  indefinite << -1.5, -2.0, 0.1, -2.0, 0.5, 0.0, -0.1, 0.0, 0.5;
+  EXPECT_LT((rotation_of(indefinite, Eigen::Quaterniond::Identity()) -
+             reference::rotation_from_moment_matrix(indefinite, Eigen::Matrix3d::Identity()))
+                .norm(),
+            1e-5)
+      << "indefinite Hessian";
+
+  for (int k = 0; k < 200; ++k) {
+    const Eigen::Quaterniond turn = draws.quaternion();
+    const Eigen::Matrix3d axes = draws.rotation();
+    const Eigen::Matrix3d nearly_linear =
+        turn.toRotationMatrix() * axes * Eigen::Vector3d(1.0, 0.01, 0.01).asDiagonal() * axes.transpose();
+    EXPECT_LT((rotation_of(nearly_linear, off_by_0_3_rad(turn)) - turn.toRotationMatrix()).norm(), 1e-4)
+        << "nearly on a line, draw " << k;
+  }
 
   const Eigen::Vector3d line(1.0, 0.0, 0.0);
   const Eigen::Matrix3d linear =
       reference::moment_matrix_term(1.0, q * line, line) + reference::moment_matrix_term(1.0, -q * line, -line);
   EXPECT_LT((rotation_of(linear, Eigen::Quaterniond::Identity()) * line - q * line).norm(), 1e-5) << "linear";
 
-  EXPECT_LT((rotation_of(Eigen::Matrix3d::Zero(), near_q) - near_q.toRotationMatrix()).norm(), 1e-6) << "empty";
+  const Eigen::Quaterniond start = off_by_0_3_rad(Eigen::Quaterniond(q));
+  EXPECT_LT((rotation_of(Eigen::Matrix3d::Zero(), start) - start.toRotationMatrix()).norm(), 1e-6) << "empty";
 }
 
 TEST(ElasticEquationTwins, Strains) {
