@@ -110,7 +110,8 @@ MSSPH_HD Quat extract_rotation(const Mat3& a, Quat q) {
     const float alignment = dot(r0, a0) + dot(r1, a1) + dot(r2, a2);  // tr(B)
     const float scale = 1.0f / (std::fabs(alignment) + 1e-30f);
     const Vec3 mueller_step = scale * (cross(r0, a0) + cross(r1, a1) + cross(r2, a2));
-    if (norm(mueller_step) <= kRotationTolerance) break;
+    const float mueller_angle = norm(mueller_step);
+    if (mueller_angle <= kRotationTolerance) break;
     const Mat3 b = scale * (outer(a0, r0) + outer(a1, r1) + outer(a2, r2));
     Mat3 hessian = -0.5f * (b + transpose(b));  // H / |tr(B)|
     for (int k = 0; k < 3; ++k) hessian(k, k) += alignment * scale;
@@ -121,7 +122,7 @@ MSSPH_HD Quat extract_rotation(const Mat3& a, Quat q) {
     const float newton_angle = norm(newton_step);
     const bool trusted = positive_definite && newton_angle > 0.0f && newton_angle <= kLargestNewtonStep;
     const Vec3 omega = trusted ? newton_step : mueller_step;
-    const float angle = trusted ? newton_angle : norm(mueller_step);
+    const float angle = trusted ? newton_angle : mueller_angle;
     q = normalized(axis_angle((1.0f / angle) * omega, angle) * q);
   }
   return q;

@@ -226,7 +226,7 @@ TEST(ElasticEquationTwins, VelocityGradient) {
 // reference's polar decomposition by SVD agree on A = R S, S symmetric positive definite,
 // warm-started 0.3 rad away, after one call (20 iterations at most), for stretches up to 25 % and
 // up to a factor 2 (one axis squeezed to half, another doubled). Mueller et al.'s fixed step,
-// which the extraction keeps for flat or inverted neighbourhoods, fails the second case in one
+// which the extraction keeps where Newton's is not to be trusted, fails the second case in one
 // call: it takes a third or more of the error into each next iteration.
 TEST(ElasticEquationTwins, RotationOfTheMomentMatrix) {
   TwinDraws draws("ElasticEquationTwins.RotationOfTheMomentMatrix");
