@@ -14,6 +14,7 @@
 // models (scene key `model`, src/config/elastic_model.hpp) are those of the reference's elastic_response(), with the
 // equations and sources given there.
 #include "config/elastic_model.hpp"
+#include "mat3_store.hpp"
 #include "particle_views.hpp"
 #include "smoothing_kernels.hpp"
 
@@ -38,23 +39,28 @@ struct ElasticParameters {
   float lowest_valid_volume_ratio;  // det F at or below which a particle is counted as past the model's range
 };
 
-struct DeformableView {
-  const ElasticParameters* bodies;      // per deformable body
-  const std::uint32_t* body_of;         // per deformable particle: index into bodies
-  const std::uint32_t* bond_count;      // per deformable particle: its number of rest bonds
-  const std::uint32_t* bond_neighbour;  // bond-major: the k-th rest neighbour (canonical index) of d at k * count + d
-  const Vec4* rest;                     // per deformable particle: X_i in the kernels' frame [m], w: V0_i [m^3]
-  const Mat3* correction;               // per deformable particle: L_i (model/deformable_rest_state.hpp)
-  SmoothingKernels smoothing;           // poly6 W (moment matrix, zero-energy weight), spiky grad W (d_ij)
-  const Vec4* position;                 // canonical positions (read)
-  const Vec4* velocity;                 // canonical velocities (read: viscous stress, damping)
-  Quat* rotation;                       // R_i as a quaternion; read as the warm start, then written
-  Mat3* corrected_stress_action;        // K_i L_i, K_i = V0_i R_i P_i (world frame) [N m] (elastic_force says why)
-  Mat3* deformation;                    // world-frame F_i = R_i (I + grad u_i), for the zero-energy control and
-                                        // the logged volume ratio det F_i
-  Vec4* elastic_force;                  // canonical order (non-deformable entries stay zero) [N]
-  std::uint32_t count;                  // deformable particles
+// StressActions: Mat3Records on the host, Mat3Planes on the GPU (mat3_store.hpp says why); the
+// passes below take either view.
+template <class StressActions>
+struct DeformableViewOf {
+  const ElasticParameters* bodies;        // per deformable body
+  const std::uint32_t* body_of;           // per deformable particle: index into bodies
+  const std::uint32_t* bond_count;        // per deformable particle: its number of rest bonds
+  const std::uint32_t* bond_neighbour;    // bond-major: the k-th rest neighbour (canonical index) of d at k * count + d
+  const Vec4* rest;                       // per deformable particle: X_i in the kernels' frame [m], w: V0_i [m^3]
+  const Mat3* correction;                 // per deformable particle: L_i (model/deformable_rest_state.hpp)
+  SmoothingKernels smoothing;             // poly6 W (moment matrix, zero-energy weight), spiky grad W (d_ij)
+  const Vec4* position;                   // canonical positions (read)
+  const Vec4* velocity;                   // canonical velocities (read: viscous stress, damping)
+  Quat* rotation;                         // R_i as a quaternion; read as the warm start, then written
+  StressActions corrected_stress_action;  // K_i L_i, K_i = V0_i R_i P_i (world frame) [N m] (elastic_force says why)
+  Mat3* deformation;                      // world-frame F_i = R_i (I + grad u_i), for the zero-energy control and
+                                          // the logged volume ratio det F_i
+  Vec4* elastic_force;                    // canonical order (non-deformable entries stay zero) [N]
+  std::uint32_t count;                    // deformable particles
 };
+using HostDeformableView = DeformableViewOf<Mat3Records>;
+using DeviceDeformableView = DeformableViewOf<Mat3Planes>;
 
 // Rest neighbour j (deformable index dj) of deformable particle i, derived from their rest positions
 // and volumes whenever a pass reads it: the bonds are the deformable passes' largest read, and a
@@ -69,7 +75,8 @@ struct RestBond {
   float volume_j;  // V0_j [m^3]
 };
 
-MSSPH_HD RestBond rest_bond(const DeformableView& v, Vec4 rest_i, std::uint32_t dj) {
+template <class View>
+MSSPH_HD RestBond rest_bond(const View& v, Vec4 rest_i, std::uint32_t dj) {
   const Vec4 rest_j = v.rest[dj];
   const Vec3 offset = xyz(rest_j) - xyz(rest_i);
   const float r2 = squared_norm(offset);
@@ -143,7 +150,8 @@ struct BondSums {
 // The deformable particles' bond loops are split like the neighbour sums (fluid_physics.hpp):
 // lane `lane` of a team of `lanes` takes bonds lane, lane + lanes, ...; the host runs one lane.
 // Lane `lane`'s share of deformable particle d's bond sums, before L_i^T (corrected_bond_sums).
-MSSPH_HD BondSums bond_sums_share(const DeformableView& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
+template <class View>
+MSSPH_HD BondSums bond_sums_share(const View& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const Vec3 x_i = xyz(v.position[particle_index(body, d)]);
   BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
@@ -171,7 +179,8 @@ MSSPH_HD BondSums corrected_bond_sums(BondSums sums, const Mat3& correction) {
 // Lane `lane`'s share of eq. 4's operator on the velocities, sum_j v_ij (V0_j grad W_ij)^T, before
 // L_i^T (velocity_gradient applies it): only bodies with a viscous modulus need it, so it is a
 // pass of its own over the bonds, which the other bodies' kernels leave out.
-MSSPH_HD Mat3 velocity_sum_share(const DeformableView& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
+template <class View>
+MSSPH_HD Mat3 velocity_sum_share(const View& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const Vec3 v_i = xyz(v.velocity[particle_index(body, d)]);
   Mat3 sum = zero_mat3();
@@ -271,15 +280,16 @@ MSSPH_HD Mat3 world_deformation_gradient(const Mat3& rotation, const Mat3& grad_
 
 // Step 1 and the elastic part of step 2 for deformable particle d, from its bond sums (all lanes'
 // shares added): R_i, grad u_i (eq. 4), P_i (eq. 5), K_i and F_i.
-MSSPH_HD void store_rotation_and_stress(const DeformableView& v, std::uint32_t d, const BondSums& uncorrected) {
+template <class View>
+MSSPH_HD void store_rotation_and_stress(const View& v, std::uint32_t d, const BondSums& uncorrected) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const BondSums sums = corrected_bond_sums(uncorrected, v.correction[d]);
   const Quat q = extract_rotation(sums.moment, v.rotation[d]);
   const Mat3 rotation = rotation_matrix(q);
   const Mat3 grad_u = displacement_gradient(rotation, sums);
   v.rotation[d] = q;
-  v.corrected_stress_action[d] =
-      stress_action(v.rest[d].w, rotation, first_piola_kirchhoff(body, grad_u)) * v.correction[d];
+  v.corrected_stress_action.store(
+      d, stress_action(v.rest[d].w, rotation, first_piola_kirchhoff(body, grad_u)) * v.correction[d]);
   v.deformation[d] = world_deformation_gradient(rotation, grad_u);
 }
 
@@ -287,16 +297,18 @@ MSSPH_HD void store_rotation_and_stress(const DeformableView& v, std::uint32_t d
 // stored K_i L_i, from its velocity sum (all lanes' shares) and the R_i and F_i that
 // store_rotation_and_stress stored: K_i = V0_i R_i (P_i + (I + grad u_i) sigma_v). Kept apart
 // from the elastic stress so that scenes without viscosity run that function unchanged.
-MSSPH_HD void add_viscous_stress(const DeformableView& v, std::uint32_t d, const Mat3& velocity_sum) {
+template <class View>
+MSSPH_HD void add_viscous_stress(const View& v, std::uint32_t d, const Mat3& velocity_sum) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const Mat3 grad_v = velocity_gradient(rotation_matrix(v.rotation[d]), velocity_sum, v.correction[d]);
-  v.corrected_stress_action[d] =
-      v.corrected_stress_action[d] +
-      viscous_stress_action(v.rest[d].w, v.deformation[d], viscous_stress(body, grad_v)) * v.correction[d];
+  v.corrected_stress_action.store(
+      d, v.corrected_stress_action.load(d) +
+             viscous_stress_action(v.rest[d].w, v.deformation[d], viscous_stress(body, grad_v)) * v.correction[d]);
 }
 
 // The same in one lane (the host).
-MSSPH_HD void rotation_and_stress(const DeformableView& v, std::uint32_t d) {
+template <class View>
+MSSPH_HD void rotation_and_stress(const View& v, std::uint32_t d) {
   store_rotation_and_stress(v, d, bond_sums_share(v, d, 0, 1));
   if (v.bodies[v.body_of[d]].retardation_time > 0.0f) add_viscous_stress(v, d, velocity_sum_share(v, d, 0, 1));
 }
@@ -333,11 +345,12 @@ MSSPH_HD Vec3 damping_force(float rate, float mass, Vec3 velocity) { return (-ra
 // K_i d_ij - K_j d_ji is (K_i L_i) (V0_j g) - (K_j L_j) (-V0_i g): the pair function reads the
 // stress actions with their corrections applied once per particle (rotation_and_stress).
 // Lane `lane`'s share: its bonds' terms.
-MSSPH_HD Vec3 elastic_force_share(const DeformableView& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
+template <class View>
+MSSPH_HD Vec3 elastic_force_share(const View& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const std::uint32_t i = particle_index(body, d);
   const Vec3 x_i = xyz(v.position[i]);
-  const Mat3 k_i = v.corrected_stress_action[d];
+  const Mat3 k_i = v.corrected_stress_action.load(d);
   const Mat3 f_i = v.deformation[d];
   const Vec4 rest_i = v.rest[d];
   Vec3 force{0, 0, 0};
@@ -345,8 +358,8 @@ MSSPH_HD Vec3 elastic_force_share(const DeformableView& v, std::uint32_t d, std:
     const std::uint32_t j = v.bond_neighbour[k * v.count + d];  // bond-major: FloatScene::bond_count
     const std::uint32_t dj = deformable_index(body, j);
     const RestBond bond = rest_bond(v, rest_i, dj);
-    force +=
-        elastic_force_pair(k_i, bond.volume_j * bond.grad_w, v.corrected_stress_action[dj], -rest_i.w * bond.grad_w);
+    force += elastic_force_pair(k_i, bond.volume_j * bond.grad_w, v.corrected_stress_action.load(dj),
+                                -rest_i.w * bond.grad_w);
     if (body.zero_energy_stiffness > 0.0f) {
       const Vec3 x_ij = xyz(v.position[j]) - x_i;
       if (norm(x_ij) > 0.0f) {
@@ -360,7 +373,8 @@ MSSPH_HD Vec3 elastic_force_share(const DeformableView& v, std::uint32_t d, std:
 
 // Stores deformable particle d's elastic force from its bonds' terms (all lanes' shares added),
 // with the damping.
-MSSPH_HD void store_elastic_force(const DeformableView& v, std::uint32_t d, Vec3 force) {
+template <class View>
+MSSPH_HD void store_elastic_force(const View& v, std::uint32_t d, Vec3 force) {
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const std::uint32_t i = particle_index(body, d);
   if (body.damping > 0.0f) force += damping_force(body.damping, body.particle_mass, xyz(v.velocity[i]));
@@ -368,7 +382,8 @@ MSSPH_HD void store_elastic_force(const DeformableView& v, std::uint32_t d, Vec3
 }
 
 // The same in one lane (the host).
-MSSPH_HD void elastic_force(const DeformableView& v, std::uint32_t d) {
+template <class View>
+MSSPH_HD void elastic_force(const View& v, std::uint32_t d) {
   store_elastic_force(v, d, elastic_force_share(v, d, 0, 1));
 }
 

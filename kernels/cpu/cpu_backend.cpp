@@ -165,28 +165,28 @@ void CpuBackend::partition_by_list_length() {
   });
 }
 
-DeformableView CpuBackend::deformable_view() {
-  return DeformableView{scene_.elastic_bodies.data(),
-                        scene_.deformable_body.data(),
-                        scene_.bond_count.data(),
-                        scene_.bond_neighbour.data(),
-                        scene_.rest.data(),
-                        scene_.correction.data(),
-                        scene_.step.smoothing,
-                        scene_.position.data(),
-                        scene_.velocity.data(),
-                        rotation_.data(),
-                        corrected_stress_action_.data(),
-                        deformation_.data(),
-                        elastic_force_.data(),
-                        static_cast<std::uint32_t>(scene_.deformable_body.size())};
+HostDeformableView CpuBackend::deformable_view() {
+  return HostDeformableView{scene_.elastic_bodies.data(),
+                            scene_.deformable_body.data(),
+                            scene_.bond_count.data(),
+                            scene_.bond_neighbour.data(),
+                            scene_.rest.data(),
+                            scene_.correction.data(),
+                            scene_.step.smoothing,
+                            scene_.position.data(),
+                            scene_.velocity.data(),
+                            rotation_.data(),
+                            Mat3Records{corrected_stress_action_.data()},
+                            deformation_.data(),
+                            elastic_force_.data(),
+                            static_cast<std::uint32_t>(scene_.deformable_body.size())};
 }
 
 // Step 1, R_i of deformable particles, with their stresses and elastic forces (step 3 of
 // deformable bodies) from the positions at the start of the step: all rotations and stresses
 // first, since each elastic force reads its neighbours' stresses.
 void CpuBackend::compute_rotations_and_elastic_forces() {
-  const DeformableView view = deformable_view();
+  const HostDeformableView view = deformable_view();
 #pragma omp parallel for schedule(static)
   for (std::uint32_t d = 0; d < view.count; ++d) rotation_and_stress(view, d);
 #pragma omp parallel for schedule(static)

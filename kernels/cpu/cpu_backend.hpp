@@ -45,7 +45,7 @@ class CpuBackend final : public Backend {
   SortedView sorted_view() const;
   NeighbourLists recorded_lists();
   NeighbourLists neighbour_lists();
-  DeformableView deformable_view();
+  HostDeformableView deformable_view();
   RigidBody& rigid_of(std::size_t body);
 
   ParticleSetup setup_;

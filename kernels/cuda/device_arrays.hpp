@@ -63,7 +63,8 @@ struct DeviceArrays {
   Array<Vec4> rest;
   Array<Mat3> correction;
   Array<Quat> rotation;
-  Array<Mat3> corrected_stress_action, deformation;  // K_i L_i (elastic_physics.hpp), F_i
+  Array<float> corrected_stress_action;  // K_i L_i as nine planes (mat3_store.hpp, elastic_physics.hpp)
+  Array<Mat3> deformation;               // F_i
   // Bodies, the rigid-body chunk reductions and the logged sums' chunks (body_readback.cuh).
   Array<BodyParameters> bodies;
   Array<RigidBody> rigid_bodies;
@@ -115,7 +116,7 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
     visit("rest", a.rest, copy_of(scene.rest));
     visit("correction", a.correction, copy_of(scene.correction));
     visit("rotation", a.rotation, Filled<Quat>{deformables, Quat{0, 0, 0, 1}});
-    visit("corrected_stress_action", a.corrected_stress_action, Uninitialised{deformables});
+    visit("corrected_stress_action", a.corrected_stress_action, Uninitialised{9 * deformables});
     // Identity until the first step: the logged volume ratio of the rest state is 1.
     visit("deformation", a.deformation, Filled<Mat3>{deformables, identity_mat3()});
   }

@@ -25,6 +25,6 @@ NeighbourLists team_lists(DeviceState& state, unsigned team_lanes);
 CanonicalState canonical_state(DeviceState& state);
 // Where a step's density pass leaves its near notes for the force pass (near_notes.hpp).
 NearNotes step_near_notes(DeviceState& state);
-DeformableView deformable_view(const FloatScene& scene, DeviceState& state);
+DeviceDeformableView deformable_view(const FloatScene& scene, DeviceState& state);
 
 }  // namespace mssph::kernels

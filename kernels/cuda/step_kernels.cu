@@ -70,7 +70,8 @@ __device__ BondSums team_sum(const BondSums& s) {
 inline constexpr int kBondBlocksPerMultiprocessor = 4;
 
 template <unsigned Lanes, bool Viscous>
-__global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor) rotation_stress_kernel(DeformableView view) {
+__global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor)
+    rotation_stress_kernel(DeviceDeformableView view) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t d = seat.member, lane = seat.lane;
   const bool active = d < view.count;
@@ -107,7 +108,8 @@ __global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor) rotation
 }
 
 template <unsigned Lanes>
-__global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor) elastic_force_kernel(DeformableView view) {
+__global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor)
+    elastic_force_kernel(DeviceDeformableView view) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t d = seat.member, lane = seat.lane;
   const bool active = d < view.count;
@@ -301,7 +303,7 @@ void with_team_lanes(unsigned lanes, Launch&& launch) {
 }  // namespace
 
 void launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream) {
-  const DeformableView view = deformable_view(scene, state);
+  const DeviceDeformableView view = deformable_view(scene, state);
   if (view.count == 0) return;
   const bool viscous = std::any_of(scene.elastic_bodies.begin(), scene.elastic_bodies.end(),
                                    [](const ElasticParameters& body) { return body.retardation_time > 0.0f; });

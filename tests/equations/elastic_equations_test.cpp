@@ -65,8 +65,8 @@ struct Neighbourhood {
   std::vector<kernels::Vec4> velocity;
   double velocity_gradient_scale = 0.0;  // sum_j |v_ij| |d_ij|
 
-  kernels::DeformableView view() const {
-    kernels::DeformableView v{};
+  kernels::HostDeformableView view() const {
+    kernels::HostDeformableView v{};
     v.bodies = &body;
     v.body_of = body_of.data();
     v.bond_count = bond_count.data();
@@ -161,7 +161,7 @@ TEST(ElasticEquationTwins, RestBondFromTheRestState) {
   const double peak_grad_w = 45.0 / (std::numbers::pi * std::pow(kSupport, 4));
   for (int k = 0; k < kDraws; ++k) {
     const Neighbourhood n = draw_neighbourhood(draws, Eigen::Matrix3d::Identity());
-    const kernels::DeformableView v = n.view();
+    const kernels::HostDeformableView v = n.view();
     for (std::size_t b = 0; b < n.rest.bonds.size(); ++b) {
       const RestBond& expected = n.rest.bonds[b];
       const std::uint32_t j = n.bond_neighbour[b];
