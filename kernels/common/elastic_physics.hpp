@@ -5,20 +5,22 @@
 // its float64 twin in cpu_reference/ (tests/equations/ checks each against it): eq. 4
 // displacement_gradient, eq. 5 first_piola_kirchhoff (with cauchy_strain,
 // green_saint_venant_strain, isotropic_stress) and stress_action, eq. 6 elastic_force_pair,
-// plus velocity_sum_share, velocity_gradient, viscous_stress and viscous_stress_action (Kelvin-Voigt),
-// zero_energy_force_pair and damping_force. Conventions and
-// derivations are the reference's (cpu_reference/elasticity.hpp): (grad u)_ab = du_a/dX_b, d_ij = V0_j L_i grad W(X_i -
-// X_j), K_i = V0_i R_i P_i, f_i = sum_j (K_i d_ij - K_j d_ji). The rest state (positions, volumes, corrections L_i,
-// neighbours) comes from the reference's rest-state builder, converted to float; each bond's offset, weight and kernel
-// gradient are derived from it as the passes read them (rest_bond), and L_i is applied once per particle. The material
-// models (scene key `model`, src/config/elastic_model.hpp) are those of the reference's elastic_response(), with the
-// equations and sources given there.
+// plus velocity_gradient (from bond_sums_share's velocity sum), viscous_stress and viscous_stress_action
+// (Kelvin-Voigt), zero_energy_force_pair and damping_force. Conventions and derivations are the reference's
+// (cpu_reference/elasticity.hpp): (grad u)_ab = du_a/dX_b, d_ij = V0_j L_i grad W(X_i - X_j), K_i = V0_i R_i P_i, f_i =
+// sum_j (K_i d_ij - K_j d_ji). The rest state (positions, volumes, corrections L_i, neighbours) comes from the
+// reference's rest-state builder, converted to float; each bond's offset, weight and kernel gradient are derived from
+// it as the passes read them (rest_bond), and L_i is applied once per particle. The material models (scene key `model`,
+// src/config/elastic_model.hpp) are those of the reference's elastic_response(), with the equations and sources given
+// there.
 #include "config/elastic_model.hpp"
 #include "mat3_store.hpp"
 #include "particle_views.hpp"
 #include "smoothing_kernels.hpp"
 
 #include <cmath>
+#include <cstddef>
+#include <type_traits>
 
 namespace mssph::kernels {
 
@@ -150,10 +152,19 @@ struct BondSums {
 // The deformable particles' bond loops are split like the neighbour sums (fluid_physics.hpp):
 // lane `lane` of a team of `lanes` takes bonds lane, lane + lanes, ...; the host runs one lane.
 // Lane `lane`'s share of deformable particle d's bond sums, before L_i^T (corrected_bond_sums).
-template <class View>
-MSSPH_HD BondSums bond_sums_share(const View& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
+// Given a Mat3* `velocity_sum` (bodies with a viscous modulus), the same pass also adds to it the
+// share of eq. 4's operator on the velocities, sum_j v_ij (V0_j grad W_ij)^T, before L_i^T
+// (velocity_gradient applies it): each bond is gathered and derived once for both sums. Whether
+// it is given is known at compile time, so the other bodies' loop has no trace of it.
+template <class View, class VelocitySum = std::nullptr_t>
+MSSPH_HD BondSums bond_sums_share(const View& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes,
+                                  VelocitySum velocity_sum = nullptr) {
+  constexpr bool with_velocities = !std::is_same_v<VelocitySum, std::nullptr_t>;
   const ElasticParameters& body = v.bodies[v.body_of[d]];
-  const Vec3 x_i = xyz(v.position[particle_index(body, d)]);
+  const std::uint32_t i = particle_index(body, d);
+  const Vec3 x_i = xyz(v.position[i]);
+  Vec3 v_i{0, 0, 0};
+  if constexpr (with_velocities) v_i = xyz(v.velocity[i]);
   BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
   const Vec4 rest_i = v.rest[d];
   for (std::uint32_t k = lane; k < v.bond_count[d]; k += lanes) {
@@ -164,6 +175,7 @@ MSSPH_HD BondSums bond_sums_share(const View& v, std::uint32_t d, std::uint32_t 
     sums.moment = sums.moment + outer((body.particle_mass * bond.kernel) * x_ij, bond.offset);
     sums.current_gradient = sums.current_gradient + outer(x_ij, weighted_gradient);
     sums.rest_gradient = sums.rest_gradient + outer(bond.offset, weighted_gradient);
+    if constexpr (with_velocities) *velocity_sum = *velocity_sum + outer(xyz(v.velocity[j]) - v_i, weighted_gradient);
   }
   return sums;
 }
@@ -176,23 +188,6 @@ MSSPH_HD BondSums corrected_bond_sums(BondSums sums, const Mat3& correction) {
   return sums;
 }
 
-// Lane `lane`'s share of eq. 4's operator on the velocities, sum_j v_ij (V0_j grad W_ij)^T, before
-// L_i^T (velocity_gradient applies it): only bodies with a viscous modulus need it, so it is a
-// pass of its own over the bonds, which the other bodies' kernels leave out.
-template <class View>
-MSSPH_HD Mat3 velocity_sum_share(const View& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes) {
-  const ElasticParameters& body = v.bodies[v.body_of[d]];
-  const Vec3 v_i = xyz(v.velocity[particle_index(body, d)]);
-  Mat3 sum = zero_mat3();
-  const Vec4 rest_i = v.rest[d];
-  for (std::uint32_t k = lane; k < v.bond_count[d]; k += lanes) {
-    const std::uint32_t j = v.bond_neighbour[k * v.count + d];
-    const RestBond bond = rest_bond(v, rest_i, deformable_index(body, j));
-    sum = sum + outer(xyz(v.velocity[j]) - v_i, bond.volume_j * bond.grad_w);
-  }
-  return sum;
-}
-
 // Paper eq. 4, grad u_i = sum_j u_ji (x) d_ij with u_ji = R_i^T x_ij - X_ij, from the bond sums:
 // grad u_i = R_i^T (sum_j x_ij d_ij^T) - sum_j X_ij d_ij^T (reference: displacement_gradient,
 // which sums per bond). The paper prints V0_i where the quadrature weight is V0_j, inside d_ij.
@@ -201,7 +196,7 @@ MSSPH_HD Mat3 displacement_gradient(const Mat3& rotation, const BondSums& sums) 
 }
 
 // The velocity gradient in i's rotated rest frame, grad v_i = R_i^T (sum_j v_ij (V0_j grad W_ij)^T) L_i^T
-// from all lanes' velocity_sum_share (reference: velocity_gradient, which sums per bond).
+// from all lanes' velocity sums (bond_sums_share; reference: velocity_gradient, which sums per bond).
 MSSPH_HD Mat3 velocity_gradient(const Mat3& rotation, const Mat3& velocity_sum, const Mat3& correction) {
   return transpose(rotation) * (velocity_sum * transpose(correction));
 }
@@ -309,8 +304,10 @@ MSSPH_HD void add_viscous_stress(const View& v, std::uint32_t d, const Mat3& vel
 // The same in one lane (the host).
 template <class View>
 MSSPH_HD void rotation_and_stress(const View& v, std::uint32_t d) {
-  store_rotation_and_stress(v, d, bond_sums_share(v, d, 0, 1));
-  if (v.bodies[v.body_of[d]].retardation_time > 0.0f) add_viscous_stress(v, d, velocity_sum_share(v, d, 0, 1));
+  const bool viscous = v.bodies[v.body_of[d]].retardation_time > 0.0f;
+  Mat3 velocity_sum = zero_mat3();
+  store_rotation_and_stress(v, d, viscous ? bond_sums_share(v, d, 0, 1, &velocity_sum) : bond_sums_share(v, d, 0, 1));
+  if (viscous) add_viscous_stress(v, d, velocity_sum);
 }
 
 // Paper eq. 6, one neighbour's term of the symmetrised elastic force on i:

@@ -62,8 +62,9 @@ __device__ BondSums team_sum(const BondSums& s) {
 // (store_rotation_and_stress: the rotation's iterations, the stress) is serial per particle: the
 // teams hand their sums through shared memory to one thread per particle, so a warp runs it for
 // 32 particles at once rather than for its 32 / Lanes teams with the other lanes idle. Viscous:
-// the scene has a body with a viscous modulus, whose particles also sum their velocities; a scene
-// without one runs the kernel without that sum, its registers, shuffles and shared memory.
+// the scene has a body with a viscous modulus, whose particles also sum their velocities in the
+// same pass over their bonds; a scene without one runs the kernel without that sum, its
+// registers, shuffles and shared memory.
 // Both bond passes wait mostly on their gathers of neighbour data, so they are held to 64
 // registers, four blocks a multiprocessor: the warps this adds hide more of those loads than the
 // few spilled values of the viscous variant and the rotation's Newton steps cost.
@@ -77,13 +78,14 @@ __global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor)
   const bool active = d < view.count;
   const bool viscous = Viscous && active && view.bodies[view.body_of[d]].retardation_time > 0.0f;
   BondSums sums{zero_mat3(), zero_mat3(), zero_mat3()};
-  if (active) sums = bond_sums_share(view, d, lane, Lanes);
-  sums = team_sum<Lanes>(sums);
   Mat3 velocity_sum = zero_mat3();
-  if constexpr (Viscous) {
-    if (viscous) velocity_sum = velocity_sum_share(view, d, lane, Lanes);
-    velocity_sum = team_sum<Lanes>(velocity_sum);
+  if (viscous) {
+    sums = bond_sums_share(view, d, lane, Lanes, &velocity_sum);
+  } else if (active) {
+    sums = bond_sums_share(view, d, lane, Lanes);
   }
+  sums = team_sum<Lanes>(sums);
+  if constexpr (Viscous) velocity_sum = team_sum<Lanes>(velocity_sum);
   if constexpr (Lanes == 1) {
     if (active) store_rotation_and_stress(view, d, sums);
     if (viscous) add_viscous_stress(view, d, velocity_sum);

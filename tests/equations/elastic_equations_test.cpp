@@ -203,8 +203,9 @@ TEST(ElasticEquationTwins, MomentMatrixAndDisplacementGradient) {
 }
 
 // The velocity gradient of the Kelvin-Voigt stress, grad v_i = R_i^T sum_j v_ij d_ij^T: the
-// float code's lanes (one, and a team of 3) gather sum_j v_ij (V0_j grad W_ij)^T and apply L_i^T
-// once, the reference sums per bond.
+// float code's lanes (one, and a team of 3) gather sum_j v_ij (V0_j grad W_ij)^T in their pass
+// over the bonds (bond_sums_share, whose bond sums must not change with it) and apply L_i^T once,
+// the reference sums per bond.
 TEST(ElasticEquationTwins, VelocityGradient) {
   TwinDraws draws("ElasticEquationTwins.VelocityGradient");
   TwinComparison gradient("velocity gradient grad v_i (Kelvin-Voigt strain rate)");
@@ -214,8 +215,15 @@ TEST(ElasticEquationTwins, VelocityGradient) {
     add_velocities(draws, n);
     for (const std::uint32_t lanes : {1u, 3u}) {
       kernels::Mat3 velocity_sum = kernels::zero_mat3();
-      for (std::uint32_t lane = 0; lane < lanes; ++lane)
-        velocity_sum = velocity_sum + kernels::velocity_sum_share(n.view(), 0, lane, lanes);
+      for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+        const kernels::BondSums with = kernels::bond_sums_share(n.view(), 0, lane, lanes, &velocity_sum);
+        const kernels::BondSums without = kernels::bond_sums_share(n.view(), 0, lane, lanes);
+        for (int e = 0; e < 9; ++e) {
+          ASSERT_EQ(with.moment.m[e], without.moment.m[e]);
+          ASSERT_EQ(with.current_gradient.m[e], without.current_gradient.m[e]);
+          ASSERT_EQ(with.rest_gradient.m[e], without.rest_gradient.m[e]);
+        }
+      }
       gradient.add(to_double(kernels::velocity_gradient(to_float(rotation), velocity_sum, n.correction[0])),
                    reference::velocity_gradient(rotation, n.rest, n.velocities, 0), n.velocity_gradient_scale);
     }
