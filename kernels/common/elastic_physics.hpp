@@ -69,7 +69,7 @@ using DeviceDeformableView = DeformableViewOf<Mat3Planes>;
 // 4-byte neighbour index per bond moves a twelfth of a stored 48-byte record of offset, weights
 // and both d's. The reference builds the same quantities once, in double
 // (build_deformable_rest_state). The correction L_i of d_ij = V0_j L_i grad W(X_i - X_j) is not
-// applied per bond: each pass takes it out of its sum (bond_sums, elastic_force).
+// applied per bond: each pass takes it out of its sum (corrected_bond_sums, elastic_force).
 struct RestBond {
   Vec3 offset;     // X_ij = X_j - X_i [m]
   float kernel;    // W_poly6(|X_ij|) [1/m^3]
@@ -160,6 +160,7 @@ template <class View, class VelocitySum = std::nullptr_t>
 MSSPH_HD BondSums bond_sums_share(const View& v, std::uint32_t d, std::uint32_t lane, std::uint32_t lanes,
                                   VelocitySum velocity_sum = nullptr) {
   constexpr bool with_velocities = !std::is_same_v<VelocitySum, std::nullptr_t>;
+  static_assert(!with_velocities || std::is_same_v<VelocitySum, Mat3*>, "velocity_sum is a Mat3* or not given");
   const ElasticParameters& body = v.bodies[v.body_of[d]];
   const std::uint32_t i = particle_index(body, d);
   const Vec3 x_i = xyz(v.position[i]);

@@ -96,21 +96,21 @@ NearNotes step_near_notes(DeviceState& state) {
 }
 
 DeviceDeformableView deformable_view(const FloatScene& scene, DeviceState& state) {
-  return DeviceDeformableView{
-      state.elastic_bodies.data(),
-      state.deformable_body.data(),
-      state.bond_count.data(),
-      state.bond_neighbour.data(),
-      state.rest.data(),
-      state.correction.data(),
-      scene.step.smoothing,
-      state.position.data(),
-      state.velocity.data(),
-      state.rotation.data(),
-      Mat3Planes{state.corrected_stress_action.data(), static_cast<std::uint32_t>(state.deformable_body.size())},
-      state.deformation.data(),
-      state.elastic_force.data(),
-      static_cast<std::uint32_t>(state.deformable_body.size())};
+  const auto count = static_cast<std::uint32_t>(state.deformable_body.size());
+  return DeviceDeformableView{state.elastic_bodies.data(),
+                              state.deformable_body.data(),
+                              state.bond_count.data(),
+                              state.bond_neighbour.data(),
+                              state.rest.data(),
+                              state.correction.data(),
+                              scene.step.smoothing,
+                              state.position.data(),
+                              state.velocity.data(),
+                              state.rotation.data(),
+                              Mat3Planes{state.corrected_stress_action.data(), count},
+                              state.deformation.data(),
+                              state.elastic_force.data(),
+                              count};
 }
 
 }  // namespace mssph::kernels

@@ -124,6 +124,7 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   EXPECT_EQ(bytes_of(listed, "list_count"), n * kTeamLanes * 4);
   EXPECT_EQ(bytes_of(listed, "list_index"), n * kTeamLanes * kernels::team_list_capacity(kTeamLanes) * 4);
   EXPECT_EQ(bytes_of(listed, "correction"), deformables * sizeof(kernels::Mat3));
+  EXPECT_EQ(bytes_of(listed, "corrected_stress_action"), 9 * deformables * sizeof(float));
   EXPECT_EQ(bytes_of(listed, "rigid_bodies"), rigid_bodies * sizeof(kernels::RigidBody));
   EXPECT_EQ(bytes_of(listed, "rigid_chunks"), rigid_chunks * sizeof(kernels::RigidChunk));
   EXPECT_EQ(bytes_of(listed, "chunk_wrench"), rigid_chunks * sizeof(kernels::Wrench));
@@ -148,7 +149,8 @@ TEST_F(DeviceArraysTest, DeformableAndRestDensityArraysAddExactlyTheirBytes) {
       n * sizeof(kernels::Vec4) +                                                    // elastic_force
       scene.elastic_bodies.size() * sizeof(kernels::ElasticParameters) +             // elastic_bodies
       d * (sizeof(std::uint32_t) + sizeof(kernels::Vec4) + sizeof(kernels::Quat)) +  // deformable_body, rest, rotation
-      d * 3 * sizeof(kernels::Mat3) +                       // correction, corrected_stress_action, deformation
+      d * 2 * sizeof(kernels::Mat3) +                                                // correction, deformation
+      9 * d * sizeof(float) +                               // corrected_stress_action (nine planes)
       d * sizeof(std::uint32_t) +                           // bond_count
       scene.bond_neighbour.size() * sizeof(std::uint32_t);  // bond_neighbour
   EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kGridBlocks, kTeamLanes).total_bytes -

@@ -18,11 +18,11 @@ constexpr std::uint32_t kCount = 5;
 
 float entry_value(std::uint32_t d, int k) { return static_cast<float>(10 * d + static_cast<std::uint32_t>(k)); }
 
-// Stores every matrix with its own entries, then checks each entry in `entries` (at where(d, k))
-// and each loaded matrix. Every slot is written once: a wrong index puts some value where another
-// belongs, or leaves the -1 the slots were filled with.
-template <class Store, class Where>
-void expect_layout(const Store& store, const float* entries, Where where) {
+// Stores every matrix with its own entries, then checks each stored entry (entry(d, k) reads it
+// where the layout puts it) and each loaded matrix. Every slot is written once: a wrong index puts
+// some value where another belongs, or leaves the -1 the slots were filled with.
+template <class Store, class Entry>
+void expect_layout(const Store& store, Entry entry) {
   for (std::uint32_t d = 0; d < kCount; ++d) {
     Mat3 m;
     for (int k = 0; k < 9; ++k) m.m[k] = entry_value(d, k);
@@ -31,7 +31,7 @@ void expect_layout(const Store& store, const float* entries, Where where) {
   for (std::uint32_t d = 0; d < kCount; ++d) {
     const Mat3 loaded = store.load(d);
     for (int k = 0; k < 9; ++k) {
-      EXPECT_EQ(entries[where(d, k)], entry_value(d, k)) << "matrix " << d << ", entry " << k;
+      EXPECT_EQ(entry(d, k), entry_value(d, k)) << "matrix " << d << ", entry " << k;
       EXPECT_EQ(loaded.m[k], entry_value(d, k)) << "matrix " << d << ", entry " << k;
     }
   }
@@ -42,14 +42,13 @@ TEST(Mat3Store, RecordsHoldEachMatrixTogether) {
   for (Mat3& m : matrices) {
     for (float& e : m.m) e = -1.0f;
   }
-  expect_layout(Mat3Records{matrices.data()}, &matrices[0].m[0],
-                [](std::uint32_t d, int k) { return 9 * std::size_t(d) + std::size_t(k); });
+  expect_layout(Mat3Records{matrices.data()}, [&](std::uint32_t d, int k) { return matrices[d].m[k]; });
 }
 
 TEST(Mat3Store, PlanesHoldEntryKOfEveryMatrixTogether) {
   std::vector<float> entries(9 * kCount, -1.0f);
-  expect_layout(Mat3Planes{entries.data(), kCount}, entries.data(),
-                [](std::uint32_t d, int k) { return std::size_t(k) * kCount + d; });
+  expect_layout(Mat3Planes{entries.data(), kCount},
+                [&](std::uint32_t d, int k) { return entries[std::size_t(k) * kCount + d]; });
 }
 
 }  // namespace
