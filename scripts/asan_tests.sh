@@ -4,11 +4,10 @@
 # their tests with `ctest --preset asan-ubsan`, which fails a test on any sanitizer report
 # (undefined behaviour halts, leaks count; CMakePresets.json says how).
 #
-# The set fits CI's 30 minutes beside the rest of scripts/test.sh: from an empty build-asan with
-# no compiler cache, on 2 idle cores, the unity build (CMakePresets.json) took 7.8 minutes and the
-# tests 3.8 (results/reliability.md, "Fuzzing and sanitizers", has the measurements). Every
-# program links the whole library stack, which is most of the build; a program of its own adds a
-# few seconds of compiling and linking.
+# The set fits CI's 30 minutes beside the rest of scripts/test.sh, from an empty build-asan with
+# no compiler cache on 2 cores (results/reliability.md, "Fuzzing and sanitizers", and
+# results/current/cpu-2core.md have the times). Every program links the whole library stack,
+# which is most of the build; a program of its own adds a few seconds of compiling and linking.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -28,7 +27,7 @@ programs=(
   reference_unit_tests           # tests/reference: kernels, neighbour search
   rigid_physics_test             # tests/reference
   fluid_physics_test             # tests/reference (its two settling cases left out, below)
-  deformable_rotation_test       # tests/deformable (five of its programs left out, below)
+  deformable_rotation_test       # tests/deformable (seven of its programs left out, below)
   deformable_patch_test
   deformable_momentum_test
   deformable_material_model_test
@@ -47,18 +46,16 @@ programs=(
   mssph_cli_tests                # tests/cli: exit codes, bad input, output safety, signals, validate
 )
 
-# Left out for time: each of these simulates seconds of settling or many periods, one to several
-# minutes under the sanitizers (measured on 2 cores: the Hertz contact over 5 minutes, the
-# cantilever's deflection 80 s and frequency 53 s, the free bar 46 s and its damped run 31 s, the
-# spinning corotated body 40 s, the soft block's rest 21 s, the fluid column several minutes; the
-# floating sphere settles through 1.5 s of simulated time). They run uninstrumented in
+# Left out for time: each of these simulates seconds of settling or many periods, a minute to
+# several under the sanitizers (results/reliability.md has the times). They run uninstrumented in
 # scripts/test.sh; the same step functions run here in the shorter cases (the neo-Hookean body's
-# spin, the zero-energy control's damped hourglass mode, the deformable sphere drop). Programs not
-# built: deformable_cantilever_test, deformable_cantilever_frequency_test, deformable_hertz_test,
-# deformable_bar_test, deformable_soft_block_rest_test. Single cases (the restart runs simulate
-# 4.8 s of tap_squeeze_stir three times per backend; the checkpoint code runs here in
-# mssph_io_tests' Checkpoints cases and the CLI's RestartRefusal cases; the three sphere drops,
-# 2000 steps each on the cpu backend and the reference, took 43 to 110 s, while
+# spin, the zero-energy control's damped hourglass mode, the deformable sphere drop with its
+# viscous modulus). Programs not built: deformable_cantilever_test,
+# deformable_cantilever_frequency_test, deformable_hertz_test, deformable_hertz_impact_test,
+# deformable_viscous_bar_test, deformable_bar_test, deformable_soft_block_rest_test. Single cases
+# (the restart runs simulate 4.8 s of tap_squeeze_stir three times per backend; the checkpoint
+# code runs here in mssph_io_tests' Checkpoints cases and the CLI's RestartRefusal cases; the
+# three sphere drops, 2000 steps each on the cpu backend and the reference, while
 # BackendAgreement.RunsAreBitIdentical runs the cpu backend's fluid and deformable drops here, and
 # the reference's step runs in the physics programs above):
 left_out=(
