@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 
 namespace mssph {
@@ -203,6 +204,9 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
     first_step = summary.steps + 1;
   }
   std::size_t checkpoint_step = summary.steps;  // the latest checkpoint's
+  // The grid builds of the steps this process runs, for the log's rate (Backend::neighbour_grid_builds).
+  const std::optional<std::uint64_t> grid_builds_at_start = backend.neighbour_grid_builds();
+  const std::size_t steps_at_start = summary.steps;
 
   ProgressReporter progress(total_steps, dt, options.quiet, summary.steps);
   auto last_flush = std::chrono::steady_clock::now();
@@ -313,6 +317,11 @@ RunSummary run_simulation(const Scene& scene, const ParticleSetup& setup, Backen
   log.set_attribute("/", "steps", static_cast<long long>(summary.steps));
   log.set_attribute("/", "simulated_time", summary.simulated_time);
   log.set_attribute("/", "wall_time", summary.wall_seconds);
+  if (grid_builds_at_start && summary.steps > steps_at_start) {
+    const auto builds = static_cast<double>(*backend.neighbour_grid_builds() - *grid_builds_at_start);
+    log.set_attribute("/", "neighbour_grid_builds_per_step",
+                      builds / static_cast<double>(summary.steps - steps_at_start));
+  }
   if (!summary.force_body.empty()) {
     log.set_attribute("/", "peak_force_body", summary.force_body);
     log.set_attribute("/", "peak_interaction_force", summary.peak_force);

@@ -128,5 +128,22 @@ TEST_F(RunCommand, PhaseTimesAreLoggedOnlyWithPhaseTiming) {
   EXPECT_TRUE(std::all_of(phases.begin(), phases.end(), [](double s) { return std::isfinite(s) && s >= 0.0; }));
 }
 
+// The cpu backend keeps neighbour lists with a skin and builds its grid only when they expire:
+// the log gives the builds per step, a whole number of builds (the first step's among them) over
+// the run's steps. The reference backend builds every step and logs no rate.
+TEST_F(RunCommand, LogsTheGridBuildRateOfBackendsWithLists) {
+  const std::string listed = work("listed.h5");
+  const std::string reference = work("reference.h5");
+  ASSERT_EQ(mssph({"run", kTinyDrop, "--backend", "cpu", "--out", listed, "-q"}).exit_code, 0);
+  ASSERT_EQ(mssph({"run", kTinyDrop, "--backend", "reference", "--out", reference, "-q"}).exit_code, 0);
+  const double steps = static_cast<double>(steps_of(read_json(kTinyDrop)));
+  const double rate = h5::read_double_attribute(open_read_only(listed).id(), "neighbour_grid_builds_per_step");
+  const double builds = rate * steps;
+  EXPECT_GE(builds, 1.0 - 1e-9) << "the first step builds the grid";
+  EXPECT_LT(builds, steps) << "lists with a skin outlast some steps";
+  EXPECT_NEAR(builds, std::round(builds), 1e-9) << "a count of builds over the steps";
+  EXPECT_FALSE(has_attribute(open_read_only(reference).id(), "neighbour_grid_builds_per_step"));
+}
+
 }  // namespace
 }  // namespace mssph::test
