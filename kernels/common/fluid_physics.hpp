@@ -180,24 +180,6 @@ MSSPH_HD bool may_feel_forces(const BodyParameters& body, bool near_other_body) 
   return receives_forces(body) && (body.kind == kFluid || near_other_body);
 }
 
-// density_sum's share on a step that rebuilt the grid, recording in list `list`
-// (neighbour_list.hpp) every candidate it considers closer than record_radius2: (h + skin)^2
-// (list_skin.hpp). The force pass of this step and the passes of the steps until the next rebuild
-// visit it (force_sum_listed, density_sum_listed): a rigid or deformable particle's own body is
-// not listed, which its density takes at rest and which adds nothing to its force sum
-// (add_force_pair: no pressure or viscosity within such a body).
-MSSPH_HD DensitySum density_sum_recording(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
-                                          std::uint32_t left_out, const NeighbourLists& lists, std::uint32_t list,
-                                          float record_radius2) {
-  ListRecorder recorder(lists, list);
-  const DensitySum sum =
-      density_sum_over(v, s, grid_share(v, s, lane, lanes, left_out), [&](std::uint32_t t, float r2) {
-        if (r2 < record_radius2) recorder.record(t);
-      });
-  lists.count[list] = recorder.count();
-  return sum;
-}
-
 // The same share on a step that kept the lists: over list `list`, which a rebuild recorded
 // (density_sum_recording) and which the check since then keeps valid (list_skin.hpp). A list that
 // overflowed at its rebuild forces the next one, so it is walked only on the rebuild's own step,
@@ -205,6 +187,30 @@ MSSPH_HD DensitySum density_sum_recording(const SortedView& v, std::uint32_t s, 
 MSSPH_HD DensitySum density_sum_listed(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
                                        const NeighbourLists& lists, std::uint32_t list) {
   return density_sum_over(v, s, listed_share(v.grid, xyz(v.position[s]), lane, lanes, lists, list));
+}
+
+// density_sum's share on a step that rebuilt the grid: its walk records in list `list`
+// (neighbour_list.hpp) every candidate it would consider that lies closer than record_radius2,
+// (h + skin)^2 (list_skin.hpp), and the share is then summed over that list (density_sum_listed),
+// the same terms in the same order as the walk, so the same bits. The walk that only records
+// issues fewer instructions a candidate than one that also sums, and the list it then reads is
+// short. The force pass of this step and the passes of the steps until the next rebuild visit the
+// list too (force_sum_listed, density_sum_listed): a rigid or deformable particle's own body is
+// not listed, which its density takes at rest and which adds nothing to its force sum
+// (add_force_pair: no pressure or viscosity within such a body).
+MSSPH_HD DensitySum density_sum_recording(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
+                                          std::uint32_t left_out, const NeighbourLists& lists, std::uint32_t list,
+                                          float record_radius2) {
+  const Vec4 p_i = v.position[s];
+  const Vec3 x_i = xyz(p_i);
+  const std::uint32_t own = body_left_out(v, p_i);
+  ListRecorder recorder(lists, list);
+  grid_share(v, s, lane, lanes, left_out)([&](std::uint32_t t) {
+    const Vec4 p = v.position[t];
+    if (squared_norm(x_i - xyz(p)) < record_radius2 && body_of(p) != own) recorder.record(t);
+  });
+  lists.count[list] = recorder.count();
+  return density_sum_listed(v, s, lane, lanes, lists, list);
 }
 
 // The host's density sum of sorted particle s over its row of `recorded`, which the last rebuild

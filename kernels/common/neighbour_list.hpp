@@ -14,7 +14,7 @@
 //   and copies its entries within h into a second list (density_sum_keeping_within, through
 //   RowWriter), which its force pass reads (for_each_neighbour);
 // - a GPU team's density pass, on a step that rebuilt the grid, records one list per lane, its
-//   share of the walk, of radius h + skin, as it sums (density_sum_recording, through
+//   share of the walk, of radius h + skin, then sums over it (density_sum_recording, through
 //   ListRecorder); the force pass visits it instead of walking the cells again, and so do both
 //   passes of the steps until the next rebuild (for_each_listed; list_skin.hpp says when).
 // The host's loops use that its rows are contiguous, the GPU's that a warp's lanes read together.

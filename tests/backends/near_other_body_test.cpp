@@ -2,9 +2,11 @@
 // body within h (kernels/common/fluid_physics.hpp, may_feel_forces). Both halves of that are
 // checked on the neighbour-list tests' lattice (walls, fluid, a deformable or rigid block): the
 // density sum's nearest other body, from every team size's shares, against a brute-force search
-// over all particles; and, for every particle the note lets skip, the force sums of the full walk,
-// which must be zero, so skipping changes nothing.
+// over all particles, and from a rebuild's shares, which record the teams' lists and sum over
+// them (density_sum_recording, its lists roomy or overflowed); and, for every particle the note
+// lets skip, the force sums of the full walk, which must be zero, so skipping changes nothing.
 #include "common/fluid_physics.hpp"
+#include "common/list_skin.hpp"
 #include "neighbour_list_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -14,6 +16,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace mssph::testing {
 namespace {
@@ -35,6 +38,12 @@ TEST_P(NearOtherBody, TheDensitySumNotesAnotherBodyWithinHAndWithoutOneTheForceS
   std::mt19937_64 random(20261127);
   const JitteredLattice lattice(random, compressed_by_up_to_4_percent(random), 1.0f, GetParam());
   const kernels::SortedView v = lattice.view();
+  const float record_radius2 = kernels::list_skin(v.step.smoothing.h).record_radius2;
+  std::vector<TeamLists> rebuilds;
+  rebuilds.reserve(6);  // each one's lists point into its own arrays
+  for (const std::uint32_t lanes : {2u, 4u, 8u}) {
+    for (const std::uint32_t capacity : {64u, 2u}) rebuilds.emplace_back(v, lanes, capacity, record_radius2);
+  }
   std::size_t skipped = 0, block_near_another = 0;
   for (std::uint32_t s = 0; s < lattice.size(); ++s) {
     SCOPED_TRACE(::testing::Message() << "particle " << s);
@@ -50,6 +59,14 @@ TEST_P(NearOtherBody, TheDensitySumNotesAnotherBodyWithinHAndWithoutOneTheForceS
         nearest2 = std::fmin(nearest2, kernels::density_sum(v, s, lane, lanes).nearest_other_body2);
       }
       ASSERT_EQ(nearest2 < v.step.smoothing.h2, expected) << lanes << " lanes";
+    }
+    for (const TeamLists& rebuild : rebuilds) {
+      float nearest2 = std::numeric_limits<float>::infinity();
+      for (std::uint32_t lane = 0; lane < rebuild.lanes; ++lane) {
+        nearest2 = std::fmin(nearest2, rebuild.nearest_other_body2[rebuild.list_of(s, lane)]);
+      }
+      ASSERT_EQ(nearest2 < v.step.smoothing.h2, expected)
+          << rebuild.lanes << " lanes recording lists of capacity " << rebuild.lists.capacity;
     }
     if (expected) ++block_near_another;
     if (kernels::may_feel_forces(i.parameters, expected)) continue;

@@ -120,7 +120,8 @@ struct TeamLists {
   std::uint32_t lanes;
   std::vector<std::uint32_t> count, index;
   kernels::NeighbourLists lists;
-  std::vector<float> density;  // per list: its lane's share of the particle's density sum
+  std::vector<float> density;              // per list: its lane's share of the particle's density sum
+  std::vector<float> nearest_other_body2;  // per list: its lane's DensitySum::nearest_other_body2
 
   static constexpr std::uint32_t kUnwritten = 0xdeadbeefu;
 
@@ -128,13 +129,15 @@ struct TeamLists {
       : lanes(lanes_),
         count(std::size_t{v.step.particle_count} * lanes, kUnwritten),
         index(count.size() * capacity, kUnwritten),
-        density(count.size()) {
+        density(count.size()),
+        nearest_other_body2(count.size()) {
     lists = kernels::lane_lists(capacity, static_cast<std::uint32_t>(count.size()), count.data(), index.data());
     for (std::uint32_t s = 0; s < v.step.particle_count; ++s) {
       for (std::uint32_t lane = 0; lane < lanes; ++lane) {
-        density[list_of(s, lane)] = kernels::density_sum_recording(v, s, lane, lanes, kernels::cells_left_out(v, s),
-                                                                   lists, list_of(s, lane), record_radius2)
-                                        .delta;
+        const kernels::DensitySum sum = kernels::density_sum_recording(v, s, lane, lanes, kernels::cells_left_out(v, s),
+                                                                       lists, list_of(s, lane), record_radius2);
+        density[list_of(s, lane)] = sum.delta;
+        nearest_other_body2[list_of(s, lane)] = sum.nearest_other_body2;
       }
     }
   }
