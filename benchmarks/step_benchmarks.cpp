@@ -227,7 +227,8 @@ void register_suite(const std::vector<std::string>& backends) {
       {"mixed", [](std::size_t n) { return mixed_scene(n); }}};
   register_calibration();
   for (const std::string& backend : backends) {
-    for (const auto& [medium, scene_of] : media) {
+    for (const auto& [medium, scene_maker] : media) {
+      const auto& scene_of = scene_maker;  // named again: Clang before 16 cannot capture a structured binding
       for (long n : sizes_for(backend)) {
         const std::string name = "step/" + backend + "/" + medium + "/" + std::to_string(n);
         benchmark::RegisterBenchmark(name.c_str(),

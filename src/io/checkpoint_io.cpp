@@ -116,7 +116,8 @@ void write_checkpoint(hid_t file, const Checkpoint& checkpoint) {
   h5::Handle group = h5::open_or_create_group(file, slot);
   h5::write_attribute(group.id(), "step", kWriting);
   h5::check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush before a checkpoint");
-  for (const auto& [name, values] : checkpoint.state.arrays()) {
+  for (const auto& [array_name, values] : checkpoint.state.arrays()) {
+    const std::string& name = array_name;  // named again: Clang before 16 cannot capture a structured binding
     std::visit(
         [&](const auto& v) {
           write_array(

@@ -142,7 +142,8 @@ TEST(ValidateCases, EveryRequiredCaseIsRegisteredWithItsReadme) {
                                                                   {"convergence", "floating_depth"},
                                                                   {"convergence", "cantilever_deflection"}};
   const auto& cases = validation::all_cases();
-  for (const auto& [suite, name] : required) {
+  for (const auto& [suite, case_name] : required) {
+    const std::string& name = case_name;  // named again: Clang before 16 cannot capture a structured binding
     const auto found = std::find_if(cases.begin(), cases.end(), [&](const auto& c) { return c.name == name; });
     ASSERT_NE(found, cases.end()) << name;
     EXPECT_EQ(found->suite, suite) << name;
