@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # CI's AddressSanitizer + UndefinedBehaviorSanitizer run: configures the asan-ubsan preset
-# (build-asan/, g++ -O1 -g1, host backends), builds the test programs below from nothing and runs
+# (build-asan/, clang++ -O1 -g1, host backends), builds the test programs below from nothing and runs
 # their tests with `ctest --preset asan-ubsan`, which fails a test on any sanitizer report
 # (undefined behaviour halts, leaks count; CMakePresets.json says how).
 #
