@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # CI's AddressSanitizer + UndefinedBehaviorSanitizer run: configures the asan-ubsan preset
-# (build-asan/, clang++ -O1 -g1, host backends), builds the test programs below from nothing and runs
-# their tests with `ctest --preset asan-ubsan`, which fails a test on any sanitizer report
+# (build-asan/, clang++ -O1 -g1, host backends), builds the test programs below from nothing and
+# runs their tests with `ctest --preset asan-ubsan`, which fails a test on any sanitizer report
 # (undefined behaviour halts, leaks count; CMakePresets.json says how).
 #
 # The set fits CI's 30 minutes beside the rest of scripts/test.sh, from an empty build-asan with

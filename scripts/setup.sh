@@ -17,8 +17,8 @@ run_packages=(
 )
 test_packages=(
   libgtest-dev libgmock-dev              # tests
-  clang libclang-rt-14-dev               # fuzz targets and the sanitizer build (ASan, UBSan, libFuzzer runtimes)
-  libomp-dev                             # OpenMP for Clang (scripts/asan_tests.sh)
+  clang libclang-rt-14-dev               # the fuzz and sanitizer builds (their runtimes)
+  libomp-dev                             # OpenMP for Clang (scripts/asan_tests.sh, fuzz_tests.sh)
   clang-format                           # the style check (scripts/check_format.sh)
   valgrind                               # the CPU gate's instruction counts (scripts/bench_gate.sh)
   python3-jsonschema                     # the scene-schema check
