@@ -214,6 +214,7 @@ FloatScene make_float_scene(const ParticleSetup& setup) {
 FloatScene make_float_scene_with_list_cells(const ParticleSetup& setup) {
   FloatScene scene = make_float_scene(setup);
   scene.grid = choose_grid_shape(scene.position, list_cell_size(setup.smoothing_length));
+  scene.list_trigger2 = list_triggers2(scene.bodies, list_skin(scene.step.smoothing.h));
   return scene;
 }
 

@@ -24,6 +24,7 @@ struct FloatScene {
   std::vector<BodyParameters> bodies;
   std::vector<RigidBody> rigid_bodies;  // movable rigid bodies, in body order
   bool full_stress_viscosity = false;   // viscosity_model full_stress: the force pass adds the transposed stress
+  std::vector<float> list_trigger2;     // per body, with neighbour lists (list_triggers2), else empty [m^2]
   // Canonical particle arrays.
   std::vector<Vec4> position;
   std::vector<Vec4> velocity;
@@ -60,7 +61,7 @@ struct FloatScene {
 // fixed region holds (it needs the body's rigid motion every step; the reference has it).
 FloatScene make_float_scene(const ParticleSetup& setup);
 // The same for a backend whose neighbour lists have a skin (list_skin.hpp): cells h + skin wide, so
-// that a rebuild's walk of 27 cells sees every candidate within h + skin.
+// that a rebuild's walk of 27 cells sees every candidate within h + skin, and each body's trigger.
 FloatScene make_float_scene_with_list_cells(const ParticleSetup& setup);
 
 // Grid bits per axis: enough cells of side h to cover the starting bounding box (at least 4 per

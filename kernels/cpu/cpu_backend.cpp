@@ -80,7 +80,7 @@ NeighbourLists CpuBackend::neighbour_lists() {
 }
 
 // The neighbours phase: the particles copied into the cell order of the last rebuild, whose lists
-// are kept until some particle has moved past the trigger (list_skin.hpp); then the grid is
+// are kept until some particle has moved past its body's trigger (list_skin.hpp); then the grid is
 // rebuilt and the lists recorded again. The density pass copies each list's entries within h for
 // the force pass (density_sum_keeping_within), so that the force pair's branch on h, which the
 // host mispredicts for about one entry in four of a list with a skin, does not run over the
@@ -90,16 +90,17 @@ void CpuBackend::update_neighbour_lists() {
 }
 
 // Copies every particle into the last rebuild's cell order and returns whether one has moved past
-// the trigger since.
+// its body's trigger since.
 bool CpuBackend::lists_expired() {
-  const ListSkin skin = list_skin(scene_.step.smoothing.h);
+  const float* trigger2 = scene_.list_trigger2.data();
   const auto count = static_cast<std::uint32_t>(setup_.size());
   bool moved_far = false;
 #pragma omp parallel for schedule(static) reduction(|| : moved_far)
   for (std::uint32_t s = 0; s < count; ++s) {
     place_in_cell_order(s, sorted_id_[s], scene_.position.data(), scene_.velocity.data(), scene_.body.data(),
                         sorted_position_.data(), sorted_velocity_.data());
-    if (moved_past_trigger(xyz(sorted_position_[s]), xyz(list_origin_[s]), skin)) moved_far = true;
+    const Vec4 p = sorted_position_[s];
+    if (moved_past_trigger(xyz(p), xyz(list_origin_[s]), trigger2[body_of(p)])) moved_far = true;
   }
   return moved_far;
 }

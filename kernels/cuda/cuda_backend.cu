@@ -169,7 +169,7 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
 // finds them expired (list_skin.hpp).
 void CudaBackend::record_neighbour_grid(cudaStream_t stream) {
   if (keeps_lists()) {
-    launch_list_step_grid(state_, scene_.grid, list_skin(scene_.step.smoothing.h), stream);
+    launch_list_step_grid(state_, scene_.grid, stream);
   } else {
     launch_neighbour_grid(state_, scene_.grid, stream);
   }

@@ -53,6 +53,7 @@ struct DeviceArrays {
   // recorded, and when to record them again (list_skin.hpp). Empty for one lane per particle.
   Array<std::uint32_t> list_count, list_index;
   Array<Vec4> list_origin;
+  Array<float> list_trigger2;  // per body (FloatScene::list_trigger2)
   Array<ListRefreshState> list_refresh;
   // Rigid and deformable bodies (empty without them): canonical, n entries.
   Array<float> own_rest_number_density;
@@ -149,6 +150,8 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   visit("list_index", a.list_index, Uninitialised{lists * team_list_capacity(team_lanes)});
   const bool listing = lists > 0;
   visit("list_origin", a.list_origin, Filled<Vec4>{listing ? n : 0, zero});
+  visit("list_trigger2", a.list_trigger2,
+        CopyOf<float>{&scene.list_trigger2, listing ? scene.list_trigger2.size() : 0});
   // A rebuild requested: the first step has no lists yet.
   visit("list_refresh", a.list_refresh, Filled<ListRefreshState>{listing ? 1u : 0u, ListRefreshState{1, 0, 0, 0}});
   visit("bodies", a.bodies, copy_of(scene.bodies));

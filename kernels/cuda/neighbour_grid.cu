@@ -33,8 +33,9 @@ struct GridArrays {
   std::uint32_t* sorted_id;
   Vec4* sorted_position;
   Vec4* sorted_velocity;
-  Vec4* list_origin;          // where each sorted particle stood at the last rebuild
-  ListRefreshState* refresh;  // whether to rebuild, and whether this step did
+  Vec4* list_origin;           // where each sorted particle stood at the last rebuild
+  const float* list_trigger2;  // per body (list_triggers2)
+  ListRefreshState* refresh;   // whether to rebuild, and whether this step did
 
   // Copies the particle of place s in cell order (sorted_id) there; returns its canonical index.
   __device__ std::uint32_t copy_into_cell_order(std::uint32_t s) const {
@@ -99,13 +100,13 @@ __device__ void scan_cell_counts(const GridArrays& a, cg::grid_group grid) {
 }
 
 // With lists, a step's start: every particle is copied into the cell order of the last rebuild
-// and checked against the trigger (list_skin.hpp). Returns, the same in every thread, whether the
-// grid must be rebuilt: a particle moved past the trigger or a rebuild was requested.
-__device__ bool lists_expired(const GridArrays& a, const ListSkin& skin, cg::grid_group grid) {
+// and checked against its body's trigger (list_skin.hpp). Returns, the same in every thread,
+// whether the grid must be rebuilt: a particle moved past its trigger or a rebuild was requested.
+__device__ bool lists_expired(const GridArrays& a, cg::grid_group grid) {
   bool moved_far = false;
   for_each_grid_item(a.n, [&](std::uint32_t s) {
     const std::uint32_t i = a.copy_into_cell_order(s);
-    moved_far = moved_far || moved_past_trigger(xyz(a.position[i]), xyz(a.list_origin[s]), skin);
+    moved_far = moved_far || moved_past_trigger(xyz(a.position[i]), xyz(a.list_origin[s]), a.list_trigger2[a.body[i]]);
   });
   if (__syncthreads_or(moved_far) && threadIdx.x == 0) atomicOr(&a.refresh->moved_far, 1u);
   grid.sync();
@@ -133,9 +134,9 @@ __device__ bool lists_expired(const GridArrays& a, const ListSkin& skin, cg::gri
 // there: one launch per step, with no separate check kernel or conditional graph node.
 // A rebuild with lists also records where each particle stands, marks the step as one whose
 // density pass records the lists, and takes back the request that caused it.
-__global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check, ListSkin skin) {
+__global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check) {
   const cg::grid_group grid = cg::this_grid();
-  if (check && !lists_expired(a, skin, grid)) {
+  if (check && !lists_expired(a, grid)) {
     if (grid.thread_rank() == 0) a.refresh->recorded = 0;
     return;
   }
@@ -201,15 +202,15 @@ GridArrays grid_arrays(DeviceState& state, const GridShape& grid) {
           state.sorted_position.data(),
           state.sorted_velocity.data(),
           state.list_origin.data(),
+          state.list_trigger2.data(),
           state.list_refresh.data()};
 }
 
-void launch_grid_kernel(DeviceState& state, const GridShape& grid, bool check, const ListSkin& skin,
-                        cudaStream_t stream) {
+void launch_grid_kernel(DeviceState& state, const GridShape& grid, bool check, cudaStream_t stream) {
   GridArrays a = grid_arrays(state, grid);
   // One block per entry of block_total, which was sized by grid_kernel_blocks for this device.
   const auto blocks = static_cast<unsigned>(state.block_total.size());
-  void* arguments[] = {&a, &check, const_cast<ListSkin*>(&skin)};
+  void* arguments[] = {&a, &check};
   cuda_check(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(&grid_kernel), dim3(blocks), dim3(kBlock),
                                          arguments, 0, stream),
              "launch the neighbour grid");
@@ -231,11 +232,11 @@ unsigned grid_kernel_blocks(std::size_t particles, std::uint32_t cells) {
 }
 
 void launch_neighbour_grid(DeviceState& state, const GridShape& grid, cudaStream_t stream) {
-  launch_grid_kernel(state, grid, false, ListSkin{}, stream);
+  launch_grid_kernel(state, grid, false, stream);
 }
 
-void launch_list_step_grid(DeviceState& state, const GridShape& grid, const ListSkin& skin, cudaStream_t stream) {
-  launch_grid_kernel(state, grid, true, skin, stream);
+void launch_list_step_grid(DeviceState& state, const GridShape& grid, cudaStream_t stream) {
+  launch_grid_kernel(state, grid, true, stream);
 }
 
 }  // namespace mssph::kernels

@@ -2,7 +2,6 @@
 // The neighbour grid on the GPU: the cell table and the cell-ordered copies of the particles that
 // the density and force sums walk (kernels/common/cell_grid.hpp). One cooperative kernel
 // (neighbour_grid.cu).
-#include "../common/list_skin.hpp"
 #include "device_state.cuh"
 
 #include <cstddef>
@@ -21,6 +20,6 @@ void launch_neighbour_grid(DeviceState& state, const GridShape& grid, cudaStream
 // With the teams' lists, a step's start: copies the particles into the cell order of the last
 // rebuild and, when the lists are no longer valid (list_skin.hpp), rebuilds the grid as
 // launch_neighbour_grid does. The decision is taken on the device.
-void launch_list_step_grid(DeviceState& state, const GridShape& grid, const ListSkin& skin, cudaStream_t stream);
+void launch_list_step_grid(DeviceState& state, const GridShape& grid, cudaStream_t stream);
 
 }  // namespace mssph::kernels

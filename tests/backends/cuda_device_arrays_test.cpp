@@ -179,21 +179,24 @@ TEST_F(DeviceArraysTest, OnlyScenesWithRigidBodiesHoldRestOffsets) {
 
 // Only a team keeps neighbour lists: one lane per particle (large scenes) spends no bytes on them,
 // and every team size has lists of at least two entries (a list holds capacity - 1 neighbours),
-// each particle's place at the rebuild (16 bytes) and one refresh state (list_skin.hpp).
+// each particle's place at the rebuild (16 bytes), each body's trigger and one refresh state
+// (list_skin.hpp). The scene's cells are those of a team's (h + skin).
 TEST_F(DeviceArraysTest, OnlyTeamsKeepNeighbourLists) {
+  const FloatScene listing = kernels::make_float_scene_with_list_cells(setup);
   const std::size_t n = setup.size();
-  const std::size_t one_lane = kernels::device_array_sizes(scene, chunks, kGridBlocks, 1).total_bytes;
-  const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kGridBlocks, 1);
-  for (const char* name : {"list_count", "list_index", "list_origin", "list_refresh"}) {
+  const std::size_t one_lane = kernels::device_array_sizes(listing, chunks, kGridBlocks, 1).total_bytes;
+  const std::vector<ListedArray> listed = listed_arrays(listing, chunks, kGridBlocks, 1);
+  for (const char* name : {"list_count", "list_index", "list_origin", "list_trigger2", "list_refresh"}) {
     EXPECT_EQ(bytes_of(listed, name), 0u) << name;
   }
+  ASSERT_EQ(listing.list_trigger2.size(), setup.bodies.size());
   for (const unsigned lanes : {2u, 4u, 8u}) {
     SCOPED_TRACE(::testing::Message() << lanes << " lanes");
     const std::uint32_t capacity = kernels::team_list_capacity(lanes);
     EXPECT_GE(capacity, 2u);
-    EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kGridBlocks, lanes).total_bytes - one_lane,
+    EXPECT_EQ(kernels::device_array_sizes(listing, chunks, kGridBlocks, lanes).total_bytes - one_lane,
               n * lanes * (1 + capacity) * sizeof(std::uint32_t) + n * sizeof(kernels::Vec4) +
-                  sizeof(kernels::ListRefreshState));
+                  setup.bodies.size() * sizeof(float) + sizeof(kernels::ListRefreshState));
   }
 }
 

@@ -1,7 +1,7 @@
 // The neighbour lists with a skin (kernels/common/list_skin.hpp), the cpu backend's and the GPU
 // teams' (recorded on the host): recorded once, they must give every particle the same neighbours
-// as a fresh search for as long as no particle has moved past the trigger, and the trigger must
-// fire before a pair can come within the support unlisted.
+// as a fresh search for as long as no particle has moved past its body's trigger, and a trigger
+// must fire before a pair can come within the support unlisted.
 #include "common/list_skin.hpp"
 #include "common/fluid_physics.hpp"
 #include "neighbour_list_fixtures.hpp"
@@ -74,16 +74,26 @@ std::vector<std::uint32_t> neighbours_from_lists(const kernels::SortedView& v, c
   return out;
 }
 
+// Whether some particle stands farther from where it was recorded than its body's trigger.
+bool some_trigger_fired(const kernels::SortedView& v, const std::vector<Vec3>& recorded,
+                        const std::vector<float>& triggers2) {
+  for (std::uint32_t s = 0; s < v.step.particle_count; ++s) {
+    const Vec4 p = v.position[s];
+    if (kernels::moved_past_trigger(kernels::xyz(p), recorded[s], triggers2[kernels::body_of(p)])) return true;
+  }
+  return false;
+}
+
 Vec3 random_direction(std::mt19937_64& random) {
   std::normal_distribution<float> normal;
   const Vec3 d{normal(random), normal(random), normal(random)};
   return d * (1.0f / std::sqrt(kernels::squared_norm(d)));
 }
 
-// Every particle moves by just under the trigger, in a random direction; the lists recorded before
-// must still hold every particle's neighbours, among them pairs that were beyond h when recorded.
-// lanes = 1: the cpu backend's lists; 2, 4, 8: a GPU team's.
-TEST(ListSkin, ListsHoldEveryNeighbourWhileNoParticleMovedPastTheTrigger) {
+// Every particle moves by just under its body's trigger, in a random direction; the lists recorded
+// before must still hold every particle's neighbours, among them pairs that were beyond h when
+// recorded. lanes = 1: the cpu backend's lists; 2, 4, 8: a GPU team's.
+TEST(ListSkin, ListsHoldEveryNeighbourWhileNoParticleMovedPastItsTrigger) {
   for (const std::uint32_t lanes : {1u, 2u, 4u, 8u}) {
     SCOPED_TRACE(::testing::Message() << lanes << " lanes");
     std::mt19937_64 random(1967 + lanes);
@@ -91,6 +101,7 @@ TEST(ListSkin, ListsHoldEveryNeighbourWhileNoParticleMovedPastTheTrigger) {
                             static_cast<float>(kernels::list_cell_size(1.0)));
     const kernels::SortedView v = lattice.view();  // views the lattice's positions, which move below
     const kernels::ListSkin skin = kernels::list_skin(v.step.smoothing.h);
+    const std::vector<float> triggers2 = kernels::list_triggers2(lattice.bodies(), skin);
     std::unique_ptr<HostLists> host;
     std::unique_ptr<TeamLists> team;
     if (lanes == 1) {
@@ -110,12 +121,13 @@ TEST(ListSkin, ListsHoldEveryNeighbourWhileNoParticleMovedPastTheTrigger) {
     }
     std::uniform_real_distribution<float> fraction(0.9f, 1.0f);
     for (std::uint32_t s = 0; s < lattice.size(); ++s) {
-      lattice.move(s, random_direction(random) * (0.999f * fraction(random) * std::sqrt(skin.trigger2)));
+      const float trigger = std::sqrt(triggers2[kernels::body_of(v.position[s])]);
+      lattice.move(s, random_direction(random) * (0.999f * fraction(random) * trigger));
     }
 
+    ASSERT_FALSE(some_trigger_fired(v, recorded, triggers2));
     std::size_t entered_the_support = 0;
     for (std::uint32_t s = 0; s < lattice.size(); ++s) {
-      ASSERT_FALSE(kernels::moved_past_trigger(kernels::xyz(v.position[s]), recorded[s], skin)) << "particle " << s;
       const std::vector<std::uint32_t> now = neighbours_by_brute_force(v, s);
       ASSERT_EQ(listed(s), now) << "particle " << s;
       for (const std::uint32_t t : now) {
@@ -128,9 +140,9 @@ TEST(ListSkin, ListsHoldEveryNeighbourWhileNoParticleMovedPastTheTrigger) {
 }
 
 // The cpu backend's density pass on a step that keeps the lists (density_sum_keeping_within): after
-// every particle has moved by just under the trigger, it copies out of each recorded row exactly
-// the entries within h, in the row's order, and its sum has the bits of the sum over that copy,
-// the one the force pass reads.
+// every particle has moved by just under half the skin (the lattice's triggers), it copies out of
+// each recorded row exactly the entries within h, in the row's order, and its sum has the bits of
+// the sum over that copy, the one the force pass reads.
 TEST(ListSkin, TheHostsDensitySumCopiesExactlyTheEntriesWithinTheSupport) {
   std::mt19937_64 random(2011);
   JitteredLattice lattice(random, compressed_by_up_to_4_percent(random),
@@ -139,7 +151,7 @@ TEST(ListSkin, TheHostsDensitySumCopiesExactlyTheEntriesWithinTheSupport) {
   const kernels::ListSkin skin = kernels::list_skin(v.step.smoothing.h);
   const HostLists host(v, skin.record_radius2);
   for (std::uint32_t s = 0; s < lattice.size(); ++s) {
-    lattice.move(s, random_direction(random) * (0.999f * std::sqrt(skin.trigger2)));
+    lattice.move(s, random_direction(random) * (0.999f * 0.5f * skin.closing));
   }
   std::vector<std::uint32_t> count(lattice.size()), index(std::size_t{lattice.size()} * kCapacity);
   const kernels::NeighbourLists within = kernels::particle_lists(kCapacity, count.data(), index.data());
@@ -166,54 +178,117 @@ TEST(ListSkin, TheHostsDensitySumCopiesExactlyTheEntriesWithinTheSupport) {
   EXPECT_GT(dropped, std::size_t{lattice.size()});
 }
 
-// Two fluid particles just beyond the recording radius h + skin: unlisted. Approaching each other
-// by the trigger each, they stay beyond h, so the lists are still right and no rebuild is due;
-// a little farther, each past half the skin, they come within h, unlisted, and that is the moment
-// the check must force a rebuild.
-TEST(ListSkin, TheTriggerFiresBeforeAPairComesWithinTheSupportUnlisted) {
+// Fluid and walls rest while the lattice's block, rigid (movable) or deformable, moves as one
+// towards them by just under the whole skin: the triggers let it (the only body that moves never
+// lists its own particles), and the lists still give every particle its neighbours, among them
+// pairs the move brought within h.
+TEST(ListSkin, AToolMovingOverARestingSceneKeepsTheListsForAWholeSkin) {
+  for (const std::uint32_t block_kind : {kernels::kRigid, kernels::kDeformable}) {
+    for (const std::uint32_t lanes : {1u, 2u}) {
+      SCOPED_TRACE(::testing::Message() << "block kind " << block_kind << ", " << lanes << " lanes");
+      std::mt19937_64 random(2011 + lanes + block_kind);
+      JitteredLattice lattice(random, compressed_by_up_to_4_percent(random),
+                              static_cast<float>(kernels::list_cell_size(1.0)), block_kind);
+      lattice.body_parameters(kFluidBody).kind = kernels::kBoundary;  // the resting scene
+      lattice.body_parameters(kDeformableBody).rigid_index = block_kind == kernels::kRigid ? 0 : kernels::kNotRigid;
+      const kernels::SortedView v = lattice.view();
+      const kernels::ListSkin skin = kernels::list_skin(v.step.smoothing.h);
+      const std::vector<float> triggers2 = kernels::list_triggers2(lattice.bodies(), skin);
+      ASSERT_EQ(triggers2, (std::vector<float>{0.0f, 0.0f, skin.closing * skin.closing}));
+      const HostLists host(v, skin.record_radius2);
+      const TeamLists team(v, lanes, kCapacity, skin.record_radius2);
+      std::vector<Vec3> recorded(lattice.size());
+      for (std::uint32_t s = 0; s < lattice.size(); ++s) recorded[s] = kernels::xyz(v.position[s]);
+
+      // The block holds the sites with x above the middle: towards the rest is -x.
+      const Vec3 move = Vec3{-0.999f * skin.closing, 0.0f, 0.0f};
+      for (std::uint32_t s = 0; s < lattice.size(); ++s) {
+        if (kernels::body_of(v.position[s]) == kDeformableBody) lattice.move(s, move);
+      }
+      ASSERT_FALSE(some_trigger_fired(v, recorded, triggers2));
+      std::size_t entered_the_support = 0;
+      for (std::uint32_t s = 0; s < lattice.size(); ++s) {
+        const std::vector<std::uint32_t> now = neighbours_by_brute_force(v, s);
+        ASSERT_EQ(lanes == 1 ? neighbours_from_lists(v, host, s) : neighbours_from_lists(v, team, s), now)
+            << "particle " << s;
+        for (const std::uint32_t t : now) {
+          entered_the_support += kernels::squared_norm(recorded[s] - recorded[t]) >= v.step.smoothing.h2 ? 1 : 0;
+        }
+      }
+      EXPECT_GT(entered_the_support, 100u) << "not vacuous: the block's move brought pairs within h";
+    }
+  }
+}
+
+// Two particles just beyond the recording radius h + skin: unlisted. Each moving towards the other
+// by just under its body's trigger (a resting body's is zero), they stay beyond h, so the lists
+// are still right; closer by a little more than the skin, they come within h, unlisted, and a
+// trigger must have fired. Four scenes: two particles of one fluid (half the skin each); a moving
+// rigid tool and a wall (the tool the whole skin); a moving tool and a fluid, and two moving
+// tools (half each). Giving each body the whole skin wherever a scene has one moving rigid body,
+// as if a fluid did not list itself, fails the first scene.
+struct TwoBodies {
+  kernels::BodyParameters a, b;
+  bool one_body;  // a and b are one body (its parameters a's)
+};
+
+TEST(ListSkin, ATriggerFiresBeforeAPairComesWithinTheSupportUnlisted) {
   const float h = 0.04f;
   const kernels::ListSkin skin = kernels::list_skin(h);
   const float skin_width = kernels::kSkinOverSupport * h;
-  const float trigger = std::sqrt(skin.trigger2);
   const Vec3 a{0.1f, 0.1f, 0.1f};
   const Vec3 b = a + Vec3{h + 1.002f * skin_width, 0, 0};
   const Vec3 towards_b{1, 0, 0};
+  const kernels::BodyParameters fluid{kernels::kFluid, kernels::kNotRigid, 0, 1000, 100, 1.0f};
+  const kernels::BodyParameters wall{kernels::kBoundary, kernels::kNotRigid, 0, 1000, 100, 0.0f};
+  const kernels::BodyParameters tool{kernels::kRigid, 0, 0, 1000, 100, 1.0f};
+  const kernels::BodyParameters other_tool{kernels::kRigid, 1, 0, 1000, 100, 1.0f};
+  for (const TwoBodies& scene : {TwoBodies{fluid, fluid, true}, TwoBodies{tool, wall, false},
+                                 TwoBodies{tool, fluid, false}, TwoBodies{tool, other_tool, false}}) {
+    SCOPED_TRACE(::testing::Message() << "kinds " << scene.a.kind << " and " << scene.b.kind);
+    const std::vector<kernels::BodyParameters> bodies =
+        scene.one_body ? std::vector<kernels::BodyParameters>{scene.a} : std::vector{scene.a, scene.b};
+    const std::vector<float> triggers2 = kernels::list_triggers2(bodies, skin);
+    const std::uint32_t body_b = scene.one_body ? 0 : 1;
+    kernels::GridShape shape;
+    shape.inverse_cell_size = static_cast<float>(1.0 / kernels::list_cell_size(h));
+    SortedParticles sorted = sort_into_grid({kernels::make_vec4(a, kernels::index_as_float_bits(0)),
+                                             kernels::make_vec4(b, kernels::index_as_float_bits(body_b))},
+                                            shape);
+    kernels::SortedView v{};
+    v.step.smoothing = kernels::SmoothingKernels::for_support(h);
+    v.step.particle_count = 2;
+    v.bodies = bodies.data();
+    v.grid = sorted.grid();
+    v.position = sorted.position.data();
+    const TeamLists team(v, 2, kCapacity, skin.record_radius2);
+    const HostLists host(v, skin.record_radius2);
+    const std::uint32_t s_a = kernels::xyz(sorted.position[0]).x == a.x ? 0 : 1, s_b = 1 - s_a;
+    std::vector<Vec3> recorded(2);
+    recorded[s_a] = a;
+    recorded[s_b] = b;
+    const auto lists_hold_the_pair = [&](const auto& lists) {
+      const std::vector<std::uint32_t> listed = neighbours_from_lists(v, lists, s_a);
+      return std::find(listed.begin(), listed.end(), s_b) != listed.end();
+    };
+    ASSERT_FALSE(lists_hold_the_pair(team) || lists_hold_the_pair(host)) << "b is not listed";
 
-  kernels::GridShape shape;
-  shape.inverse_cell_size = static_cast<float>(1.0 / kernels::list_cell_size(h));
-  SortedParticles sorted = sort_into_grid(
-      {kernels::make_vec4(a, kernels::index_as_float_bits(0)), kernels::make_vec4(b, kernels::index_as_float_bits(0))},
-      shape);
-  const std::vector<kernels::BodyParameters> bodies = {{kernels::kFluid, kernels::kNotRigid, 0, 1000, 100, 1.0f}};
-  kernels::SortedView v{};
-  v.step.smoothing = kernels::SmoothingKernels::for_support(h);
-  v.step.particle_count = 2;
-  v.bodies = bodies.data();
-  v.grid = sorted.grid();
-  v.position = sorted.position.data();
-  const TeamLists team(v, 2, kCapacity, skin.record_radius2);
-  const HostLists host(v, skin.record_radius2);
-  const std::uint32_t s_a = kernels::xyz(sorted.position[0]).x == a.x ? 0 : 1, s_b = 1 - s_a;
-  ASSERT_EQ(neighbours_from_lists(v, team, s_a), std::vector<std::uint32_t>{s_a}) << "only itself is listed";
-  ASSERT_EQ(neighbours_from_lists(v, host, s_a), std::vector<std::uint32_t>{s_a}) << "only itself is listed";
+    const float trigger_a = std::sqrt(triggers2[0]), trigger_b = std::sqrt(triggers2[body_b]);
+    const auto place = [&](float by_a, float by_b) {
+      sorted.position[s_a] = kernels::make_vec4(a + towards_b * by_a, sorted.position[s_a].w);
+      sorted.position[s_b] = kernels::make_vec4(b - towards_b * by_b, sorted.position[s_b].w);
+    };
+    place(0.999f * trigger_a, 0.999f * trigger_b);
+    EXPECT_FALSE(some_trigger_fired(v, recorded, triggers2));
+    EXPECT_FALSE(within_support(v, s_a, s_b)) << "within their triggers the pair stays beyond h";
 
-  const auto place = [&](float approach) {
-    sorted.position[s_a] = kernels::make_vec4(a + towards_b * approach, sorted.position[s_a].w);
-    sorted.position[s_b] = kernels::make_vec4(b - towards_b * approach, sorted.position[s_b].w);
-  };
-  place(0.999f * trigger);
-  EXPECT_FALSE(kernels::moved_past_trigger(kernels::xyz(sorted.position[s_a]), a, skin));
-  EXPECT_FALSE(kernels::moved_past_trigger(kernels::xyz(sorted.position[s_b]), b, skin));
-  EXPECT_FALSE(within_support(v, s_a, s_b)) << "within the trigger the pair stays beyond h";
-  EXPECT_EQ(neighbours_from_lists(v, team, s_a), neighbours_by_brute_force(v, s_a));
-  EXPECT_EQ(neighbours_from_lists(v, host, s_a), neighbours_by_brute_force(v, s_a));
-
-  place(0.505f * skin_width);
-  EXPECT_TRUE(within_support(v, s_a, s_b)) << "each past half the skin, the pair comes within h";
-  EXPECT_NE(neighbours_from_lists(v, team, s_a), neighbours_by_brute_force(v, s_a)) << "and the lists miss it";
-  EXPECT_NE(neighbours_from_lists(v, host, s_a), neighbours_by_brute_force(v, s_a)) << "and the host's too";
-  EXPECT_TRUE(kernels::moved_past_trigger(kernels::xyz(sorted.position[s_a]), a, skin));
-  EXPECT_TRUE(kernels::moved_past_trigger(kernels::xyz(sorted.position[s_b]), b, skin));
+    const float closer = 1.01f * skin_width / (trigger_a + trigger_b);  // the skin in proportion to the triggers
+    place(closer * trigger_a, closer * trigger_b);
+    EXPECT_TRUE(within_support(v, s_a, s_b)) << "closer by more than the skin, the pair comes within h";
+    EXPECT_FALSE(lists_hold_the_pair(team)) << "and the lists miss it";
+    EXPECT_FALSE(lists_hold_the_pair(host)) << "and the host's too";
+    EXPECT_TRUE(some_trigger_fired(v, recorded, triggers2));
+  }
 }
 
 }  // namespace

@@ -64,6 +64,10 @@ class JitteredLattice {
   // (CellRanges::cell_body); empty cells' entries are kMixedCell, as a stale entry may be.
   void leave_out_own_rows() { sorted_.note_cell_bodies(kernels::kMixedCell); }
 
+  // Body b's parameters, which the view reads (its kind, whether it moves).
+  kernels::BodyParameters& body_parameters(std::uint32_t b) { return bodies_[b]; }
+  const std::vector<kernels::BodyParameters>& bodies() const { return bodies_; }
+
   // Moves sorted particle s by `by`, keeping the cell order and the grid (as a step that keeps the
   // lists does).
   void move(std::uint32_t s, Vec3 by) {

@@ -33,7 +33,7 @@ TEST_P(SkinLists, TheGridIsRebuiltOnSomeStepsAndKeptOnOthers) {
   ASSERT_TRUE(backend->neighbour_grid_builds().has_value()) << "a scene this small keeps lists";
   step(*backend, kSteps);
   const std::uint64_t builds = *backend->neighbour_grid_builds();
-  EXPECT_GT(builds, 1u) << "the falling sphere moves past the trigger";
+  EXPECT_GT(builds, 1u) << "the falling sphere's move ends the lists";
   EXPECT_LT(builds, static_cast<std::uint64_t>(kSteps) / 2) << "the resting fluid keeps its lists";
 }
 
@@ -45,7 +45,7 @@ TEST_P(SkinLists, TheGridIsRebuiltOnSomeStepsAndKeptOnOthers) {
 // density by about 6e-4 of it (spiky W(0.9 h) against the rest number density at h = 2 dx), 60
 // times the tolerance; one missing nearer h moves it by less (W falls as (h - r)^3), which the
 // host test of the lists' sets covers. The test fails, on a GPU and on the host, with the skin
-// taken away (lists recorded within h) or with the trigger taken away (no rebuild after the first).
+// taken away (lists recorded within h) or with lists_hold taken away (no rebuild after the first).
 TEST_P(SkinLists, AStepThatKeepsTheListsHasTheDensitiesOfAFreshGrid) {
   MSSPH_SKIP_WITHOUT(GetParam());
   constexpr int kLastChecked = 200;
