@@ -7,6 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
 
 namespace mssph::bench {
 namespace {
@@ -77,6 +81,20 @@ BenchmarkResults read_benchmark_results(const std::string& path) {
     it->second.push_back(seconds);
   }
   return results;
+}
+
+void null_for_values_without_json_literal(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open");
+  std::ostringstream text;
+  text << in.rdbuf();
+  in.close();
+  // A value follows a key's closing quote and ": " and ends at a comma, a line end or a brace; a
+  // quote escaped inside a string is preceded by a backslash.
+  static const std::regex kNoLiteral(R"re(([^\\]": )-?(NaN|Infinity)(?=[,\r\n}]))re");
+  const std::string fixed = std::regex_replace(text.str(), kNoLiteral, "$1null");
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!(out << fixed) || !out.flush()) throw std::runtime_error(path + ": cannot write");
 }
 
 }  // namespace mssph::bench

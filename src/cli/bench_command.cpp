@@ -173,6 +173,7 @@ int run_bench(const BenchArgs& a) {
     throw InputError("no benchmark matches --filter \"" + a.filter + "\" (mssph bench --list names them)");
   }
   if (!claim) return kExitOk;
+  bench::null_for_values_without_json_literal(claim->partial_path());
   try {
     bench::read_benchmark_results(claim->partial_path());  // what was written is whole and readable
   } catch (const InputError& e) {

@@ -196,6 +196,30 @@ TEST(BenchmarkResultsFile, BadFilesNameTheFileAndTheProblem) {
   EXPECT_NE(message_of("unit.json").find("/benchmarks/0/time_unit"), std::string::npos);
 }
 
+// Google Benchmark's file for two repetitions of a benchmark whose counter is zero in both: the
+// counter's coefficient of variation is written as NaN, which no JSON reader takes, until those
+// values are made null. A string holding the same text keeps it.
+TEST(BenchmarkResultsFile, ValuesWithoutAJsonLiteralBecomeNull) {
+  const test::TempDir dir;
+  const std::string entry = R"({"name": "t", "run_name": "t", "run_type": "iteration", "real_time": 2, )"
+                            R"("time_unit": "ms", "builds": 0})";
+  const std::string aggregate = R"({"name": "t_cv", "run_name": "t", "run_type": "aggregate", "real_time": 0.1, )"
+                                R"("time_unit": "ms", "builds": NaN, "low": -Infinity, "high": Infinity})";
+  const std::string text =
+      R"({"context": {"note": "a \": NaN, b"}, "benchmarks": [)" + entry + ",\n" + entry + ",\n" + aggregate + "]}";
+  write(dir / "r.json", text);
+  EXPECT_THROW(read_benchmark_results((dir / "r.json").string()), InputError);
+  null_for_values_without_json_literal((dir / "r.json").string());
+  std::ifstream in(dir / "r.json");
+  const nlohmann::json doc = nlohmann::json::parse(in);
+  const nlohmann::json& cv = doc["benchmarks"][2];
+  EXPECT_TRUE(cv["builds"].is_null());
+  EXPECT_TRUE(cv["low"].is_null());
+  EXPECT_TRUE(cv["high"].is_null());
+  EXPECT_EQ(doc["context"]["note"], "a \": NaN, b");
+  EXPECT_EQ(read_benchmark_results((dir / "r.json").string()).seconds.at("t"), (std::vector<double>{2e-3, 2e-3}));
+}
+
 // A time of zero or below, or an instruction count that is not positive, is not a measurement.
 TEST(BenchmarkResultsFile, NonPositiveTimesAndCountsAreBadInput) {
   const test::TempDir dir;
