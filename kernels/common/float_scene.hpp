@@ -61,7 +61,8 @@ struct FloatScene {
 // fixed region holds (it needs the body's rigid motion every step; the reference has it).
 FloatScene make_float_scene(const ParticleSetup& setup);
 // The same for a backend whose neighbour lists have a skin (list_skin.hpp): cells h + skin wide, so
-// that a rebuild's walk of 27 cells sees every candidate within h + skin, and each body's trigger.
+// that a rebuild's walk of 27 cells sees every candidate within h + skin; and each body's trigger
+// (list_trigger2).
 FloatScene make_float_scene_with_list_cells(const ParticleSetup& setup);
 
 // Grid bits per axis: enough cells of side h to cover the starting bounding box (at least 4 per

@@ -6,11 +6,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 namespace mssph::bench {
 namespace {
@@ -86,13 +88,34 @@ BenchmarkResults read_benchmark_results(const std::string& path) {
 void null_for_values_without_json_literal(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open");
-  std::ostringstream text;
-  text << in.rdbuf();
+  std::ostringstream read;
+  read << in.rdbuf();
   in.close();
-  // A value follows a key's closing quote and ": " and ends at a comma, a line end or a brace; a
-  // quote escaped inside a string is preceded by a backslash.
-  static const std::regex kNoLiteral(R"re(([^\\]": )-?(NaN|Infinity)(?=[,\r\n}]))re");
-  const std::string fixed = std::regex_replace(text.str(), kNoLiteral, "$1null");
+  const std::string text = read.str();
+  // Outside strings JSON has no capital N or I but in these tokens (true, false, null, numbers).
+  static const std::array<std::string_view, 4> kNoLiteral{"-Infinity", "Infinity", "-NaN", "NaN"};
+  std::string fixed;
+  fixed.reserve(text.size());
+  bool in_string = false, escaped = false;
+  for (std::size_t k = 0; k < text.size();) {
+    const char c = text[k];
+    if (in_string) {
+      in_string = escaped || c != '"';
+      escaped = !escaped && c == '\\';
+    } else if (c == '"') {
+      in_string = true;
+    } else {
+      const auto token = std::find_if(kNoLiteral.begin(), kNoLiteral.end(),
+                                      [&](std::string_view t) { return text.compare(k, t.size(), t) == 0; });
+      if (token != kNoLiteral.end()) {
+        fixed += "null";
+        k += token->size();
+        continue;
+      }
+    }
+    fixed += c;
+    ++k;
+  }
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!(out << fixed) || !out.flush()) throw std::runtime_error(path + ": cannot write");
 }

@@ -178,10 +178,10 @@ TEST(ListSkin, TheHostsDensitySumCopiesExactlyTheEntriesWithinTheSupport) {
   EXPECT_GT(dropped, std::size_t{lattice.size()});
 }
 
-// Fluid and walls rest while the lattice's block, rigid (movable) or deformable, moves as one
-// towards them by just under the whole skin: the triggers let it (the only body that moves never
-// lists its own particles), and the lists still give every particle its neighbours, among them
-// pairs the move brought within h.
+// The walls and the lattice's fluid, made a second wall, rest while its block, rigid (movable) or
+// deformable, moves as one towards them by just under the whole skin: the triggers let it (the only body that moves
+// never lists its own particles), and the lists still give every particle its neighbours, among them pairs the move
+// brought within h.
 TEST(ListSkin, AToolMovingOverARestingSceneKeepsTheListsForAWholeSkin) {
   for (const std::uint32_t block_kind : {kernels::kRigid, kernels::kDeformable}) {
     for (const std::uint32_t lanes : {1u, 2u}) {
@@ -220,18 +220,19 @@ TEST(ListSkin, AToolMovingOverARestingSceneKeepsTheListsForAWholeSkin) {
   }
 }
 
-// Two particles just beyond the recording radius h + skin: unlisted. Each moving towards the other
-// by just under its body's trigger (a resting body's is zero), they stay beyond h, so the lists
-// are still right; closer by a little more than the skin, they come within h, unlisted, and a
-// trigger must have fired. Four scenes: two particles of one fluid (half the skin each); a moving
-// rigid tool and a wall (the tool the whole skin); a moving tool and a fluid, and two moving
-// tools (half each). Giving each body the whole skin wherever a scene has one moving rigid body,
-// as if a fluid did not list itself, fails the first scene.
+// A scene of the test below: the bodies of its two particles.
 struct TwoBodies {
   kernels::BodyParameters a, b;
   bool one_body;  // a and b are one body (its parameters a's)
 };
 
+// Two particles just beyond the recording radius h + skin: unlisted. Each moving towards the other
+// by just under its body's trigger (a resting body's is zero), they stay beyond h, so the lists
+// are still right; closer by a little more than the skin, they come within h, unlisted, and a
+// trigger must have fired. Four scenes: two particles of one fluid (half the skin each); a moving
+// rigid tool and a wall (the tool the whole skin); a moving tool and a fluid, and two moving
+// tools (half each). A fluid taken for a body that does not list itself fails the first scene;
+// every moving body given the whole skin fails the first, the third and the fourth.
 TEST(ListSkin, ATriggerFiresBeforeAPairComesWithinTheSupportUnlisted) {
   const float h = 0.04f;
   const kernels::ListSkin skin = kernels::list_skin(h);

@@ -198,15 +198,18 @@ TEST(BenchmarkResultsFile, BadFilesNameTheFileAndTheProblem) {
 
 // Google Benchmark's file for two repetitions of a benchmark whose counter is zero in both: the
 // counter's coefficient of variation is written as NaN, which no JSON reader takes, until those
-// values are made null. A string holding the same text keeps it.
+// values are made null. Strings holding the same text keep it, after an escaped quote too.
 TEST(BenchmarkResultsFile, ValuesWithoutAJsonLiteralBecomeNull) {
   const test::TempDir dir;
   const std::string entry = R"({"name": "t", "run_name": "t", "run_type": "iteration", "real_time": 2, )"
                             R"("time_unit": "ms", "builds": 0})";
-  const std::string aggregate = R"({"name": "t_cv", "run_name": "t", "run_type": "aggregate", "real_time": 0.1, )"
-                                R"("time_unit": "ms", "builds": NaN, "low": -Infinity, "high": Infinity})";
-  const std::string text =
-      R"({"context": {"note": "a \": NaN, b"}, "benchmarks": [)" + entry + ",\n" + entry + ",\n" + aggregate + "]}";
+  // As Google Benchmark lays an entry out: a key a line, indented.
+  const std::string aggregate =
+      "{\n      \"name\": \"t_cv\",\n      \"run_name\": \"t\",\n      \"run_type\": \"aggregate\",\n"
+      "      \"real_time\": 0.1,\n      \"time_unit\": \"ms\",\n      \"builds\": NaN,\n"
+      "      \"low\": -Infinity,\n      \"high\": Infinity\n    }";
+  const std::string text = R"({"context": {"note": "a \": NaN, b", "label": ": NaN, x"}, "benchmarks": [)" + entry +
+                           ",\n" + entry + ",\n    " + aggregate + "\n  ]\n}\n";
   write(dir / "r.json", text);
   EXPECT_THROW(read_benchmark_results((dir / "r.json").string()), InputError);
   null_for_values_without_json_literal((dir / "r.json").string());
@@ -217,6 +220,7 @@ TEST(BenchmarkResultsFile, ValuesWithoutAJsonLiteralBecomeNull) {
   EXPECT_TRUE(cv["low"].is_null());
   EXPECT_TRUE(cv["high"].is_null());
   EXPECT_EQ(doc["context"]["note"], "a \": NaN, b");
+  EXPECT_EQ(doc["context"]["label"], ": NaN, x");
   EXPECT_EQ(read_benchmark_results((dir / "r.json").string()).seconds.at("t"), (std::vector<double>{2e-3, 2e-3}));
 }
 
