@@ -1,5 +1,6 @@
 #include "bench/benchmark_results.hpp"
 
+#include "config/input_file.hpp"
 #include "config/json_reader.hpp"
 #include "config/strict_json.hpp"
 #include "util/errors.hpp"
@@ -10,7 +11,6 @@
 #include <array>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string_view>
 
@@ -86,12 +86,7 @@ BenchmarkResults read_benchmark_results(const std::string& path) {
 }
 
 void null_for_values_without_json_literal(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open");
-  std::ostringstream read;
-  read << in.rdbuf();
-  in.close();
-  const std::string text = read.str();
+  const std::string text = read_input_file(path, "benchmark results file");
   // Outside strings JSON has no capital N or I but in these tokens (true, false, null, numbers).
   static const std::array<std::string_view, 4> kNoLiteral{"-Infinity", "Infinity", "-NaN", "NaN"};
   std::string fixed;

@@ -36,8 +36,8 @@ BenchmarkResults read_benchmark_results(const std::string& path);
 // Google Benchmark writes a value it cannot compute as NaN or (-)Infinity, which JSON has no
 // literal for: the coefficient of variation of a counter that is zero in every repetition is
 // 0 / 0. Rewrites the file at `path` with null for each such value (never text inside a string),
-// so that every JSON reader takes it. Throws std::runtime_error when the
-// file cannot be read or written.
+// so that every JSON reader takes it. Throws InputError when the file cannot be read (as
+// read_input_file) and std::runtime_error when it cannot be written.
 void null_for_values_without_json_literal(const std::string& path);
 
 }  // namespace mssph::bench

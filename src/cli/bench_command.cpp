@@ -173,8 +173,8 @@ int run_bench(const BenchArgs& a) {
     throw InputError("no benchmark matches --filter \"" + a.filter + "\" (mssph bench --list names them)");
   }
   if (!claim) return kExitOk;
-  bench::null_for_values_without_json_literal(claim->partial_path());
   try {
+    bench::null_for_values_without_json_literal(claim->partial_path());
     bench::read_benchmark_results(claim->partial_path());  // what was written is whole and readable
   } catch (const InputError& e) {
     throw std::runtime_error(std::string("writing the results failed: ") + e.what());
