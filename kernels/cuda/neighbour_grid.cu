@@ -164,6 +164,7 @@ __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check) 
     const std::uint32_t first = a.cell_start[cell];
     const std::uint32_t end = a.cell_start[cell + 1];
     std::uint32_t rank = 0, lower_half = 0;
+#pragma unroll 4  // the slots' loads in flight together
     for (std::uint32_t slot = first; slot < end; ++slot) {
       const std::uint32_t other = a.unordered_id[slot];
       rank += other < own ? 1u : 0u;

@@ -267,6 +267,7 @@ TEST(CellBody, NamesTheBodyAllOfACellsParticlesShareElseMarksTheCellMixed) {
   EXPECT_EQ(entry({7, 7, 7}), 7u);
   EXPECT_EQ(entry({7, 7, 3}), kernels::kMixedCell);
   EXPECT_EQ(entry({3, 7, 7}), kernels::kMixedCell);
+  EXPECT_EQ(entry({7, 3, 7}), kernels::kMixedCell);  // a later match does not undo a difference
   EXPECT_EQ(entry({0xfffeu, 0xfffeu}), 0xfffeu);
   EXPECT_EQ(entry({0xffffu}), kernels::kMixedCell);
   EXPECT_EQ(entry({0x10007u, 0x10007u}), kernels::kMixedCell);
