@@ -179,9 +179,9 @@ TEST(ListSkin, TheHostsDensitySumCopiesExactlyTheEntriesWithinTheSupport) {
 }
 
 // The walls and the lattice's fluid, made a second wall, rest while its block, rigid (movable) or
-// deformable, moves as one towards them by just under the whole skin: the triggers let it (the only body that moves
-// never lists its own particles), and the lists still give every particle its neighbours, among them pairs the move
-// brought within h.
+// deformable, moves as one towards them by just under the whole skin: the triggers let it (the
+// only body that moves never lists its own particles), and the lists still give every particle
+// its neighbours, among them pairs the move brought within h.
 TEST(ListSkin, AToolMovingOverARestingSceneKeepsTheListsForAWholeSkin) {
   for (const std::uint32_t block_kind : {kernels::kRigid, kernels::kDeformable}) {
     for (const std::uint32_t lanes : {1u, 2u}) {
