@@ -5,6 +5,7 @@
 // so the list is tested without a GPU.
 #include "../common/list_skin.hpp"
 #include "chunk_tables.hpp"
+#include "contact_order.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -46,9 +47,12 @@ struct DeviceArrays {
   Array<std::uint16_t> cell_body;  // CellRanges::cell_body; empty without rigid or deformable bodies
   Array<Vec4> sorted_position, sorted_velocity;
   Array<VolumePressure> volume_pressure;
-  Array<Mat3> velocity_gradient;        // sorted; empty unless viscosity_model is full_stress
-  Array<std::uint8_t> near_other_body;  // sorted, from the density pass: may_feel_forces' second argument
-  Array<std::uint32_t> block_total;     // the grid kernel's: each block's share of the cell table
+  Array<Mat3> velocity_gradient;  // sorted; empty unless viscosity_model is full_stress
+  // From the density pass, for the force pass (contact_order.hpp): sorted ForceWalk, the contact
+  // order (one lane a particle) and its places taken.
+  Array<std::uint8_t> force_walk;
+  Array<std::uint32_t> contact_order, contact_taken;
+  Array<std::uint32_t> block_total;  // the grid kernel's: each block's share of the cell table
   // A team's neighbour lists, one per lane, where each sorted particle stood when they were
   // recorded, and when to record them again (list_skin.hpp). Empty for one lane per particle.
   Array<std::uint32_t> list_count, list_index;
@@ -142,7 +146,12 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   visit("volume_pressure", a.volume_pressure, Filled<VolumePressure>{n, VolumePressure{0, 0}});
   // The velocity-gradient pass writes every particle's, after the density pass and before the force pass.
   visit("velocity_gradient", a.velocity_gradient, Uninitialised{scene.full_stress_viscosity ? n : 0});
-  visit("near_other_body", a.near_other_body, Uninitialised{n});  // the density pass writes every particle's
+  // The density pass writes every particle's walk, and the places it takes after the step clears
+  // the count.
+  visit("force_walk", a.force_walk, Uninitialised{n});
+  const std::size_t contact_capacity = contact_order_capacity(scene, team_lanes);
+  visit("contact_order", a.contact_order, Uninitialised{contact_capacity});
+  visit("contact_taken", a.contact_taken, Uninitialised{contact_capacity > 0 ? 1u : 0u});
   visit("block_total", a.block_total, Uninitialised{grid_blocks});
   // Written by the density pass before the force pass reads them, for every particle that receives forces.
   const std::size_t lists = team_list_count(n, team_lanes);

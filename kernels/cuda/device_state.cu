@@ -84,6 +84,11 @@ CanonicalState canonical_state(DeviceState& state) {
                         state.elastic_force.data(), state.fixed.data()};
 }
 
+ForceWalks force_walks(DeviceState& state) {
+  return ForceWalks{state.force_walk.data(), state.contact_order.data(), state.contact_taken.data(),
+                    static_cast<std::uint32_t>(state.contact_order.size())};
+}
+
 // A fluid particle's canonical velocity and interaction force hold nothing from the density pass
 // to the force pass's store: the grid kernel has copied the velocity into cell order, and the force
 // pass writes both for every fluid particle (store_advance: fluid particles always integrate), in

@@ -23,6 +23,7 @@ SortedView sorted_view(const FloatScene& scene, const DeviceState& state);
 // The lanes' neighbour lists of teams of `team_lanes` (the lanes the state was allocated for).
 NeighbourLists team_lists(DeviceState& state, unsigned team_lanes);
 CanonicalState canonical_state(DeviceState& state);
+ForceWalks force_walks(DeviceState& state);
 // Where a step's density pass leaves its near notes for the force pass (near_notes.hpp).
 NearNotes step_near_notes(DeviceState& state);
 DeviceDeformableView deformable_view(const FloatScene& scene, DeviceState& state);

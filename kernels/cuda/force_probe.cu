@@ -2,23 +2,21 @@
 
 #include "../common/fluid_physics.hpp"
 #include "../common/read_back.hpp"
+#include "contact_order.cuh"
 #include "thread_blocks.cuh"
 
 namespace mssph::kernels {
 namespace {
 
-// The same sum as forces_kernel's, one lane per particle, not integrated: skipped, as there, where
-// the density pass found no other body within h of a rigid or deformable particle.
+// The same sum as forces_kernel's, one lane per particle, not integrated: its teams serve the same
+// particles (force_seat), and skip the walk where it does.
 template <bool FullStress>
-__global__ void force_probe_kernel(SortedView view, const std::uint8_t* near_other_body, NearNotes notes,
-                                   ForceSum* forces) {
-  const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
-  if (s >= view.step.particle_count) return;
-  const ForceParticle p = load_force_particle(view, s);
+__global__ void force_probe_kernel(SortedView view, ForceWalks walks, NearNotes notes, ForceSum* forces) {
+  const ForceSeat seat = force_seat(view, walks, blockIdx.x * blockDim.x + threadIdx.x);
+  if (!seat.active) return;
+  const ForceParticle p = load_force_particle(view, seat.s);
   HeldSegments<kHeldSegments> held;
-  forces[s] = may_feel_forces(p.parameters, near_other_body[s] != 0)
-                  ? force_sum<FullStress>(view, p, view.id[s], notes, held)
-                  : zero_force_sum();
+  forces[seat.s] = seat.walks ? force_sum<FullStress>(view, p, view.id[seat.s], notes, held) : zero_force_sum();
 }
 
 }  // namespace
@@ -28,12 +26,12 @@ ForceEvaluation probe_forces(const FloatScene& scene, DeviceState& state, const 
   // Outside the scene's device arrays: a probe runs in tests and validation, never in a step.
   DeviceBuffer<ForceSum> forces(n);
   const SortedView view = sorted_view(scene, state);
+  const ForceWalks walks = force_walks(state);
+  const unsigned blocks = blocks_for(std::size_t{n} + walks.contact_capacity);
   if (scene.full_stress_viscosity) {
-    force_probe_kernel<true>
-        <<<blocks_for(n), kBlock, 0, stream>>>(view, state.near_other_body.data(), notes, forces.data());
+    force_probe_kernel<true><<<blocks, kBlock, 0, stream>>>(view, walks, notes, forces.data());
   } else {
-    force_probe_kernel<false>
-        <<<blocks_for(n), kBlock, 0, stream>>>(view, state.near_other_body.data(), notes, forces.data());
+    force_probe_kernel<false><<<blocks, kBlock, 0, stream>>>(view, walks, notes, forces.data());
   }
   cuda_check(cudaGetLastError(), "launch force probe");
   cuda_check(cudaStreamSynchronize(stream), "evaluate forces");

@@ -2,6 +2,7 @@
 
 #include "../common/fluid_physics.hpp"
 #include "../common/list_skin.hpp"
+#include "contact_order.cuh"
 #include "thread_blocks.cuh"
 #include "warp_cell_checks.cuh"
 
@@ -152,14 +153,14 @@ __device__ bool walks_by_segments(const SortedView& view, std::uint32_t s, const
 // rebuild, and asks for the next step to rebuild if the list overflowed; on the other steps it
 // sums over that list. One lane alone records none and walks every step (device_arrays.hpp,
 // team_list_capacity, says why); for a fluid particle it notes which candidates lie within h, for
-// the force pass, when the pass is given notes (near_notes.hpp). Every particle also stores
+// the force pass, when the pass is given notes (near_notes.hpp). Every particle also records
 // whether another body lies within h of it (taken by rigid and deformable particles only:
-// DensitySum::nearest_other_body2), which lets the force pass skip the walk of those without one
-// (may_feel_forces).
+// DensitySum::nearest_other_body2), for the force pass to skip the walk of those without one
+// (contact_order.hpp).
 template <unsigned Lanes>
 __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(Lanes) / kSumBlock)
-    density_kernel(SortedView view, VolumePressure* volume_pressure, std::uint8_t* near_other_body,
-                   NeighbourLists lists, ListRefreshState* refresh, float record_radius2, NearNotes notes) {
+    density_kernel(SortedView view, VolumePressure* volume_pressure, ForceWalks walks, NeighbourLists lists,
+                   ListRefreshState* refresh, float record_radius2, NearNotes notes) {
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
@@ -181,10 +182,8 @@ __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(
   }
   sum.delta = team_sum<Lanes>(sum.delta);
   sum.nearest_other_body2 = team_min<Lanes>(sum.nearest_other_body2);
-  if (active && lane == 0) {
-    volume_pressure[s] = density_from(sum, view, s).volume_pressure;
-    near_other_body[s] = sum.nearest_other_body2 < view.step.smoothing.h2 ? 1 : 0;
-  }
+  if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s).volume_pressure;
+  record_force_walk(walks, view, s, active && lane == 0, sum.nearest_other_body2 < view.step.smoothing.h2);
 }
 
 // For the full_stress viscosity, each fluid particle's velocity gradient after the density pass,
@@ -235,26 +234,28 @@ struct SharedHeldSegments {
   __device__ std::uint32_t near(std::uint32_t k) const { return near_[k][threadIdx.x]; }
 };
 
+// A team serves the particle of its force_seat: those in cell order that hold no place in the
+// contact order, then those that do (contact_order.hpp).
 template <unsigned Lanes, bool FullStress>
 __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kSumBlock)
-    forces_kernel(SortedView view, CanonicalState state, const std::uint8_t* near_other_body, NeighbourLists lists,
-                  NearNotes notes) {
-  const TeamSeat seat = team_seat<Lanes>();
-  const std::uint32_t s = seat.member, lane = seat.lane;
-  const bool active = s < view.step.particle_count;
+    forces_kernel(SortedView view, CanonicalState state, ForceWalks walks, NeighbourLists lists, NearNotes notes) {
+  const TeamSeat team = team_seat<Lanes>();
+  const ForceSeat seat = force_seat(view, walks, team.member);
+  const std::uint32_t s = seat.s, lane = team.lane;
+  const bool active = seat.active;
   ForceSum sum = zero_force_sum();
   // A team's lane visits the list of its last rebuild (density_kernel) instead of walking its share
   // of the 27 cells again; one lane alone (large scenes) has no lists (density_kernel) and walks,
   // a fluid particle over the near notes its density walk took, when the pass has them.
   // Neither walks for a rigid or deformable particle with no other body within h: its sums are zero.
   constexpr bool kTeam = Lanes > 1;
-  const std::uint32_t list = blockIdx.x * blockDim.x + threadIdx.x;
+  const std::uint32_t list = s * Lanes + lane;
   ForceParticle particle{};
   std::uint32_t i = 0;  // canonical index, loaded before the sum so that the leap-frog does not wait for it
   if (active) {
     i = view.id[s];
     particle = load_force_particle(view, s);
-    if (may_feel_forces(particle.parameters, near_other_body[s] != 0)) {
+    if (seat.walks) {
       if constexpr (kTeam) {
         sum = force_sum_listed<FullStress>(view, particle, lane, Lanes, lists, list);
       } else {
@@ -323,11 +324,14 @@ void launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned tea
 void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team_lanes, const NearNotes& notes,
                       cudaStream_t stream) {
   const std::size_t n = state.position.size();
+  const ForceWalks walks = force_walks(state);
+  if (walks.contact_capacity > 0)
+    cuda_check(cudaMemsetAsync(walks.contact_taken, 0, sizeof(std::uint32_t), stream), "clear the contact order");
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
     density_kernel<L><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
-        sorted_view(scene, state), state.volume_pressure.data(), state.near_other_body.data(), team_lists(state, L),
-        state.list_refresh.data(), list_skin(scene.step.smoothing.h).record_radius2, notes);
+        sorted_view(scene, state), state.volume_pressure.data(), walks, team_lists(state, L), state.list_refresh.data(),
+        list_skin(scene.step.smoothing.h).record_radius2, notes);
     if (scene.full_stress_viscosity) {
       velocity_gradient_kernel<L><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
           sorted_view(scene, state), state.velocity_gradient.data(), team_lists(state, L));
@@ -337,16 +341,17 @@ void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team
 
 void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_lanes, const NearNotes& notes,
                    cudaStream_t stream) {
-  const std::size_t n = state.position.size();
+  const ForceWalks walks = force_walks(state);
+  const std::size_t teams = state.position.size() + walks.contact_capacity;
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
     const SortedView view = sorted_view(scene, state);
     if (scene.full_stress_viscosity) {
-      forces_kernel<L, true><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
-          view, canonical_state(state), state.near_other_body.data(), team_lists(state, L), notes);
+      forces_kernel<L, true><<<blocks_for(teams * L, kSumBlock), kSumBlock, 0, stream>>>(
+          view, canonical_state(state), walks, team_lists(state, L), notes);
     } else {
-      forces_kernel<L, false><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
-          view, canonical_state(state), state.near_other_body.data(), team_lists(state, L), notes);
+      forces_kernel<L, false><<<blocks_for(teams * L, kSumBlock), kSumBlock, 0, stream>>>(
+          view, canonical_state(state), walks, team_lists(state, L), notes);
     }
   });
 }

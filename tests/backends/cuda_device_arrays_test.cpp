@@ -96,6 +96,7 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   std::size_t body_chunks = 0;
   std::size_t rigid_bodies = 0;
   std::size_t deformable_particles = 0;
+  std::size_t rigid_particles = 0;
   for (const BodySetup& body : setup.bodies) {
     body_chunks += chunks_of(body.count);
     if (body.moves_as_rigid_body()) {
@@ -104,6 +105,7 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
       ++rigid_bodies;
     }
     if (body.kind == BodyKind::deformable) deformable_particles += body.count;
+    if (body.kind == BodyKind::rigid) rigid_particles += body.count;
   }
   ASSERT_EQ(deformables, deformable_particles);
   const std::vector<ListedArray> listed = listed_arrays(scene, chunks, kGridBlocks, kTeamLanes);
@@ -111,7 +113,8 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   ASSERT_GT(rigid_bodies, 0u);
   EXPECT_EQ(bytes_of(listed, "rest_offset"), n * 16);
   EXPECT_EQ(bytes_of(listed, "sorted_id"), n * 4);
-  EXPECT_EQ(bytes_of(listed, "near_other_body"), n);
+  EXPECT_EQ(bytes_of(listed, "force_walk"), n);
+  EXPECT_EQ(bytes_of(listed, "contact_order"), 0u);
   EXPECT_EQ(bytes_of(listed, "cell_start"), (cells + 1) * 4);
   EXPECT_EQ(bytes_of(listed, "cell_middle"), (cells + 1) * 4);
   EXPECT_EQ(bytes_of(listed, "elastic_force"), n * 16);
@@ -121,6 +124,14 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   EXPECT_EQ(bytes_of(listed, "bond_count"), deformables * 4);
   EXPECT_EQ(bytes_of(listed, "bond_neighbour"), scene.bond_neighbour.size() * 4);
   EXPECT_EQ(bytes_of(listed, "rest"), deformables * 16);
+  // One lane a particle keeps no lists but a contact order with places for a quarter of the rigid
+  // and deformable particles (contact_order.hpp).
+  ASSERT_GT(rigid_particles, 0u);
+  const std::vector<ListedArray> one_lane = listed_arrays(scene, chunks, kGridBlocks, 1);
+  EXPECT_EQ(bytes_of(one_lane, "contact_order"), (rigid_particles + deformables + 3) / 4 * 4);
+  EXPECT_EQ(bytes_of(one_lane, "contact_taken"), 4u);
+  EXPECT_EQ(bytes_of(one_lane, "force_walk"), n);
+  EXPECT_EQ(bytes_of(one_lane, "list_count"), 0u);
   EXPECT_EQ(bytes_of(listed, "list_count"), n * kTeamLanes * 4);
   EXPECT_EQ(bytes_of(listed, "list_index"), n * kTeamLanes * kernels::team_list_capacity(kTeamLanes) * 4);
   EXPECT_EQ(bytes_of(listed, "correction"), deformables * sizeof(kernels::Mat3));
@@ -184,8 +195,10 @@ TEST_F(DeviceArraysTest, OnlyScenesWithRigidBodiesHoldRestOffsets) {
 TEST_F(DeviceArraysTest, OnlyTeamsKeepNeighbourLists) {
   const FloatScene listing = kernels::make_float_scene_with_list_cells(setup);
   const std::size_t n = setup.size();
-  const std::size_t one_lane = kernels::device_array_sizes(listing, chunks, kGridBlocks, 1).total_bytes;
   const std::vector<ListedArray> listed = listed_arrays(listing, chunks, kGridBlocks, 1);
+  // Less the contact order, which teams do not keep.
+  const std::size_t one_lane = kernels::device_array_sizes(listing, chunks, kGridBlocks, 1).total_bytes -
+                               bytes_of(listed, "contact_order") - bytes_of(listed, "contact_taken");
   for (const char* name : {"list_count", "list_index", "list_origin", "list_trigger2", "list_refresh"}) {
     EXPECT_EQ(bytes_of(listed, name), 0u) << name;
   }

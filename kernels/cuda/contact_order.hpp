@@ -1,0 +1,48 @@
+#pragma once
+// Which particles' force sums walk, and in what order the force pass takes them. A rigid or
+// deformable particle's sums walk only with another body within h of it (may_feel_forces); in cell
+// order those lie in the few cells along a contact, one or two to a warp, and a warp walks as long
+// as its longest walk. The density pass, which finds each particle's nearest other body, records a
+// byte a particle (ForceWalk) and, with one lane a particle, gives the walking rigid and deformable
+// particles places in the contact order, as many as it holds; the force pass serves the particles
+// in cell order, less those with a place, and then the contact order's, 32 walking particles to a
+// warp. Teams of lanes share each particle's walk over its neighbour list: a tally and an atomic
+// add a warp would cost the small scenes they serve more than their contact layers' walks, and
+// they keep no contact order. No CUDA here, so the arrays' sizes are counted without a GPU.
+#include "../common/float_scene.hpp"
+#include "../common/fluid_physics.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+
+namespace mssph::kernels {
+
+// What the density pass records of a sorted particle for the force pass.
+enum ForceWalk : std::uint8_t {
+  kNoWalk = 0,              // its sums are zero (may_feel_forces)
+  kWalkInCellOrder = 1,     // the force pass serves it in cell order
+  kWalkInContactOrder = 2,  // it holds a place in the contact order, which serves it
+};
+
+// The density pass's record, for the force pass.
+struct ForceWalks {
+  std::uint8_t* walk = nullptr;            // per sorted particle: ForceWalk
+  std::uint32_t* contact_order = nullptr;  // `contact_capacity` places: sorted particle indices
+  std::uint32_t* contact_taken = nullptr;  // places asked for this step, zero before the density pass
+  std::uint32_t contact_capacity = 0;
+};
+
+// The contact order's places with `team_lanes` lanes a particle: none for teams; with one lane, a
+// quarter of the scene's rigid and deformable particles (those that take their own body at rest,
+// as record_force_walk asks). Inside a large block nearly all of them walk nothing, and a place
+// for each would take the deformable 1M block past its memory target; a walking particle beyond
+// the capacity walks in cell order.
+inline std::size_t contact_order_capacity(const FloatScene& scene, unsigned team_lanes) {
+  if (team_lanes > 1) return 0;
+  const auto bodies = static_cast<std::size_t>(std::count_if(
+      scene.body.begin(), scene.body.end(), [&](std::uint32_t b) { return takes_own_body_at_rest(scene.bodies[b]); }));
+  return (bodies + 3) / 4;
+}
+
+}  // namespace mssph::kernels
