@@ -35,9 +35,9 @@ struct ForceWalks {
 
 // The contact order's places with `team_lanes` lanes a particle: none for teams; with one lane, a
 // quarter of the scene's rigid and deformable particles (those that take their own body at rest,
-// as record_force_walk asks). Inside a large block nearly all of them walk nothing, and a place
-// for each would take the deformable 1M block past its memory target; a walking particle beyond
-// the capacity walks in cell order.
+// as record_force_walk asks). Inside a large block nearly all of them walk nothing, and 4 bytes
+// for each beside the ForceWalk byte would take the deformable 1M block just past its memory
+// target; a walking particle beyond the capacity walks in cell order.
 inline std::size_t contact_order_capacity(const FloatScene& scene, unsigned team_lanes) {
   if (team_lanes > 1) return 0;
   const auto bodies = static_cast<std::size_t>(std::count_if(

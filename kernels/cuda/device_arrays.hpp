@@ -146,8 +146,8 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
   visit("volume_pressure", a.volume_pressure, Filled<VolumePressure>{n, VolumePressure{0, 0}});
   // The velocity-gradient pass writes every particle's, after the density pass and before the force pass.
   visit("velocity_gradient", a.velocity_gradient, Uninitialised{scene.full_stress_viscosity ? n : 0});
-  // The density pass writes every particle's walk, and the places it takes after the step clears
-  // the count.
+  // The density pass writes every particle's walk, and the places it takes after launch_densities
+  // clears the count.
   visit("force_walk", a.force_walk, Uninitialised{n});
   const std::size_t contact_capacity = contact_order_capacity(scene, team_lanes);
   visit("contact_order", a.contact_order, Uninitialised{contact_capacity});
