@@ -1,6 +1,6 @@
 #pragma once
 // The contact order's device side (contact_order.hpp): the density pass records each particle's
-// ForceWalk (record_force_walk), the force pass seats its teams by it (force_seat).
+// ForceWalk and takes the places (record_force_walk).
 #include "../common/fluid_physics.hpp"
 #include "contact_order.hpp"
 
@@ -26,29 +26,8 @@ __device__ inline void record_force_walk(const ForceWalks& walks, const SortedVi
     if (asks) place = min(first + __popc(asking & ((1u << lane) - 1u)), walks.contact_capacity);
   }
   if (!active) return;
-  const bool placed = place < walks.contact_capacity;
-  if (placed) walks.contact_order[place] = s;
-  walks.walk[s] = !near_other_body ? kNoWalk : placed ? kWalkInContactOrder : kWalkInCellOrder;
-}
-
-// The particle a force-pass team serves: team `member` below the particle count serves sorted
-// particle `member` unless it holds a place in the contact order; the teams after them serve the
-// places taken. `walks`: whether its force sums may be anything but zero (may_feel_forces).
-struct ForceSeat {
-  std::uint32_t s;
-  bool active;
-  bool walks;
-};
-__device__ inline ForceSeat force_seat(const SortedView& view, const ForceWalks& walks, std::uint32_t member) {
-  const std::uint32_t n = view.step.particle_count;
-  if (member < n) {
-    const std::uint8_t walk = walks.walk[member];
-    return {member, walk != kWalkInContactOrder,
-            may_feel_forces(view.bodies[body_of(view.position[member])], walk != kNoWalk)};
-  }
-  const std::uint32_t place = member - n;
-  if (place >= walks.contact_capacity || place >= *walks.contact_taken) return {0, false, false};
-  return {walks.contact_order[place], true, true};
+  if (place < walks.contact_capacity) walks.contact_order[place] = s;
+  walks.walk[s] = force_walk_of(near_other_body, place, walks.contact_capacity);
 }
 
 }  // namespace mssph::kernels

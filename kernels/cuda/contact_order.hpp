@@ -8,7 +8,8 @@
 // in cell order, less those with a place, and then the contact order's, 32 walking particles to a
 // warp. Teams of lanes share each particle's walk over its neighbour list: a tally and an atomic
 // add a warp would cost the small scenes they serve more than their contact layers' walks, and
-// they keep no contact order. No CUDA here, so the arrays' sizes are counted without a GPU.
+// they keep no contact order. No CUDA here, so the arrays' sizes and the force pass's seats are
+// checked without a GPU (contact_order_test).
 #include "../common/float_scene.hpp"
 #include "../common/fluid_physics.hpp"
 
@@ -32,6 +33,32 @@ struct ForceWalks {
   std::uint32_t* contact_taken = nullptr;  // places asked for this step, zero before the density pass
   std::uint32_t contact_capacity = 0;
 };
+
+// The walk of a particle with or without another body within h, given place `place` of the
+// contact order (`capacity` or beyond: none).
+MSSPH_HD ForceWalk force_walk_of(bool near_other_body, std::uint32_t place, std::uint32_t capacity) {
+  return !near_other_body ? kNoWalk : place < capacity ? kWalkInContactOrder : kWalkInCellOrder;
+}
+
+// The particle a force-pass team serves: team `member` below the particle count serves sorted
+// particle `member` unless it holds a place in the contact order; the teams after them serve the
+// places taken. `walks`: whether its force sums may be anything but zero (may_feel_forces).
+struct ForceSeat {
+  std::uint32_t s;
+  bool active;
+  bool walks;
+};
+MSSPH_HD ForceSeat force_seat(const SortedView& view, const ForceWalks& walks, std::uint32_t member) {
+  const std::uint32_t n = view.step.particle_count;
+  if (member < n) {
+    const std::uint8_t walk = walks.walk[member];
+    return {member, walk != kWalkInContactOrder,
+            may_feel_forces(view.bodies[body_of(view.position[member])], walk != kNoWalk)};
+  }
+  const std::uint32_t place = member - n;
+  if (place >= walks.contact_capacity || place >= *walks.contact_taken) return {0, false, false};
+  return {walks.contact_order[place], true, true};
+}
 
 // The contact order's places with `team_lanes` lanes a particle: none for teams; with one lane, a
 // quarter of the scene's rigid and deformable particles (those that take their own body at rest,
