@@ -17,7 +17,7 @@ __device__ inline void record_force_walk(const ForceWalks& walks, const SortedVi
                                          bool near_other_body) {
   std::uint32_t place = walks.contact_capacity;  // none
   if (walks.contact_capacity > 0) {
-    const bool asks = active && near_other_body && takes_own_body_at_rest(view.bodies[body_of(view.position[s])]);
+    const bool asks = active && asks_contact_place(view.bodies[body_of(view.position[s])], near_other_body);
     const std::uint32_t lane = threadIdx.x % 32u;
     const std::uint32_t asking = __ballot_sync(0xffffffffu, asks);
     std::uint32_t first = 0;

@@ -34,6 +34,12 @@ struct ForceWalks {
   std::uint32_t contact_capacity = 0;
 };
 
+// Whether a particle of `body` asks the density pass for a place in the contact order: a rigid or
+// deformable one (those that take their own body at rest) with another body within h.
+MSSPH_HD bool asks_contact_place(const BodyParameters& body, bool near_other_body) {
+  return near_other_body && takes_own_body_at_rest(body);
+}
+
 // The walk of a particle with or without another body within h, given place `place` of the
 // contact order (`capacity` or beyond: none).
 MSSPH_HD ForceWalk force_walk_of(bool near_other_body, std::uint32_t place, std::uint32_t capacity) {
@@ -62,7 +68,7 @@ MSSPH_HD ForceSeat force_seat(const SortedView& view, const ForceWalks& walks, s
 
 // The contact order's places with `team_lanes` lanes a particle: none for teams; with one lane, a
 // quarter of the scene's rigid and deformable particles (those that take their own body at rest,
-// as record_force_walk asks). Inside a large block nearly all of them walk nothing, and 4 bytes
+// as asks_contact_place asks). Inside a large block nearly all of them walk nothing, and 4 bytes
 // for each beside the ForceWalk byte would take the deformable 1M block just past its memory
 // target; a walking particle beyond the capacity walks in cell order.
 inline std::size_t contact_order_capacity(const FloatScene& scene, unsigned team_lanes) {

@@ -30,7 +30,7 @@ struct DensityPassRecords {
       : walk(v.step.particle_count), order(capacity) {
     std::vector<std::uint32_t> asking;
     for (std::uint32_t s = 0; s < v.step.particle_count; ++s) {
-      if (near[s] && kernels::takes_own_body_at_rest(v.bodies[kernels::body_of(v.position[s])])) asking.push_back(s);
+      if (kernels::asks_contact_place(v.bodies[kernels::body_of(v.position[s])], near[s])) asking.push_back(s);
     }
     std::shuffle(asking.begin(), asking.end(), random);
     std::vector<std::uint32_t> place(v.step.particle_count, capacity);
