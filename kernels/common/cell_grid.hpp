@@ -164,7 +164,7 @@ struct CellRanges {
   const std::uint32_t* cell_start;  // cell_count() + 1 entries
   // For each non-empty cell, the body all its particles belong to, else kMixedCell (empty cells'
   // entries are stale): lets a walk leave out the rows of cells that hold nothing but one body.
-  // Null where no walk does (scenes without rigid or deformable bodies, the host).
+  // Null where no walk does (scenes of fluid alone, the host).
   const std::uint16_t* cell_body = nullptr;
   // Where the grids (GPU and host) split each cell along x (GridShape::in_upper_half): cell k's
   // particles of the lower half are [cell_start[k], cell_middle[k]), of the upper half

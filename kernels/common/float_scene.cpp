@@ -46,17 +46,21 @@ double body_particle_mass(const ParticleSetup& setup, const BodySetup& body) {
   return m;
 }
 
-// The own-body number densities at rest of rigid and deformable particles and the rest bonds,
-// volumes, corrections and Lame parameters of deformable bodies, computed once in double by the
-// model's rest-state builder, so every backend starts from the same rest configuration.
+// The own-body number densities at rest of rigid, deformable and boundary particles and the rest
+// bonds, volumes, corrections and Lame parameters of deformable bodies, computed once in double by
+// the model's rest-state builder, so every backend starts from the same rest configuration.
 void add_rest_state(const ParticleSetup& setup, FloatScene& scene) {
   bool any = false;
   for (const BodySetup& b : setup.bodies) any = any || has_own_rest_number_density(b.kind);
   if (!any) return;
   const DeformableRestState rest = build_deformable_rest_state(setup);
-  scene.own_rest_number_density.reserve(setup.size());
-  for (const double delta : rest.own_rest_number_density)
-    scene.own_rest_number_density.push_back(static_cast<float>(delta));
+  for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
+    const BodySetup& body = setup.bodies[b];
+    if (!has_own_rest_number_density(body.kind)) continue;
+    scene.bodies[b].own_rest_offset = static_cast<std::uint32_t>(body.first - scene.own_rest_number_density.size());
+    for (std::size_t i = body.first; i < body.first + body.count; ++i)
+      scene.own_rest_number_density.push_back(static_cast<float>(rest.own_rest_number_density[i]));
+  }
   std::vector<std::vector<std::uint32_t>> neighbours_of;  // per deformable particle
   for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
     const BodySetup& body = setup.bodies[b];

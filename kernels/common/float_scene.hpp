@@ -45,9 +45,10 @@ struct FloatScene {
   std::vector<std::uint32_t> bond_neighbour;  // canonical indices
   std::vector<Vec4> rest;                     // per deformable particle: X_i in the kernels' frame [m], w: V0_i [m^3]
   std::vector<Mat3> correction;               // per deformable particle: L_i, the kernel-gradient correction
-  // Canonical order, all n particles: the own-body number density at rest of a rigid or deformable
-  // particle (model/deformable_rest_state.hpp; fluid_physics.hpp, takes_own_body_at_rest), 0 for
-  // other kinds [1/m^3]; empty without rigid or deformable bodies.
+  // The own-body number density at rest [1/m^3] of each particle of a rigid, deformable or boundary
+  // body (model/deformable_rest_state.hpp; fluid_physics.hpp, takes_own_body_at_rest), in canonical
+  // order with the fluid particles left out: particle i's at i less its body's own_rest_offset;
+  // empty without such bodies.
   std::vector<float> own_rest_number_density;
 
   Vec3 to_kernel_frame(const Eigen::Vector3d& world) const {

@@ -35,10 +35,11 @@ namespace mssph::kernels {
 
 struct DensitySum {
   float delta;  // number density sum_j W_spiky(|x_i - x_j|) [1/m^3]
-  // A rigid or deformable particle's squared distance to the nearest candidate of another body
-  // [m^2], +infinity without one: whether one lies within h decides whether its force sums can be
-  // anything but zero (may_feel_forces). A fluid or boundary particle's walk does not look, as
-  // its force pass never skips: 0.
+  // The squared distance from a particle that takes its own body at rest to the nearest candidate
+  // of another body [m^2], +infinity without one: for a rigid or deformable particle, whether one
+  // lies within h decides whether its force sums can be anything but zero (may_feel_forces); a
+  // boundary particle receives no forces. A fluid particle's walk does not look, as its force pass
+  // never skips: 0.
   float nearest_other_body2;
 };
 
@@ -58,17 +59,16 @@ MSSPH_HD float add_density_pair(DensitySum& sum, const SortedView& v, Vec3 x_i, 
 // A particle whose density takes its own body's share at rest (own_rest_number_density) and sums
 // only the other bodies' neighbours live: a deformable particle, which reads the density of its
 // contact layer (model/deformable_rest_state.hpp, reads_contact_layer_density, says why), and a
-// rigid particle, whose share at rest is its live share, as its body's particles keep their
-// distances, so its walks need not visit its own body (body_left_out). The reference sums a rigid
-// body's share live (compute_densities): the agreement tests hold the two against each other.
-MSSPH_HD bool takes_own_body_at_rest(const BodyParameters& body) {
-  return body.kind == kDeformable || body.kind == kRigid;
-}
+// rigid or boundary particle, whose share at rest is its live share, as its body's particles keep
+// their distances (boundary particles never move), so its walks need not visit its own body
+// (body_left_out). The reference sums rigid and boundary bodies' shares live (compute_densities):
+// the agreement tests hold the two against each other.
+MSSPH_HD bool takes_own_body_at_rest(const BodyParameters& body) { return body.kind != kFluid; }
 
 // The body whose rows of cells a particle's density walk leaves out (CellRanges::for_each_range):
-// a rigid or deformable particle's own, whose pairs add nothing to its sum (taken at rest);
-// kNoBody for the others. Inside a large block every row is its own body's, and its particles
-// walk nothing. The force walk leaves out nothing: inside a body it is skipped whole
+// a rigid, deformable or boundary particle's own, whose pairs add nothing to its sum (taken at
+// rest); kNoBody for a fluid one. Inside a large block or a thick wall every row is its own body's,
+// and its particles walk nothing. The force walk leaves out nothing: inside a body it is skipped whole
 // (may_feel_forces), and near another body the cell checks cost more than the rows they save.
 MSSPH_HD std::uint32_t body_left_out(const BodyParameters& body, std::uint32_t body_index) {
   return takes_own_body_at_rest(body) ? body_index : kNoBody;
@@ -107,7 +107,7 @@ MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candi
       sum.nearest_other_body2 = std::fmin(sum.nearest_other_body2, r2);
       considered(t, r2);
     });
-  } else {  // fluid and boundary particles, whose force pass never skips: no nearest other body
+  } else {  // fluid particles, whose force pass never skips: no nearest other body
     candidates([&](std::uint32_t t) { considered(t, add_density_pair(sum, v, x_i, t)); });
   }
   return sum;
@@ -120,12 +120,17 @@ MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candi
 // Whether a particle's one-lane walks take near notes when the pass has them: a fluid particle's.
 MSSPH_HD bool takes_near_notes(const BodyParameters& body) { return body.kind == kFluid; }
 
-// The density sum of fluid or boundary particle s in one lane (canonical index i), over density_sum's
-// walk (none of their rows is left out) a segment at a time (CellRanges::for_each_segment): the same
-// candidates in the same order, so the same bits. A fluid particle notes which candidates lie within
-// h (NearNotes, when `notes` are taken). A boundary particle, which receives no forces, notes nothing,
-// but walks the same way: the lanes of a warp that holds both, near the walls, run one walk
-// together.
+// Whose one-lane density walks may go a segment at a time (density_sum_noting_near): fluid
+// particles', and boundary particles' whose warp holds a fluid one, so that the warp's lanes walk
+// together (kernels/cuda/step_kernels.cu, walks_by_segments).
+MSSPH_HD bool may_walk_by_segments(const BodyParameters& body) { return body.kind == kFluid || body.kind == kBoundary; }
+
+// The live density sum of fluid or boundary particle s in one lane (canonical index i), its own
+// body included, over density_sum's walk with no rows left out, a segment at a time
+// (CellRanges::for_each_segment): the same candidates in the same order as density_sum's for a
+// fluid particle, so the same bits. A fluid particle notes which candidates lie within h
+// (NearNotes, when `notes` are taken). A boundary particle, which receives no forces, notes
+// nothing, and its sum holds its own body live (density_from's own_body_summed).
 MSSPH_HD DensitySum density_sum_noting_near(const SortedView& v, std::uint32_t s, std::uint32_t i,
                                             const NearNotes& notes) {
   const Vec4 p_i = v.position[s];
@@ -195,8 +200,8 @@ MSSPH_HD DensitySum density_sum_listed(const SortedView& v, std::uint32_t s, std
 // the same terms in the same order as the walk, so the same bits. The walk that only records
 // issues fewer instructions a candidate than one that also sums, and the list it then reads is
 // short. The force pass of this step and the passes of the steps until the next rebuild visit the
-// list too (force_sum_listed, density_sum_listed): a rigid or deformable particle's own body is
-// not listed, which its density takes at rest and which adds nothing to its force sum
+// list too (force_sum_listed, density_sum_listed): a rigid, deformable or boundary particle's own
+// body is not listed, which its density takes at rest and which adds nothing to its force sum
 // (add_force_pair: no pressure or viscosity within such a body).
 MSSPH_HD DensitySum density_sum_recording(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
                                           std::uint32_t left_out, const NeighbourLists& lists, std::uint32_t list,
@@ -229,11 +234,13 @@ MSSPH_HD DensitySum density_sum_keeping_within(const SortedView& v, const Neighb
   return sum;
 }
 
-// The number density behind particle s's pressure from its live sum: a rigid or deformable
-// particle adds its own body's share at rest, every other particle reads its sum as it is.
-MSSPH_HD float number_density_of(const DensitySum& sum, const SortedView& v, std::uint32_t s) {
-  if (!takes_own_body_at_rest(v.bodies[body_of(v.position[s])])) return sum.delta;
-  return sum.delta + v.own_rest_number_density[v.id[s]];
+// The number density behind particle s's pressure from its live sum: a particle that takes its own
+// body at rest adds that share, unless its sum holds its own body live (own_body_summed: a boundary
+// particle's walk by segments); a fluid particle reads its sum as it is.
+MSSPH_HD float number_density_of(const DensitySum& sum, const SortedView& v, std::uint32_t s, bool own_body_summed) {
+  const BodyParameters& body = v.bodies[body_of(v.position[s])];
+  if (own_body_summed || !takes_own_body_at_rest(body)) return sum.delta;
+  return sum.delta + v.own_rest_number_density[v.id[s] - body.own_rest_offset];
 }
 
 // Paper eq. 1 read as a number density (Solenthaler and Pajarola 2008): rho_i = rho0 delta_i / delta0
@@ -254,9 +261,11 @@ struct DensityResult {
   VolumePressure volume_pressure;
 };
 
-MSSPH_HD DensityResult density_from(const DensitySum& sum, const SortedView& v, std::uint32_t s) {
+MSSPH_HD DensityResult density_from(const DensitySum& sum, const SortedView& v, std::uint32_t s,
+                                    bool own_body_summed = false) {
   const BodyParameters& body = v.bodies[body_of(v.position[s])];
-  const float rho = density(body.rest_density, number_density_of(sum, v, s), v.step.inverse_rest_number_density);
+  const float rho =
+      density(body.rest_density, number_density_of(sum, v, s, own_body_summed), v.step.inverse_rest_number_density);
   return {rho, {body.sph_mass / rho, equation_of_state(body.pressure_stiffness, rho, body.rest_density)}};
 }
 

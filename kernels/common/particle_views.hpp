@@ -23,6 +23,9 @@ struct BodyParameters {
   float rest_density;         // rho0 [kg/m^3]
   float pressure_stiffness;   // k [m^2/s^2]
   float viscosity;            // mu [Pa s]
+  // Where its particles' own-body number densities at rest lie (SortedView::own_rest_number_density):
+  // canonical index less this, the particles before the body that hold none; 0 for a fluid body.
+  std::uint32_t own_rest_offset;
 };
 
 struct StepParameters {
@@ -87,9 +90,10 @@ struct SortedView {
   const Vec4* velocity;                   // sorted: xyz [m/s], w the position carry
   const std::uint32_t* id;                // sorted -> canonical index
   const VolumePressure* volume_pressure;  // sorted, written by the density pass
-  // Canonical: a rigid or deformable particle's own-body number density at rest [1/m^3], the part
-  // of its density its walks do not sum (fluid_physics.hpp, takes_own_body_at_rest); null without
-  // rigid or deformable bodies.
+  // Canonical order, the particles of the bodies that take their own body at rest
+  // (fluid_physics.hpp, takes_own_body_at_rest) alone, at their index less their body's
+  // own_rest_offset: the own-body number density at rest [1/m^3], the part of a density its walks
+  // do not sum; null without such bodies.
   const float* own_rest_number_density;
   // Sorted: each fluid particle's corrected velocity gradient A_i for the full_stress viscosity
   // (fluid_physics.hpp, VelocityGradientSums), zero for the others; null under the paper's eq. 3.

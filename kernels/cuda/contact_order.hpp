@@ -34,10 +34,17 @@ struct ForceWalks {
   std::uint32_t contact_capacity = 0;
 };
 
-// Whether a particle of `body` asks the density pass for a place in the contact order: a rigid or
-// deformable one (those that take their own body at rest) with another body within h.
+// Whether the particles of `body` may walk in the contact order: rigid and deformable ones, which
+// receive forces and take their own body at rest, so their force sums walk only with another body
+// within h (may_feel_forces).
+MSSPH_HD bool may_take_contact_place(const BodyParameters& body) {
+  return receives_forces(body) && takes_own_body_at_rest(body);
+}
+
+// Whether a particle of `body` asks the density pass for a place in the contact order: one that
+// may take a place, with another body within h.
 MSSPH_HD bool asks_contact_place(const BodyParameters& body, bool near_other_body) {
-  return near_other_body && takes_own_body_at_rest(body);
+  return near_other_body && may_take_contact_place(body);
 }
 
 // The walk of a particle with or without another body within h, given place `place` of the
@@ -67,14 +74,14 @@ MSSPH_HD ForceSeat force_seat(const SortedView& view, const ForceWalks& walks, s
 }
 
 // The contact order's places with `team_lanes` lanes a particle: none for teams; with one lane, a
-// quarter of the scene's rigid and deformable particles (those that take their own body at rest,
-// as asks_contact_place asks). Inside a large block nearly all of them walk nothing, and 4 bytes
-// for each beside the ForceWalk byte would take the deformable 1M block just past its memory
-// target; a walking particle beyond the capacity walks in cell order.
+// quarter of the scene's rigid and deformable particles (may_take_contact_place). Inside a large
+// block nearly all of them walk nothing, and 4 bytes for each beside the ForceWalk byte would take
+// the deformable 1M block just past its memory target; a walking particle beyond the capacity
+// walks in cell order.
 inline std::size_t contact_order_capacity(const FloatScene& scene, unsigned team_lanes) {
   if (team_lanes > 1) return 0;
   const auto bodies = static_cast<std::size_t>(std::count_if(
-      scene.body.begin(), scene.body.end(), [&](std::uint32_t b) { return takes_own_body_at_rest(scene.bodies[b]); }));
+      scene.body.begin(), scene.body.end(), [&](std::uint32_t b) { return may_take_contact_place(scene.bodies[b]); }));
   return (bodies + 3) / 4;
 }
 

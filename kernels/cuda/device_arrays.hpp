@@ -44,7 +44,7 @@ struct DeviceArrays {
   Array<std::uint8_t> fixed;
   // The neighbour grid and the cell-ordered copies.
   Array<std::uint32_t> keys, unordered_id, sorted_id, cell_count, cell_start, cell_middle;
-  Array<std::uint16_t> cell_body;  // CellRanges::cell_body; empty without rigid or deformable bodies
+  Array<std::uint16_t> cell_body;  // CellRanges::cell_body; empty in a scene of fluid alone
   Array<Vec4> sorted_position, sorted_velocity;
   Array<VolumePressure> volume_pressure;
   Array<Mat3> velocity_gradient;  // sorted; empty unless viscosity_model is full_stress

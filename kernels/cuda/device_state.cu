@@ -59,7 +59,7 @@ DeviceState allocate_device_state(const FloatScene& scene, const ChunkTables& ch
   return state;
 }
 
-// cell_body and own_rest_number_density are empty, so null, without rigid or deformable bodies;
+// cell_body and own_rest_number_density are empty, so null, in a scene of fluid alone;
 // velocity_gradient unless the viscosity is full_stress.
 SortedView sorted_view(const FloatScene& scene, const DeviceState& state) {
   return SortedView{scene.step,

@@ -137,15 +137,14 @@ constexpr int density_threads_per_multiprocessor(unsigned lanes) { return lanes 
 
 // Whether particle s's one-lane density walk goes a segment at a time (density_sum_noting_near):
 // a fluid particle's, which notes its near candidates when the pass has notes, and a boundary
-// particle's whose warp holds one, so that the warp's lanes walk together; the walk is the plain
-// one's, candidate for candidate, so either gives the same bits. Boundary particles whose warp
-// holds no fluid one (a container's walls beside a rigid or deformable block) have nothing to note
-// and walk the plain way.
+// particle's whose warp holds one, so that the warp's lanes walk together; for a fluid particle the
+// walk is the plain one's, candidate for candidate, so either gives the same bits. Boundary
+// particles whose warp holds no fluid one (inside a wall, or beside a rigid or deformable block),
+// like rigid and deformable ones, walk the plain way, leaving out the cells of their own body.
 __device__ bool walks_by_segments(const SortedView& view, std::uint32_t s, const NearNotes& notes) {
   if (!notes.taken()) return false;
   const BodyParameters& body = view.bodies[body_of(view.position[s])];
-  const bool notes_near = takes_near_notes(body);
-  return !takes_own_body_at_rest(body) && __any_sync(__activemask(), notes_near);
+  return may_walk_by_segments(body) && __any_sync(__activemask(), takes_near_notes(body));
 }
 
 // A team's lane, on a step that rebuilt the grid, records the candidates of its share within
@@ -165,6 +164,7 @@ __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
   DensitySum sum{0.0f, 0.0f};
+  bool own_body_summed = false;
   if (active) {
     if constexpr (Lanes > 1) {
       const std::uint32_t list = blockIdx.x * blockDim.x + threadIdx.x;
@@ -176,13 +176,14 @@ __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(
       }
     } else if (walks_by_segments(view, s, notes)) {
       sum = density_sum_noting_near(view, s, view.id[s], notes);
+      own_body_summed = true;
     } else {
       sum = density_sum(view, s, lane, Lanes, cells_left_out_by_warp(view, s));
     }
   }
   sum.delta = team_sum<Lanes>(sum.delta);
   sum.nearest_other_body2 = team_min<Lanes>(sum.nearest_other_body2);
-  if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s).volume_pressure;
+  if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s, own_body_summed).volume_pressure;
   record_force_walk(walks, view, s, active && lane == 0, sum.nearest_other_body2 < view.step.smoothing.h2);
 }
 

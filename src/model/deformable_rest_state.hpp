@@ -62,13 +62,12 @@ struct DeformableRestState {
 inline bool reads_contact_layer_density(BodyKind kind) { return kind == BodyKind::deformable; }
 
 // Whose own-body number density share at rest the rest state holds: a deformable particle's, the
-// frozen part of its contact layer's density, and a rigid particle's, which equals its live share
-// (see above). The float backends take both from here, so the walks of rigid particles, like those
-// of deformable ones, need not visit their own body (kernels/common/fluid_physics.hpp,
-// takes_own_body_at_rest); the reference sums a rigid body's share live.
-inline bool has_own_rest_number_density(BodyKind kind) {
-  return kind == BodyKind::deformable || kind == BodyKind::rigid;
-}
+// frozen part of its contact layer's density, and a rigid or boundary particle's, which equals its
+// live share (see above). The float backends take them from here, so the walks of rigid and
+// boundary particles, like those of deformable ones, need not visit their own body
+// (kernels/common/fluid_physics.hpp, takes_own_body_at_rest); the reference sums rigid and boundary
+// bodies' shares live.
+inline bool has_own_rest_number_density(BodyKind kind) { return kind != BodyKind::fluid; }
 
 inline bool is_deformable(const ParticleSetup& setup, std::size_t i) {
   return setup.bodies[setup.body[i]].kind == BodyKind::deformable;

@@ -144,7 +144,7 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
 
 // The count changes exactly by the arrays a scene adds: the same scene without its deformable
 // data loses the deformable arrays' bytes, summed here by hand from their element types; without
-// its own-body densities at rest (a scene of neither rigid nor deformable bodies), it loses those
+// its own-body densities at rest (a scene of fluid alone), it loses those
 // and the cells' bodies (CellRanges::cell_body).
 TEST_F(DeviceArraysTest, DeformableAndRestDensityArraysAddExactlyTheirBytes) {
   FloatScene without = scene;

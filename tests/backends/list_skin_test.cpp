@@ -21,11 +21,11 @@ namespace {
 constexpr std::uint32_t kCapacity = 64;  // holds every list of these tests (asserted)
 
 // What a density or force sum of s must take where the particles stand now, found by testing every
-// particle, no grid, no list: the particles within h, but a deformable particle's own body.
+// particle, no grid, no list: the particles within h, but the own body of one taken at rest.
 std::vector<std::uint32_t> neighbours_by_brute_force(const kernels::SortedView& v, std::uint32_t s) {
   std::vector<std::uint32_t> out;
   for (std::uint32_t t = 0; t < v.step.particle_count; ++t) {
-    if (!own_deformable_body(v, s, t) && within_support(v, s, t)) out.push_back(t);
+    if (!own_body_at_rest(v, s, t) && within_support(v, s, t)) out.push_back(t);
   }
   return out;
 }
@@ -68,7 +68,7 @@ std::vector<std::uint32_t> neighbours_from_lists(const kernels::SortedView& v, c
   std::vector<std::uint32_t> out;
   for (std::uint32_t k = 0; k < host.count[s] && k < kCapacity; ++k) {
     const std::uint32_t t = host.index[std::size_t{s} * kCapacity + k];
-    if (!own_deformable_body(v, s, t) && within_support(v, s, t)) out.push_back(t);
+    if (!own_body_at_rest(v, s, t) && within_support(v, s, t)) out.push_back(t);
   }
   std::sort(out.begin(), out.end());
   return out;
@@ -240,10 +240,10 @@ TEST(ListSkin, ATriggerFiresBeforeAPairComesWithinTheSupportUnlisted) {
   const Vec3 a{0.1f, 0.1f, 0.1f};
   const Vec3 b = a + Vec3{h + 1.002f * skin_width, 0, 0};
   const Vec3 towards_b{1, 0, 0};
-  const kernels::BodyParameters fluid{kernels::kFluid, kernels::kNotRigid, 0, 1000, 100, 1.0f};
-  const kernels::BodyParameters wall{kernels::kBoundary, kernels::kNotRigid, 0, 1000, 100, 0.0f};
-  const kernels::BodyParameters tool{kernels::kRigid, 0, 0, 1000, 100, 1.0f};
-  const kernels::BodyParameters other_tool{kernels::kRigid, 1, 0, 1000, 100, 1.0f};
+  const kernels::BodyParameters fluid{kernels::kFluid, kernels::kNotRigid, 0, 1000, 100, 1.0f, 0};
+  const kernels::BodyParameters wall{kernels::kBoundary, kernels::kNotRigid, 0, 1000, 100, 0.0f, 0};
+  const kernels::BodyParameters tool{kernels::kRigid, 0, 0, 1000, 100, 1.0f, 0};
+  const kernels::BodyParameters other_tool{kernels::kRigid, 1, 0, 1000, 100, 1.0f, 0};
   for (const TwoBodies& scene : {TwoBodies{fluid, fluid, true}, TwoBodies{tool, wall, false},
                                  TwoBodies{tool, fluid, false}, TwoBodies{tool, other_tool, false}}) {
     SCOPED_TRACE(::testing::Message() << "kinds " << scene.a.kind << " and " << scene.b.kind);

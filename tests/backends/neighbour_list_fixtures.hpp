@@ -1,8 +1,8 @@
 #pragma once
 // The neighbour-list tests' particles: a jittered, compressed lattice of three bodies (walls,
-// fluid, a deformable block whose own neighbours the density sum skips) sorted into a grid small
-// enough to wrap, so periodic images share cells with real neighbours; and a GPU team's lists of
-// them, recorded on the host.
+// fluid, a deformable block; the walls' and the block's density sums skip their own body) sorted
+// into a grid small enough to wrap, so periodic images share cells with real neighbours; and a GPU
+// team's lists of them, recorded on the host.
 #include "common/fluid_physics.hpp"
 #include "common/neighbour_list.hpp"
 #include "sorted_particles.hpp"
@@ -52,9 +52,9 @@ class JitteredLattice {
       velocity_.push_back(Vec4{unit(random), unit(random), unit(random), 0.0f});
       volume_pressure_.push_back({dx * dx * dx * (1.0f + 0.1f * unit(random)), 1000.0f * (1.0f + unit(random))});
     }
-    bodies_ = {{kernels::kBoundary, kernels::kNotRigid, 0, 1000, 100, 0.0f},
-               {kernels::kFluid, kernels::kNotRigid, 0, 1000, 100, 1.0f},
-               {block_kind, kernels::kNotRigid, 0, 1000, 100, 2.0f}};
+    bodies_ = {{kernels::kBoundary, kernels::kNotRigid, 0, 1000, 100, 0.0f, 0},
+               {kernels::kFluid, kernels::kNotRigid, 0, 1000, 100, 1.0f, 0},
+               {block_kind, kernels::kNotRigid, 0, 1000, 100, 2.0f, 0}};
     step_.smoothing = kernels::SmoothingKernels::for_support(2.0 * dx);
     step_.inverse_gradient_consistency = 1.0f;
     step_.particle_count = static_cast<std::uint32_t>(particles.size());
@@ -102,11 +102,11 @@ inline bool within_support(const kernels::SortedView& v, std::uint32_t s, std::u
   return closer_than(v, s, t, v.step.smoothing.h2);
 }
 
-// Whether t belongs to a deformable particle s's own body, which s's density sum skips (its
-// contact layer's number density) and its lists leave out.
-inline bool own_deformable_body(const kernels::SortedView& v, std::uint32_t s, std::uint32_t t) {
+// Whether t belongs to the body of s when s takes its own body at rest (a wall or block particle),
+// which s's density sum skips and its lists leave out.
+inline bool own_body_at_rest(const kernels::SortedView& v, std::uint32_t s, std::uint32_t t) {
   const std::uint32_t body_s = kernels::body_of(v.position[s]);
-  return body_s == kDeformableBody && kernels::body_of(v.position[t]) == body_s;
+  return kernels::takes_own_body_at_rest(v.bodies[body_s]) && kernels::body_of(v.position[t]) == body_s;
 }
 
 // Whether two sums have the same bits.

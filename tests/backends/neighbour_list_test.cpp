@@ -44,12 +44,12 @@ std::vector<std::uint32_t> visited(const kernels::SortedView& v, const kernels::
   return out;
 }
 
-// The grid walk's candidates within the support, in its order, but a deformable particle's own
-// body.
+// The grid walk's candidates within the support, in its order, but the own body of a particle
+// that takes it at rest.
 std::vector<std::uint32_t> walk_within_support(const kernels::SortedView& v, std::uint32_t s) {
   std::vector<std::uint32_t> out;
   v.grid.for_each_candidate(kernels::xyz(v.position[s]), [&](std::uint32_t t) {
-    if (within_support(v, s, t) && !own_deformable_body(v, s, t)) out.push_back(t);
+    if (within_support(v, s, t) && !own_body_at_rest(v, s, t)) out.push_back(t);
   });
   return out;
 }
@@ -67,7 +67,7 @@ TEST(NeighbourLists, HoldExactlyTheParticlesWithinTheSupportButTheirOwnBodyInThe
     // Independent of the grid: every particle tested against every other.
     std::vector<std::uint32_t> brute_force;
     for (std::uint32_t t = 0; t < lattice.size(); ++t) {
-      if (within_support(v, s, t) && !own_deformable_body(v, s, t)) brute_force.push_back(t);
+      if (within_support(v, s, t) && !own_body_at_rest(v, s, t)) brute_force.push_back(t);
     }
     std::vector<std::uint32_t> as_set = list;
     std::sort(as_set.begin(), as_set.end());
@@ -157,12 +157,12 @@ TEST(NeighbourLists, TheDensityPassCopyOfAFullListStaysFull) {
 // (list_skin_test.cpp checks them after the particles have moved.)
 
 // Lane `lane`'s share of the walk, filtered as its list must be: the candidates closer than
-// sqrt(radius2), but a deformable particle's own body.
+// sqrt(radius2), but the own body of a particle that takes it at rest.
 std::vector<std::uint32_t> expected_list_entries(const kernels::SortedView& v, std::uint32_t s, std::uint32_t lane,
                                                  std::uint32_t lanes, float radius2) {
   std::vector<std::uint32_t> out;
   v.grid.for_each_candidate(kernels::xyz(v.position[s]), lane, lanes, [&](std::uint32_t t) {
-    if (!own_deformable_body(v, s, t) && closer_than(v, s, t, radius2)) out.push_back(t);
+    if (!own_body_at_rest(v, s, t) && closer_than(v, s, t, radius2)) out.push_back(t);
   });
   return out;
 }
