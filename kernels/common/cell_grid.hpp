@@ -117,19 +117,26 @@ inline constexpr std::uint32_t kNoBody = 0xffffffffu;
 // does not fit 16 bits.
 inline constexpr std::uint16_t kMixedCell = 0xffffu;
 
+// The cell_body entry of a cell whose particles all belong to `body`: its index, or kMixedCell
+// where that does not fit 16 bits.
+MSSPH_HD std::uint16_t sole_body_entry(std::uint32_t body) {
+  return body < kMixedCell ? static_cast<std::uint16_t>(body) : kMixedCell;
+}
+// A cell's entry, so far `entry`, once a particle of `body` joins it: unchanged where that is the
+// body it names, else kMixedCell.
+MSSPH_HD std::uint16_t entry_joined_by(std::uint16_t entry, std::uint32_t body) {
+  return sole_body_entry(body) == entry ? entry : kMixedCell;
+}
+
 // The cell_body entry of a non-empty cell of `count` particles whose bodies are body_of(0), ...,
-// body_of(count - 1). Every body is compared, with no exit at the first that differs: the loads
-// are then independent, and the GPU's grid kernel, one thread per cell, keeps several in flight
-// instead of waiting for each in turn.
+// body_of(count - 1): the first one's sole_body_entry joined by each of the others in turn. The
+// GPU's grid kernel writes the same entry in two stages, the first particle's and then every
+// other's where it differs (kernels/cuda/neighbour_grid.cu).
 template <class BodyOf>
 MSSPH_HD std::uint16_t cell_body_code(std::uint32_t count, BodyOf&& body_of) {
-  const std::uint32_t body = body_of(0u);
-  bool mixed = body >= kMixedCell;
-#if defined(__CUDA_ARCH__)
-#pragma unroll 4
-#endif
-  for (std::uint32_t k = 1; k < count; ++k) mixed |= body_of(k) != body;
-  return mixed ? kMixedCell : static_cast<std::uint16_t>(body);
+  std::uint16_t entry = sole_body_entry(body_of(0u));
+  for (std::uint32_t k = 1; k < count; ++k) entry = entry_joined_by(entry, body_of(k));
+  return entry;
 }
 
 // A walk from a point that lies above the middle of its cell along x by more than this fraction

@@ -43,6 +43,16 @@ struct GridArrays {
     place_in_cell_order(s, i, position, velocity, body, sorted_position, sorted_velocity);
     return i;
   }
+
+  // The second stage of CellRanges::cell_body (cell_body_code), once each cell's first particle
+  // has written its sole_body_entry: the particle at place s marks its cell mixed where its body
+  // differs. All such writes store kMixedCell, so their order does not matter.
+  __device__ void join_cell_body(std::uint32_t s) const {
+    const Vec4 p = sorted_position[s];
+    const std::uint32_t cell = grid.key_of(xyz(p));
+    const std::uint16_t entry = cell_body[cell];
+    if (entry_joined_by(entry, body_of(p)) != entry) cell_body[cell] = kMixedCell;
+  }
 };
 
 // A particle's half id: its index, plus 2^31 in its cell's upper half, so that half ids order a
@@ -124,12 +134,12 @@ __device__ bool lists_expired(const GridArrays& a, cg::grid_group grid) {
 //    half id there and gives back its count, so the counts are zero again for the next rebuild;
 // 4. each particle counts the half ids of its cell smaller than its own in those slots: its rank
 //    in the cell's sorted order, so its place in cell order (sorted_id); the first of each cell
-//    also notes where its upper half begins (CellRanges::cell_middle) and whether all of the
-//    cell's particles share its body (CellRanges::cell_body);
+//    also notes where its upper half begins (CellRanges::cell_middle) and its body
+//    (CellRanges::cell_body);
 // 5. each place in cell order copies its particle there: the writes in order, the reads gathered
 //    (each particle copying itself to its place would scatter the writes, and a lattice's
 //    particle and its next along x, whose 16-byte entries share a 32-byte sector, land in the two
-//    halves of their cell).
+//    halves of their cell); a particle whose body is not its cell's first's marks the cell mixed.
 // With lists (`check`), the kernel first checks them (lists_expired) and, while they hold, ends
 // there: one launch per step, with no separate check kernel or conditional graph node.
 // A rebuild with lists also records where each particle stands, marks the step as one whose
@@ -172,10 +182,7 @@ __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check) 
     }
     if (rank == 0) {
       a.cell_middle[cell] = first + lower_half;
-      if (a.cell_body) {
-        a.cell_body[cell] = cell_body_code(
-            end - first, [&](std::uint32_t k) { return a.body[a.unordered_id[first + k] & ~kUpperHalfBit]; });
-      }
+      if (a.cell_body) a.cell_body[cell] = sole_body_entry(a.body[i]);
     }
     a.sorted_id[first + rank] = i;
   });
@@ -183,6 +190,7 @@ __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check) 
   for_each_grid_item(a.n, [&](std::uint32_t s) {
     a.copy_into_cell_order(s);
     if (a.list_origin) a.list_origin[s] = a.sorted_position[s];
+    if (a.cell_body) a.join_cell_body(s);
   });
 }
 
