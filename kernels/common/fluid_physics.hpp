@@ -86,31 +86,35 @@ MSSPH_HD std::uint32_t cells_left_out(const SortedView& v, std::uint32_t s) {
   return v.grid.cells_holding_only(xyz(p), body_left_out(v, p));
 }
 
-// Particle s's live density sum over the candidates that candidates(visit) hands to visit;
-// considered(t, r2) is called for every candidate t the sum considers (all but the particle's own
-// body where it takes that at rest), with its squared distance r2; its term is added when r2 < h^2.
-// The walk is written once for a particle that takes its own body at rest (which also notes its
-// nearest other body) and once for every other particle, so a particle's case is decided once,
-// not at each of its ~200 candidates, and a fluid particle's walk does not take the nearest.
+// Particle s's live density sum over the candidates that candidates(visit) hands to visit, but
+// those of body `own` (its body_left_out, taken at rest; kNoBody: none left out);
+// considered(t, r2) is called for every candidate t the sum considers, with its squared distance
+// r2; its term is added when r2 < h^2. The walk is written once for a particle that leaves out its
+// own body (which also notes its nearest other body) and once for a particle that sums every body,
+// so a particle's case is decided once, not at each of its ~200 candidates, and a fluid particle's
+// walk does not take the nearest.
 template <class Candidates, class Considered>
-MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates,
+MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, std::uint32_t own, Candidates&& candidates,
                                      Considered&& considered) {
-  const Vec4 p_i = v.position[s];
-  const Vec3 x_i = xyz(p_i);
-  const std::uint32_t body_i = body_of(p_i);
+  const Vec3 x_i = xyz(v.position[s]);
   DensitySum sum{0.0f, 0.0f};
-  if (takes_own_body_at_rest(v.bodies[body_i])) {
+  if (own != kNoBody) {
     sum.nearest_other_body2 = std::numeric_limits<float>::infinity();
     candidates([&](std::uint32_t t) {
-      if (body_of(v.position[t]) == body_i) return;  // its own body: at rest, in density_from
+      if (body_of(v.position[t]) == own) return;  // its own body: at rest, in density_from
       const float r2 = add_density_pair(sum, v, x_i, t);
       sum.nearest_other_body2 = std::fmin(sum.nearest_other_body2, r2);
       considered(t, r2);
     });
-  } else {  // fluid particles, whose force pass never skips: no nearest other body
+  } else {  // fluid particles, whose force pass never skips, and walls beside fluid: no nearest
     candidates([&](std::uint32_t t) { considered(t, add_density_pair(sum, v, x_i, t)); });
   }
   return sum;
+}
+template <class Candidates, class Considered>
+MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates,
+                                     Considered&& considered) {
+  return density_sum_over(v, s, body_left_out(v, v.position[s]), candidates, considered);
 }
 template <class Candidates>
 MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candidates&& candidates) {
@@ -120,10 +124,10 @@ MSSPH_HD DensitySum density_sum_over(const SortedView& v, std::uint32_t s, Candi
 // Whether a particle's one-lane walks take near notes when the pass has them: a fluid particle's.
 MSSPH_HD bool takes_near_notes(const BodyParameters& body) { return body.kind == kFluid; }
 
-// Whose one-lane density walks may go a segment at a time (density_sum_noting_near): fluid
-// particles', and boundary particles' whose warp holds a fluid one, so that the warp's lanes walk
-// together (kernels/cuda/step_kernels.cu, walks_by_segments).
-MSSPH_HD bool may_walk_by_segments(const BodyParameters& body) { return body.kind == kFluid || body.kind == kBoundary; }
+// Whose density sums take every body live where their GPU warp holds a fluid particle, so that the
+// warp's lanes walk together, one lane a segment at a time (density_sum_noting_near): fluid and
+// boundary particles (kernels/cuda/step_kernels.cu, density_body_left_out).
+MSSPH_HD bool walks_with_fluid(const BodyParameters& body) { return body.kind == kFluid || body.kind == kBoundary; }
 
 // The live density sum of fluid or boundary particle s in one lane (canonical index i), its own
 // body included, over density_sum's walk with no rows left out, a segment at a time
@@ -164,13 +168,13 @@ MSSPH_HD auto grid_share(const SortedView& v, std::uint32_t s, std::uint32_t lan
 }
 
 // Lane `lane` of `lanes`' share of particle s's live density sum, from the grid, given its
-// cells_left_out.
+// cells_left_out and the body `own` it leaves out (density_sum_over).
 MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
-                                std::uint32_t left_out) {
-  return density_sum_over(v, s, grid_share(v, s, lane, lanes, left_out));
+                                std::uint32_t left_out, std::uint32_t own) {
+  return density_sum_over(v, s, own, grid_share(v, s, lane, lanes, left_out), [](std::uint32_t, float) {});
 }
 MSSPH_HD DensitySum density_sum(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes) {
-  return density_sum(v, s, lane, lanes, cells_left_out(v, s));
+  return density_sum(v, s, lane, lanes, cells_left_out(v, s), body_left_out(v, v.position[s]));
 }
 
 // Boundary particles receive no force: they skip the force sum.
@@ -188,10 +192,11 @@ MSSPH_HD bool may_feel_forces(const BodyParameters& body, bool near_other_body) 
 // The same share on a step that kept the lists: over list `list`, which a rebuild recorded
 // (density_sum_recording) and which the check since then keeps valid (list_skin.hpp). A list that
 // overflowed at its rebuild forces the next one, so it is walked only on the rebuild's own step,
-// whose grid is fresh.
+// whose grid is fresh. `own`: the body the sum leaves out, as the rebuild left it out of the list.
 MSSPH_HD DensitySum density_sum_listed(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
-                                       const NeighbourLists& lists, std::uint32_t list) {
-  return density_sum_over(v, s, listed_share(v.grid, xyz(v.position[s]), lane, lanes, lists, list));
+                                       const NeighbourLists& lists, std::uint32_t list, std::uint32_t own) {
+  return density_sum_over(v, s, own, listed_share(v.grid, xyz(v.position[s]), lane, lanes, lists, list),
+                          [](std::uint32_t, float) {});
 }
 
 // density_sum's share on a step that rebuilt the grid: its walk records in list `list`
@@ -200,22 +205,20 @@ MSSPH_HD DensitySum density_sum_listed(const SortedView& v, std::uint32_t s, std
 // the same terms in the same order as the walk, so the same bits. The walk that only records
 // issues fewer instructions a candidate than one that also sums, and the list it then reads is
 // short. The force pass of this step and the passes of the steps until the next rebuild visit the
-// list too (force_sum_listed, density_sum_listed): a rigid, deformable or boundary particle's own
-// body is not listed, which its density takes at rest and which adds nothing to its force sum
-// (add_force_pair: no pressure or viscosity within such a body).
+// list too (force_sum_listed, density_sum_listed): the body `own` the sum leaves out is not listed
+// (a rigid, deformable or boundary particle's own, which its density takes at rest and which adds
+// nothing to its force sum, add_force_pair: no pressure or viscosity within such a body).
 MSSPH_HD DensitySum density_sum_recording(const SortedView& v, std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
                                           std::uint32_t left_out, const NeighbourLists& lists, std::uint32_t list,
-                                          float record_radius2) {
-  const Vec4 p_i = v.position[s];
-  const Vec3 x_i = xyz(p_i);
-  const std::uint32_t own = body_left_out(v, p_i);
+                                          float record_radius2, std::uint32_t own) {
+  const Vec3 x_i = xyz(v.position[s]);
   ListRecorder recorder(lists, list);
   grid_share(v, s, lane, lanes, left_out)([&](std::uint32_t t) {
     const Vec4 p = v.position[t];
     if (squared_norm(x_i - xyz(p)) < record_radius2 && body_of(p) != own) recorder.record(t);
   });
   lists.count[list] = recorder.count();
-  return density_sum_listed(v, s, lane, lanes, lists, list);
+  return density_sum_listed(v, s, lane, lanes, lists, list, own);
 }
 
 // The host's density sum of sorted particle s over its row of `recorded`, which the last rebuild
@@ -236,7 +239,7 @@ MSSPH_HD DensitySum density_sum_keeping_within(const SortedView& v, const Neighb
 
 // The number density behind particle s's pressure from its live sum: a particle that takes its own
 // body at rest adds that share, unless its sum holds its own body live (own_body_summed: a boundary
-// particle's walk by segments); a fluid particle reads its sum as it is.
+// particle beside fluid on the GPU, walks_with_fluid); a fluid particle reads its sum as it is.
 MSSPH_HD float number_density_of(const DensitySum& sum, const SortedView& v, std::uint32_t s, bool own_body_summed) {
   const BodyParameters& body = v.bodies[body_of(v.position[s])];
   if (own_body_summed || !takes_own_body_at_rest(body)) return sum.delta;

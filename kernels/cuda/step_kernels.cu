@@ -135,17 +135,26 @@ inline constexpr int kSumBlock = 128;
 // loads. Teams compile to 32 registers, which 2048 threads allow.
 constexpr int density_threads_per_multiprocessor(unsigned lanes) { return lanes == 1 ? 1280 : 2048; }
 
-// Whether particle s's one-lane density walk goes a segment at a time (density_sum_noting_near):
-// a fluid particle's, which notes its near candidates when the pass has notes, and a boundary
-// particle's whose warp holds one, so that the warp's lanes walk together; for a fluid particle the
-// walk is the plain one's, candidate for candidate, so either gives the same bits. Boundary
-// particles whose warp holds no fluid one (inside a wall, or beside a rigid or deformable block),
-// like rigid and deformable ones, walk the plain way, leaving out the cells of their own body.
-__device__ bool walks_by_segments(const SortedView& view, std::uint32_t s, const NearNotes& notes) {
-  if (!notes.taken()) return false;
-  const BodyParameters& body = view.bodies[body_of(view.position[s])];
-  return may_walk_by_segments(body) && __any_sync(__activemask(), takes_near_notes(body));
+// The body whose candidates particle s's density sums leave out, taken at rest (density_sum_over):
+// its body_left_out, but none for a boundary particle whose warp holds a fluid one, which sums its
+// own wall live so that the warp's lanes take one walk together: by segments with one lane
+// (walks_by_segments), over lists that hold its wall with teams. A warp holds the same particles
+// from one rebuild to the next, so a team's lists hold the wall on exactly the steps its sums take
+// it. Boundary particles whose warp holds no fluid one (inside a wall, or beside a rigid or
+// deformable block) leave out their wall, as rigid and deformable particles their body. Called by
+// every lane of the warp.
+__device__ std::uint32_t density_body_left_out(const SortedView& view, std::uint32_t s, bool active) {
+  const std::uint32_t body = active ? body_of(view.position[s]) : kNoBody;
+  const bool beside_fluid = __any_sync(0xffffffffu, active && takes_near_notes(view.bodies[body]));
+  if (!active || (beside_fluid && walks_with_fluid(view.bodies[body]))) return kNoBody;
+  return body_left_out(view.bodies[body], body);
 }
+
+// Whether particle s's one-lane density walk goes a segment at a time (density_sum_noting_near):
+// with near notes, one that leaves out no body (`own`): a fluid particle's, which notes its near
+// candidates, and a boundary particle's beside it. For a fluid particle the walk is the plain
+// one's, candidate for candidate, so either gives the same bits.
+__device__ bool walks_by_segments(const NearNotes& notes, std::uint32_t own) { return notes.taken() && own == kNoBody; }
 
 // A team's lane, on a step that rebuilt the grid, records the candidates of its share within
 // h + skin in its list (lists: one per thread), for the force pass and the steps until the next
@@ -164,26 +173,26 @@ __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
   DensitySum sum{0.0f, 0.0f};
-  bool own_body_summed = false;
+  const std::uint32_t own = density_body_left_out(view, s, active);
   if (active) {
     if constexpr (Lanes > 1) {
       const std::uint32_t list = blockIdx.x * blockDim.x + threadIdx.x;
       if (refresh->recorded) {
-        sum = density_sum_recording(view, s, lane, Lanes, cells_left_out_by_warp(view, s), lists, list, record_radius2);
+        sum = density_sum_recording(view, s, lane, Lanes, cells_left_out_by_warp(view, s, own), lists, list,
+                                    record_radius2, own);
         if (lists.count[list] >= lists.capacity) refresh->requested = 1;
       } else {
-        sum = density_sum_listed(view, s, lane, Lanes, lists, list);
+        sum = density_sum_listed(view, s, lane, Lanes, lists, list, own);
       }
-    } else if (walks_by_segments(view, s, notes)) {
+    } else if (walks_by_segments(notes, own)) {
       sum = density_sum_noting_near(view, s, view.id[s], notes);
-      own_body_summed = true;
     } else {
-      sum = density_sum(view, s, lane, Lanes, cells_left_out_by_warp(view, s));
+      sum = density_sum(view, s, lane, Lanes, cells_left_out_by_warp(view, s, own), own);
     }
   }
   sum.delta = team_sum<Lanes>(sum.delta);
   sum.nearest_other_body2 = team_min<Lanes>(sum.nearest_other_body2);
-  if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s, own_body_summed).volume_pressure;
+  if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s, own == kNoBody).volume_pressure;
   record_force_walk(walks, view, s, active && lane == 0, sum.nearest_other_body2 < view.step.smoothing.h2);
 }
 

@@ -22,7 +22,7 @@ __global__ void cell_masks_kernel(kernels::SortedView v, std::uint32_t count, st
   const std::uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
   const std::uint32_t s = thread / lanes;
   if (s >= count) return;
-  by_warp[thread] = kernels::cells_left_out_by_warp(v, s);
+  by_warp[thread] = kernels::cells_left_out_by_warp(v, s, kernels::body_left_out(v, v.position[s]));
   by_lane[thread] = kernels::cells_left_out(v, s);
 }
 

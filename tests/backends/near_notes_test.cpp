@@ -85,10 +85,10 @@ bool walks_past_notes(const kernels::SortedView& v, std::uint32_t s) {
 }
 
 // The density pass of the GPU's step with notes: fluid and boundary particles walk by segments
-// (may_walk_by_segments; the block's particles walk as before, noting nothing).
+// (walks_with_fluid; the block's particles walk as before, noting nothing).
 void take_notes(const kernels::SortedView& v, const kernels::NearNotes& notes) {
   for (std::uint32_t s = 0; s < v.step.particle_count; ++s) {
-    if (!kernels::may_walk_by_segments(body_of_particle(v, s))) continue;
+    if (!kernels::walks_with_fluid(body_of_particle(v, s))) continue;
     kernels::density_sum_noting_near(v, s, v.id[s], notes);
   }
 }
@@ -105,7 +105,7 @@ TEST(NearNotes, SumsOverTheNotesHaveTheBitsOfTheWalksThatTestEveryCandidate) {
   for (std::uint32_t s = 0; s < v.step.particle_count; ++s) {
     SCOPED_TRACE(::testing::Message() << "particle " << s);
     const kernels::BodyParameters& body = body_of_particle(v, s);
-    if (!kernels::may_walk_by_segments(body)) continue;
+    if (!kernels::walks_with_fluid(body)) continue;
     if (walks_past_notes(v, s)) ++walks_past;
     const kernels::DensitySum by_segments = kernels::density_sum_noting_near(v, s, v.id[s], notes);
     ASSERT_TRUE(same_bits(by_segments.delta, live_sum_over_every_candidate(v, s)));

@@ -138,8 +138,9 @@ struct TeamLists {
     lists = kernels::lane_lists(capacity, static_cast<std::uint32_t>(count.size()), count.data(), index.data());
     for (std::uint32_t s = 0; s < v.step.particle_count; ++s) {
       for (std::uint32_t lane = 0; lane < lanes; ++lane) {
-        const kernels::DensitySum sum = kernels::density_sum_recording(v, s, lane, lanes, kernels::cells_left_out(v, s),
-                                                                       lists, list_of(s, lane), record_radius2);
+        const kernels::DensitySum sum =
+            kernels::density_sum_recording(v, s, lane, lanes, kernels::cells_left_out(v, s), lists, list_of(s, lane),
+                                           record_radius2, kernels::body_left_out(v, v.position[s]));
         density[list_of(s, lane)] = sum.delta;
         nearest_other_body2[list_of(s, lane)] = sum.nearest_other_body2;
       }
