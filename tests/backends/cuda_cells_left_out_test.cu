@@ -53,10 +53,10 @@ TEST(CudaCellsLeftOut, AWarpsSharedChecksGiveEachParticleItsOwnMask) {
   if (cudaGetDeviceCount(&devices) != cudaSuccess || devices == 0) GTEST_SKIP() << "no CUDA device";
   const SortedParticles sorted = mixed_block();
   const auto count = static_cast<std::uint32_t>(sorted.position.size());
-  const std::vector<kernels::BodyParameters> bodies = {{kernels::kFluid, kernels::kNotRigid, 1, 1000, 1, 0},
-                                                       {kernels::kRigid, 0, 1, 1000, 1, 0},
-                                                       {kernels::kDeformable, kernels::kNotRigid, 1, 1000, 1, 0},
-                                                       {kernels::kRigid, 1, 1, 1000, 1, 0}};
+  const std::vector<kernels::BodyParameters> bodies = {{kernels::kFluid, kernels::kNotRigid, 1, 1000, 1, 0, 0},
+                                                       {kernels::kRigid, 0, 1, 1000, 1, 0, 0},
+                                                       {kernels::kDeformable, kernels::kNotRigid, 1, 1000, 1, 0, 0},
+                                                       {kernels::kRigid, 1, 1, 1000, 1, 0, 0}};
   const kernels::DeviceBuffer<kernels::Vec4> position(sorted.position);
   const kernels::DeviceBuffer<kernels::BodyParameters> body_parameters(bodies);
   const kernels::DeviceBuffer<std::uint32_t> cell_start(sorted.cell_start), cell_middle(sorted.cell_middle);

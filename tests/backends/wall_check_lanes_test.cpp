@@ -52,7 +52,8 @@ class WallCorner {
     sorted_ = sort_into_grid(particles, shape);
     velocity_.assign(particles.size(), Vec4{0, 0, 0, 0});
     volume_pressure_.assign(particles.size(), kernels::VolumePressure{dx * dx * dx, 0.0f});
-    bodies_ = {{kernels::kBoundary, kernels::kNotRigid, 0, 0, 0, 0}, {kernels::kFluid, kernels::kNotRigid, 0, 0, 0, 0}};
+    bodies_ = {{kernels::kBoundary, kernels::kNotRigid, 0, 0, 0, 0, 0},
+               {kernels::kFluid, kernels::kNotRigid, 0, 0, 0, 0, 0}};
   }
 
   // What the wall check reads: boundary particles' sorted positions, their bodies, the grid and
