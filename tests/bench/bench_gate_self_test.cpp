@@ -114,7 +114,11 @@ TEST_F(GateSelfTest, InstructionCountsRepeatAndCatchFivePercentMoreWork) {
   const nlohmann::json report = nlohmann::json::parse(more.out);
   EXPECT_EQ(report["gate"], "instructions");
   EXPECT_EQ(report["benchmarks"][0]["verdict"], "SLOWER");
-  EXPECT_NEAR(report["benchmarks"][0]["instruction_ratio"].get<double>(), 1.05, 0.01);
+  // The extra step is one particular step, the 41st since the scene was built, and its count
+  // differs from the mean of the 20 counted ones: the cpu backend rebuilds its lists on some steps
+  // (a walk of the grid) and keeps them on others, and a step that keeps them costs less than the
+  // mean. So the ratio lies near 1.05, within 2 %, not at it (decision 093).
+  EXPECT_NEAR(report["benchmarks"][0]["instruction_ratio"].get<double>(), 1.05, 0.02);
   EXPECT_TRUE(read_json(work("extra.json"))["context"].contains("mssph_test_extra_step_every"));
 }
 
