@@ -245,5 +245,49 @@ TEST(TeamNeighbourLists, CapacitiesAreTwiceACompressedLatticesLongestLists) {
   }
 }
 
+// A wall particle whose GPU warp holds fluid sums its own wall live (the density kernel hands the
+// sums kNoBody to leave out, kernels/cuda/step_kernels.cu, density_body_left_out); the others
+// leave their wall out and take it at rest. For every wall particle of the lattice and every team
+// size: a rebuild that leaves nothing out lists the wall and sums, bit for bit, what the walk over
+// every candidate sums; and that live sum is the sum with the wall left out plus the wall's own
+// terms, found by testing every particle, to rounding: the same number density either way.
+TEST(TeamNeighbourLists, AWallSummingItsOwnWallLiveListsItAndAddsWhatItsRestShareHolds) {
+  std::mt19937_64 random(20261202);
+  const JitteredLattice lattice(random, compressed_by_up_to_4_percent(random),
+                                static_cast<float>(kernels::list_cell_size(1.0)));
+  const kernels::SortedView v = lattice.view();
+  const kernels::SmoothingKernels& w = v.step.smoothing;
+  const float record_radius2 = kernels::list_skin(w.h).record_radius2;
+  const std::uint32_t capacity = 64;  // room for every list: none overflows into a walk
+  std::size_t walls = 0;
+  for (const std::uint32_t lanes : {2u, 4u, 8u}) {
+    std::vector<std::uint32_t> count(std::size_t{lattice.size()} * lanes), index(count.size() * capacity);
+    const kernels::NeighbourLists lists =
+        kernels::lane_lists(capacity, static_cast<std::uint32_t>(count.size()), count.data(), index.data());
+    for (std::uint32_t s = 0; s < lattice.size(); ++s) {
+      if (kernels::body_of(v.position[s]) != kWallBody) continue;
+      SCOPED_TRACE(::testing::Message() << "particle " << s << ", " << lanes << " lanes");
+      float live = 0.0f, wall_left_out = 0.0f;
+      for (std::uint32_t lane = 0; lane < lanes; ++lane) {
+        const kernels::DensitySum recorded = kernels::density_sum_recording(
+            v, s, lane, lanes, 0, lists, s * lanes + lane, record_radius2, kernels::kNoBody);
+        ASSERT_TRUE(same_bits(recorded.delta, kernels::density_sum(v, s, lane, lanes, 0, kernels::kNoBody).delta));
+        live += recorded.delta;
+        wall_left_out += kernels::density_sum(v, s, lane, lanes, kernels::cells_left_out(v, s), kWallBody).delta;
+      }
+      double own_wall = 0.0;  // every particle of the wall within h, s itself included
+      for (std::uint32_t t = 0; t < lattice.size(); ++t) {
+        if (kernels::body_of(v.position[t]) != kWallBody || !within_support(v, s, t)) continue;
+        own_wall += w.spiky(
+            w.pair_distance(kernels::squared_norm(kernels::xyz(v.position[s]) - kernels::xyz(v.position[t]))).r);
+      }
+      ASSERT_GT(own_wall, 0.0);
+      EXPECT_NEAR(live, wall_left_out + own_wall, 1e-5 * live);
+      ++walls;
+    }
+  }
+  EXPECT_GT(walls, 100u);
+}
+
 }  // namespace
 }  // namespace mssph::testing
