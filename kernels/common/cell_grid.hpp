@@ -123,20 +123,11 @@ MSSPH_HD std::uint16_t sole_body_entry(std::uint32_t body) {
   return body < kMixedCell ? static_cast<std::uint16_t>(body) : kMixedCell;
 }
 // A cell's entry, so far `entry`, once a particle of `body` joins it: unchanged where that is the
-// body it names, else kMixedCell.
+// body it names, else kMixedCell. A non-empty cell's entry is its first particle's sole_body_entry
+// joined by each of the others; the GPU's grid kernel writes it in two stages, the first
+// particle's and then every other's where it differs (kernels/cuda/neighbour_grid.cu).
 MSSPH_HD std::uint16_t entry_joined_by(std::uint16_t entry, std::uint32_t body) {
   return sole_body_entry(body) == entry ? entry : kMixedCell;
-}
-
-// The cell_body entry of a non-empty cell of `count` particles whose bodies are body_of(0), ...,
-// body_of(count - 1): the first one's sole_body_entry joined by each of the others in turn. The
-// GPU's grid kernel writes the same entry in two stages, the first particle's and then every
-// other's where it differs (kernels/cuda/neighbour_grid.cu).
-template <class BodyOf>
-MSSPH_HD std::uint16_t cell_body_code(std::uint32_t count, BodyOf&& body_of) {
-  std::uint16_t entry = sole_body_entry(body_of(0u));
-  for (std::uint32_t k = 1; k < count; ++k) entry = entry_joined_by(entry, body_of(k));
-  return entry;
 }
 
 // A walk from a point that lies above the middle of its cell along x by more than this fraction

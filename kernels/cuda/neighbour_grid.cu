@@ -44,7 +44,7 @@ struct GridArrays {
     return i;
   }
 
-  // The second stage of CellRanges::cell_body (cell_body_code), once each cell's first particle
+  // The second stage of CellRanges::cell_body (entry_joined_by), once each cell's first particle
   // has written its sole_body_entry: the particle at place s marks its cell mixed where its body
   // differs. All such writes store kMixedCell, so their order does not matter.
   __device__ void join_cell_body(std::uint32_t s) const {

@@ -260,8 +260,7 @@ TEST(GridWalk, TheWalkWithinARadiusVisitsTheNearCandidatesInTheWalksOrder) {
 // index does not fit the entry's 16 bits, which must not alias another body.
 TEST(CellBody, NamesTheBodyAllOfACellsParticlesShareElseMarksTheCellMixed) {
   const auto entry = [](const std::vector<std::uint32_t>& bodies) {
-    return kernels::cell_body_code(static_cast<std::uint32_t>(bodies.size()),
-                                   [&](std::uint32_t k) { return bodies[k]; });
+    return cell_body_code(static_cast<std::uint32_t>(bodies.size()), [&](std::uint32_t k) { return bodies[k]; });
   };
   EXPECT_EQ(entry({5}), 5u);
   EXPECT_EQ(entry({7, 7, 7}), 7u);

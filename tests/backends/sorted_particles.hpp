@@ -11,6 +11,16 @@
 
 namespace mssph::testing {
 
+// The cell_body entry of a non-empty cell of `count` particles whose bodies are body_of(0), ...,
+// body_of(count - 1), in one pass on the host: the first one's sole_body_entry joined by each of
+// the others in turn (kernels/common/cell_grid.hpp, entry_joined_by).
+template <class BodyOf>
+std::uint16_t cell_body_code(std::uint32_t count, BodyOf&& body_of) {
+  std::uint16_t entry = kernels::sole_body_entry(body_of(0u));
+  for (std::uint32_t k = 1; k < count; ++k) entry = kernels::entry_joined_by(entry, body_of(k));
+  return entry;
+}
+
 struct SortedParticles {
   kernels::GridShape shape;
   std::vector<std::uint32_t> cell_start;   // shape.cell_count() + 1 entries
@@ -30,7 +40,7 @@ struct SortedParticles {
     for (std::uint32_t k = 0; k < shape.cell_count(); ++k) {
       const std::uint32_t first = cell_start[k];
       if (cell_start[k + 1] == first) continue;
-      cell_body[k] = kernels::cell_body_code(cell_start[k + 1] - first, [&](std::uint32_t m) {
+      cell_body[k] = cell_body_code(cell_start[k + 1] - first, [&](std::uint32_t m) {
         return kernels::index_from_float_bits(position[first + m].w);
       });
     }
