@@ -134,7 +134,7 @@ MSSPH_HD bool walks_with_fluid(const BodyParameters& body) { return body.kind ==
 // (CellRanges::for_each_segment): the same candidates in the same order as density_sum's for a
 // fluid particle, so the same bits. A fluid particle notes which candidates lie within h
 // (NearNotes, when `notes` are taken). A boundary particle, which receives no forces, notes
-// nothing, and its sum holds its own body live (density_from's own_body_summed).
+// nothing, and its sum holds its own body live (it leaves out no body: number_density_of).
 MSSPH_HD DensitySum density_sum_noting_near(const SortedView& v, std::uint32_t s, std::uint32_t i,
                                             const NearNotes& notes) {
   const Vec4 p_i = v.position[s];
@@ -237,13 +237,11 @@ MSSPH_HD DensitySum density_sum_keeping_within(const SortedView& v, const Neighb
   return sum;
 }
 
-// The number density behind particle s's pressure from its live sum: a particle that takes its own
-// body at rest adds that share, unless its sum holds its own body live (own_body_summed: a boundary
-// particle beside fluid on the GPU, walks_with_fluid); a fluid particle reads its sum as it is.
-MSSPH_HD float number_density_of(const DensitySum& sum, const SortedView& v, std::uint32_t s, bool own_body_summed) {
-  const BodyParameters& body = v.bodies[body_of(v.position[s])];
-  if (own_body_summed || !takes_own_body_at_rest(body)) return sum.delta;
-  return sum.delta + v.own_rest_number_density[v.id[s] - body.own_rest_offset];
+// The number density behind particle s's pressure from its live sum, which left out body `own`
+// (density_sum_over; kNoBody: none): s's own body, whose share at rest it adds.
+MSSPH_HD float number_density_of(const DensitySum& sum, const SortedView& v, std::uint32_t s, std::uint32_t own) {
+  if (own == kNoBody) return sum.delta;
+  return sum.delta + v.own_rest_number_density[v.id[s] - v.bodies[own].own_rest_offset];
 }
 
 // Paper eq. 1 read as a number density (Solenthaler and Pajarola 2008): rho_i = rho0 delta_i / delta0
@@ -264,11 +262,10 @@ struct DensityResult {
   VolumePressure volume_pressure;
 };
 
-MSSPH_HD DensityResult density_from(const DensitySum& sum, const SortedView& v, std::uint32_t s,
-                                    bool own_body_summed = false) {
+// Particle s's density and pressure from its live sum, which left out body `own` (number_density_of).
+MSSPH_HD DensityResult density_from(const DensitySum& sum, const SortedView& v, std::uint32_t s, std::uint32_t own) {
   const BodyParameters& body = v.bodies[body_of(v.position[s])];
-  const float rho =
-      density(body.rest_density, number_density_of(sum, v, s, own_body_summed), v.step.inverse_rest_number_density);
+  const float rho = density(body.rest_density, number_density_of(sum, v, s, own), v.step.inverse_rest_number_density);
   return {rho, {body.sph_mass / rho, equation_of_state(body.pressure_stiffness, rho, body.rest_density)}};
 }
 

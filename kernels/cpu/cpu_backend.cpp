@@ -201,7 +201,8 @@ void CpuBackend::compute_densities() {
   const SortedView view = sorted_view();
   const NeighbourLists recorded = recorded_lists(), within = neighbour_lists();
   density_partition_.for_each([&](std::uint32_t s) {
-    volume_pressure_[s] = density_from(density_sum_keeping_within(view, recorded, within, s), view, s).volume_pressure;
+    const DensitySum sum = density_sum_keeping_within(view, recorded, within, s);
+    volume_pressure_[s] = density_from(sum, view, s, body_left_out(view, view.position[s])).volume_pressure;
   });
   if (velocity_gradient_.empty()) return;
   density_partition_.for_each([&](std::uint32_t s) {

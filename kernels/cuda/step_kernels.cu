@@ -192,7 +192,7 @@ __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(
   }
   sum.delta = team_sum<Lanes>(sum.delta);
   sum.nearest_other_body2 = team_min<Lanes>(sum.nearest_other_body2);
-  if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s, own == kNoBody).volume_pressure;
+  if (active && lane == 0) volume_pressure[s] = density_from(sum, view, s, own).volume_pressure;
   record_force_walk(walks, view, s, active && lane == 0, sum.nearest_other_body2 < view.step.smoothing.h2);
 }
 
