@@ -577,9 +577,9 @@ MSSPH_HD bool wall_check_share(const SortedView& v, const Advance& a, std::uint3
 // The rest of steps 3 and 4, in one lane, given whether the wall check rejected the move:
 // records s's interaction force and, for fluid and deformable particles, keeps a rejected move out
 // of the walls (keep_out_of_walls), deactivates the particle once it leaves the domain
-// (simulation_domain.hpp) and stores its canonical state. Writes only particle s's canonical
-// entries, so all particles can run at once.
-MSSPH_HD void store_advance(const SortedView& v, const CanonicalState& c, const ForceSum& f, Advance a,
+// (simulation_domain.hpp) and stores its canonical state, which `a` then holds. Writes only
+// particle s's canonical entries, so all particles can run at once.
+MSSPH_HD void store_advance(const SortedView& v, const CanonicalState& c, const ForceSum& f, Advance& a,
                             bool move_rejected) {
   c.interaction_force[a.i] = make_vec4(f.interaction, 0.0f);
   if (!a.integrates) return;
@@ -592,7 +592,7 @@ MSSPH_HD void store_advance(const SortedView& v, const CanonicalState& c, const 
 // Steps 3 and 4 joined for particle p in one lane (the host), given its force sum: the
 // parts above, the wall check over all of its candidates.
 MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, const ForceParticle& p, const ForceSum& f) {
-  const Advance a = advance_particle(v.step, c, p, v.id[p.s], f);
+  Advance a = advance_particle(v.step, c, p, v.id[p.s], f);
   store_advance(v, c, f, a, wall_check_share(v, a, 0, 1));
 }
 

@@ -74,7 +74,7 @@ MSSPH_HD bool moved_past_trigger(Vec3 now, Vec3 recorded, float trigger2) {
 // this step did. Kept between steps, so the decision never goes through the host.
 struct ListRefreshState {
   std::uint32_t requested;  // the next step must rebuild: the state was set from the host, or a list overflowed
-  std::uint32_t moved_far;  // this step: some particle moved past its body's trigger
+  std::uint32_t moved_far;  // the next step must rebuild: the last step moved a particle past its body's trigger
   std::uint32_t recorded;   // this step rebuilt the grid: its density pass records the lists
   std::uint32_t rebuilds;   // grid rebuilds since the state was created (counted by the rebuild)
 };

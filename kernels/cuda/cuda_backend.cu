@@ -228,9 +228,11 @@ StateArrays CudaBackend::save_state() {
   run.time = time_;
   run.steps = steps_;
   if (keeps_lists()) {
-    // The lists' origin back in canonical order: the positions the last rebuild sorted.
-    run.list_origin = list_origin_in_canonical_order(state_.list_origin.download(), state_.sorted_id.download());
-    run.list_rebuild_requested = state_.list_refresh.download().front().requested != 0;
+    // The positions the last rebuild sorted, and whether the next step rebuilds: asked for, or
+    // after the last step's moves (list_check.cuh).
+    run.list_origin = state_.list_origin.download();
+    const ListRefreshState refresh = state_.list_refresh.download().front();
+    run.list_rebuild_requested = refresh.requested != 0 || refresh.moved_far != 0;
   }
   return save_float_state(run);
 }

@@ -53,8 +53,9 @@ struct DeviceArrays {
   Array<std::uint8_t> force_walk;
   Array<std::uint32_t> contact_order, contact_taken;
   Array<std::uint32_t> block_total;  // the grid kernel's: each block's share of the cell table
-  // A team's neighbour lists, one per lane, where each sorted particle stood when they were
-  // recorded, and when to record them again (list_skin.hpp). Empty for one lane per particle.
+  // A team's neighbour lists, one per lane, where each particle stood when they were recorded
+  // (canonical order), and when to record them again (list_skin.hpp, list_check.cuh). Empty for
+  // one lane per particle.
   Array<std::uint32_t> list_count, list_index;
   Array<Vec4> list_origin;
   Array<float> list_trigger2;  // per body (FloatScene::list_trigger2)

@@ -33,15 +33,12 @@ struct GridArrays {
   std::uint32_t* sorted_id;
   Vec4* sorted_position;
   Vec4* sorted_velocity;
-  Vec4* list_origin;           // where each sorted particle stood at the last rebuild
-  const float* list_trigger2;  // per body (list_triggers2)
-  ListRefreshState* refresh;   // whether to rebuild, and whether this step did
+  Vec4* list_origin;          // canonical: where each particle stood at the last rebuild
+  ListRefreshState* refresh;  // whether to rebuild, and whether this step did
 
-  // Copies the particle of place s in cell order (sorted_id) there; returns its canonical index.
-  __device__ std::uint32_t copy_into_cell_order(std::uint32_t s) const {
-    const std::uint32_t i = sorted_id[s];
-    place_in_cell_order(s, i, position, velocity, body, sorted_position, sorted_velocity);
-    return i;
+  // Copies the particle of place s in cell order (sorted_id) there.
+  __device__ void copy_into_cell_order(std::uint32_t s) const {
+    place_in_cell_order(s, sorted_id[s], position, velocity, body, sorted_position, sorted_velocity);
   }
 
   // The second stage of CellRanges::cell_body (entry_joined_by), once each cell's first particle
@@ -109,19 +106,9 @@ __device__ void scan_cell_counts(const GridArrays& a, cg::grid_group grid) {
   }
 }
 
-// With lists, a step's start: every particle is copied into the cell order of the last rebuild
-// and checked against its body's trigger (list_skin.hpp). Returns, the same in every thread,
-// whether the grid must be rebuilt: a particle moved past its trigger or a rebuild was requested.
-__device__ bool lists_expired(const GridArrays& a, cg::grid_group grid) {
-  bool moved_far = false;
-  for_each_grid_item(a.n, [&](std::uint32_t s) {
-    const std::uint32_t i = a.copy_into_cell_order(s);
-    moved_far = moved_far || moved_past_trigger(xyz(a.position[i]), xyz(a.list_origin[s]), a.list_trigger2[a.body[i]]);
-  });
-  if (__syncthreads_or(moved_far) && threadIdx.x == 0) atomicOr(&a.refresh->moved_far, 1u);
-  grid.sync();
-  return a.refresh->moved_far != 0 || a.refresh->requested != 0;
-}
+// With lists, whether this step must rebuild the grid, the same in every thread: the last step
+// moved a particle past its body's trigger (list_check.cuh), or a rebuild was requested.
+__device__ bool lists_expired(const GridArrays& a) { return a.refresh->moved_far != 0 || a.refresh->requested != 0; }
 
 // The neighbour grid by a counting sort, stable like a sort of (half key, index) pairs, so every
 // run lays the particles out alike: by cell as on the host, and within a cell its lower half along
@@ -140,20 +127,23 @@ __device__ bool lists_expired(const GridArrays& a, cg::grid_group grid) {
 //    (each particle copying itself to its place would scatter the writes, and a lattice's
 //    particle and its next along x, whose 16-byte entries share a 32-byte sector, land in the two
 //    halves of their cell); a particle whose body is not its cell's first's marks the cell mixed.
-// With lists (`check`), the kernel first checks them (lists_expired) and, while they hold, ends
-// there: one launch per step, with no separate check kernel or conditional graph node.
-// A rebuild with lists also records where each particle stands, marks the step as one whose
-// density pass records the lists, and takes back the request that caused it.
+// With lists (`check`), while they hold (lists_expired), the kernel only copies the particles into
+// the last rebuild's cell order: one launch per step, with no grid-wide barrier, separate check
+// kernel or conditional graph node. A rebuild with lists also records where each particle stands,
+// marks the step as one whose density pass records the lists, and takes back what caused it.
 __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check) {
   const cg::grid_group grid = cg::this_grid();
-  if (check && !lists_expired(a, grid)) {
+  if (check && !lists_expired(a)) {
+    for_each_grid_item(a.n, [&](std::uint32_t s) { a.copy_into_cell_order(s); });
     if (grid.thread_rank() == 0) a.refresh->recorded = 0;
     return;
   }
   for_each_grid_item(a.n, [&](std::uint32_t i) {
-    const std::uint32_t key = a.grid.half_key_of(xyz(a.position[i]));
+    const Vec4 p = a.position[i];
+    const std::uint32_t key = a.grid.half_key_of(xyz(p));
     a.keys[i] = key;
     atomicAdd(&a.cell_count[key >> 1], 1u);
+    if (a.list_origin) a.list_origin[i] = p;
   });
   grid.sync();
   scan_cell_counts(a, grid);
@@ -189,7 +179,6 @@ __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check) 
   grid.sync();
   for_each_grid_item(a.n, [&](std::uint32_t s) {
     a.copy_into_cell_order(s);
-    if (a.list_origin) a.list_origin[s] = a.sorted_position[s];
     if (a.cell_body) a.join_cell_body(s);
   });
 }
@@ -211,7 +200,6 @@ GridArrays grid_arrays(DeviceState& state, const GridShape& grid) {
           state.sorted_position.data(),
           state.sorted_velocity.data(),
           state.list_origin.data(),
-          state.list_trigger2.data(),
           state.list_refresh.data()};
 }
 

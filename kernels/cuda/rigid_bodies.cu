@@ -1,6 +1,7 @@
 #include "rigid_bodies.cuh"
 
 #include "chunk_particles.cuh"
+#include "list_check.cuh"
 
 #include <cub/cub.cuh>
 
@@ -62,10 +63,11 @@ __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBod
 }
 
 // A block per stride of kBlock particles of a chunk (blockIdx.y), a thread per particle: its
-// particles follow the body. A small body's few chunks thus spread over many blocks, not over a
-// few threads that each place many particles one after another.
+// particles follow the body, and with lists each is checked against its trigger for the next step
+// (ListCheck). A small body's few chunks thus spread over many blocks, not over a few threads that
+// each place many particles one after another.
 __global__ void rigid_place_kernel(const RigidChunk* chunks, const RigidBody* bodies, CanonicalState state,
-                                   const Vec4* rest_offset) {
+                                   const Vec4* rest_offset, const std::uint32_t* body_of_particle, ListCheck check) {
   __shared__ RigidBody body;
   __shared__ Mat3 rotation;
   __shared__ Vec3 omega;
@@ -77,9 +79,12 @@ __global__ void rigid_place_kernel(const RigidChunk* chunks, const RigidBody* bo
   }
   __syncthreads();
   const std::uint32_t offset = blockIdx.y * kBlock + threadIdx.x;
-  if (offset >= chunk.count) return;
+  const bool places = offset < chunk.count;
   const std::uint32_t i = chunk.first + offset;
-  place_rigid_particle(body, rotation, omega, xyz(rest_offset[i]), state.position[i], state.velocity[i]);
+  if (places) place_rigid_particle(body, rotation, omega, xyz(rest_offset[i]), state.position[i], state.velocity[i]);
+  if (check.active()) {
+    check.note(places, i, places ? body_of_particle[i] : 0u, places ? xyz(state.position[i]) : Vec3{0, 0, 0});
+  }
 }
 
 }  // namespace
@@ -92,7 +97,8 @@ void launch_rigid_bodies(const FloatScene& scene, const ChunkTables& chunks, Dev
       state.rigid_chunks.data(), state.rigid_bodies.data(), host_copy, canonical_state(state),
       state.chunk_wrench.data(), state.first_rigid_chunk.data(), state.rigid_tickets.data(), scene.step);
   rigid_place_kernel<<<dim3(blocks, chunks.rigid_chunk_strides), kBlock, 0, stream>>>(
-      state.rigid_chunks.data(), state.rigid_bodies.data(), canonical_state(state), state.rest_offset.data());
+      state.rigid_chunks.data(), state.rigid_bodies.data(), canonical_state(state), state.rest_offset.data(),
+      state.body.data(), list_check(state));
 }
 
 }  // namespace mssph::kernels

@@ -3,6 +3,7 @@
 #include "../common/fluid_physics.hpp"
 #include "../common/list_skin.hpp"
 #include "contact_order.cuh"
+#include "list_check.cuh"
 #include "thread_blocks.cuh"
 #include "warp_cell_checks.cuh"
 
@@ -246,9 +247,12 @@ struct SharedHeldSegments {
 
 // A team serves the particle of its force_seat: those in cell order that hold no place in the
 // contact order, then those that do (contact_order.hpp).
+// Teams, which keep lists, check each particle they advance against its trigger for the next step
+// (ListCheck).
 template <unsigned Lanes, bool FullStress>
 __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kSumBlock)
-    forces_kernel(SortedView view, CanonicalState state, ForceWalks walks, NeighbourLists lists, NearNotes notes) {
+    forces_kernel(SortedView view, CanonicalState state, ForceWalks walks, NeighbourLists lists, NearNotes notes,
+                  ListCheck check) {
   const TeamSeat team = team_seat<Lanes>();
   const ForceSeat seat = force_seat(view, walks, team.member);
   const std::uint32_t s = seat.s, lane = team.lane;
@@ -290,7 +294,10 @@ __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kS
     lanes_touching_wall = touches ? 1u : 0u;
   }
   lanes_touching_wall = team_sum<Lanes>(lanes_touching_wall);
-  if (active && lane == 0) store_advance(view, state, sum, advance, lanes_touching_wall > 0);
+  const bool stores = active && lane == 0;
+  if (stores) store_advance(view, state, sum, advance, lanes_touching_wall > 0);
+  if (kTeam && check.active())
+    check.note(stores && advance.integrates, advance.i, particle.body, xyz(advance.position));
 }
 
 // Calls launch(std::integral_constant<unsigned, L>) for the team size L = lanes, so each launch
@@ -358,10 +365,10 @@ void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_la
     const SortedView view = sorted_view(scene, state);
     if (scene.full_stress_viscosity) {
       forces_kernel<L, true><<<blocks_for(teams * L, kSumBlock), kSumBlock, 0, stream>>>(
-          view, canonical_state(state), walks, team_lists(state, L), notes);
+          view, canonical_state(state), walks, team_lists(state, L), notes, list_check(state));
     } else {
       forces_kernel<L, false><<<blocks_for(teams * L, kSumBlock), kSumBlock, 0, stream>>>(
-          view, canonical_state(state), walks, team_lists(state, L), notes);
+          view, canonical_state(state), walks, team_lists(state, L), notes, list_check(state));
     }
   });
 }

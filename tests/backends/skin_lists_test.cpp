@@ -2,9 +2,12 @@
 // backend's, and the cuda backend's teams' on the GPU. In the fluid sphere drop the grid is rebuilt
 // on some steps and kept on the others, and a step that kept the lists finds the densities a fresh
 // grid gives where the particles stand, there and in the rigid drop, whose falling sphere, the only
-// body that moves, has a trigger of its own. (list_skin_test.cpp checks the lists' neighbours
-// themselves, up to the moment a pair crosses the skin.)
+// body that moves, has a trigger of its own; in both, no step keeps the lists once a particle has
+// moved past its trigger. (list_skin_test.cpp checks the lists' neighbours themselves, up to the
+// moment a pair crosses the skin.)
 #include "backend_fixtures.hpp"
+#include "common/float_scene.hpp"
+#include "common/list_skin.hpp"
 
 #include <gtest/gtest.h>
 
@@ -77,6 +80,43 @@ TEST_P(SkinLists, AStepThatKeepsTheListsHasTheDensitiesOfAFreshGrid) {
       ++checked;
     }
     EXPECT_GT(checked, (kLastChecked - kFirstChecked) / 2) << "steps that kept the lists";
+  }
+}
+
+// The lists are kept only while they hold: at the start of every step that kept them, each particle
+// stands within its body's trigger of where it stood at the start of the last step that rebuilt
+// (moved_past_trigger, list_triggers2), in the backend's own float positions (save_state). In the
+// fluid drop the fluid moves, which the GPU checks where its force pass advances the particles; in
+// the rigid drop only the sphere, which the GPU checks where its rigid-body pass places them
+// (kernels/cuda/list_check.cuh). The test fails on the GPU when that placement never flags a move.
+TEST_P(SkinLists, ListsAreKeptOnlyWhileEveryParticleIsWithinItsTrigger) {
+  MSSPH_SKIP_WITHOUT(GetParam());
+  for (const char* config : {"sphere_drop_fluid.json", "sphere_drop_rigid.json"}) {
+    SCOPED_TRACE(config);
+    const ParticleSetup setup = coarse_scene(config, kSteps * 0.00025);
+    const kernels::FloatScene scene = kernels::make_float_scene_with_list_cells(setup);
+    const std::unique_ptr<Backend> backend = make_backend(GetParam(), setup);
+    const auto at = [](const std::vector<float>& position, std::size_t i) {
+      return kernels::Vec3{position[4 * i], position[4 * i + 1], position[4 * i + 2]};
+    };
+    std::vector<float> origin;
+    int kept = 0;
+    for (int k = 0; k < kSteps; ++k) {
+      const std::vector<float> start = backend->save_state().get<float>("position", 4 * setup.size());
+      const std::uint64_t builds_before = *backend->neighbour_grid_builds();
+      backend->step();
+      if (*backend->neighbour_grid_builds() != builds_before) {
+        origin = start;
+        continue;
+      }
+      ASSERT_FALSE(origin.empty()) << "the first step rebuilds";
+      ++kept;
+      for (std::size_t i = 0; i < setup.size(); ++i) {
+        ASSERT_FALSE(kernels::moved_past_trigger(at(start, i), at(origin, i), scene.list_trigger2[scene.body[i]]))
+            << "step " << k << " kept the lists, though particle " << i << " had moved past its trigger";
+      }
+    }
+    EXPECT_GT(kept, kSteps / 2) << "steps that kept the lists";
   }
 }
 
