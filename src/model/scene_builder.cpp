@@ -1,7 +1,7 @@
 #include "scene_builder.hpp"
 
-#include "cell_buckets.hpp"
 #include "fluid_fill.hpp"
+#include "hashed_cells.hpp"
 #include "lattice.hpp"
 #include "model/lattice_calibration.hpp"
 #include "rigid_interior.hpp"
@@ -41,17 +41,17 @@ void set_rigid_mass_properties(BodySetup& body, const std::vector<Vector3d>& wor
 // particle of one body inside (or on the boundary of) a cube of another body means their volumes
 // overlap by half a spacing or more, e.g. a ball placed inside a block whatever the offset of
 // their lattices: such a start state would explode at the first step. Tested on the lattice sites
-// before jitter; cell buckets of side dx keep this linear.
+// before jitter; hashed cells of side dx keep this linear.
 void check_overlaps(const Scene& scene, const ParticleSetup& setup, const std::vector<Vector3d>& site) {
   const double dx = setup.spacing;
   const double half = 0.5 * dx * (1.0 + 1e-9);  // boundary included: interleaved lattices overlap
-  const CellBuckets buckets(site, dx);
+  const HashedCells cells(site, dx);
   std::vector<Eigen::Matrix3d> to_body_frame;
   for (const BodySetup& b : setup.bodies) to_body_frame.push_back(b.orientation.toRotationMatrix().transpose());
   for (std::size_t i = 0; i < setup.size(); ++i) {
-    buckets.visit_near(site[i], [&](std::size_t j) {
+    cells.for_each_in_neighbourhood(cells.cell(i), [&](std::size_t j, const Vector3d& site_j) {
       if (setup.body[j] == setup.body[i]) return true;
-      const Vector3d offset = to_body_frame[setup.body[j]] * (site[i] - site[j]);
+      const Vector3d offset = to_body_frame[setup.body[j]] * (site[i] - site_j);
       if (offset.cwiseAbs().maxCoeff() > half) return true;
       const std::string& a = setup.bodies[setup.body[std::min(i, j)]].name;
       const std::string& b = setup.bodies[setup.body[std::max(i, j)]].name;

@@ -1,6 +1,6 @@
 #include "crowded_start.hpp"
 
-#include "model/cell_buckets.hpp"
+#include "model/hashed_cells.hpp"
 
 #include <cmath>
 #include <map>
@@ -22,18 +22,17 @@ std::vector<std::string> crowded_start_warnings(const ParticleSetup& setup, doub
   const double dx = setup.spacing;
   const double limit = dx * (0.95 - 2.0 * std::sqrt(3.0) * jitter);
   if (limit <= 0.5 * dx) return {};
-  const CellBuckets buckets(setup.position, dx);
+  const HashedCells cells(setup.position, dx);
   std::map<std::pair<std::uint32_t, std::uint32_t>, ClosestPair> crowded;  // by body pair
   for (std::size_t i = 0; i < setup.size(); ++i) {
-    buckets.visit_near(setup.position[i], [&](std::size_t j) {
+    cells.for_each_in_neighbourhood(cells.cell(i), [&](std::size_t j, const Eigen::Vector3d& x_j) {
       const std::uint32_t a = setup.body[i];
       const std::uint32_t b = setup.body[j];
-      if (a >= b || (setup.bodies[a].is_static() && setup.bodies[b].is_static())) return true;
-      const double distance = (setup.position[i] - setup.position[j]).norm();
-      if (distance >= limit) return true;
+      if (a >= b || (setup.bodies[a].is_static() && setup.bodies[b].is_static())) return;
+      const double distance = (setup.position[i] - x_j).norm();
+      if (distance >= limit) return;
       const auto [entry, inserted] = crowded.try_emplace({a, b}, ClosestPair{distance, setup.position[i]});
       if (!inserted && distance < entry->second.distance) entry->second = {distance, setup.position[i]};
-      return true;
     });
   }
   std::vector<std::string> warnings;
