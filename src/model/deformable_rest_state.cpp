@@ -20,6 +20,41 @@ Eigen::Matrix3d kernel_gradient_correction(const Eigen::Matrix3d& b) {
   return svd.matrixU() * inverse.asDiagonal() * svd.matrixV().transpose();
 }
 
+namespace {
+
+// Each particle's neighbours within h in its own body, itself included, as find_neighbours lists
+// them (the same order within a body); none for a fluid particle, whose rest state holds nothing.
+// Searched body by body: a fluid, often most of a scene, is never searched.
+NeighbourLists same_body_neighbours(const ParticleSetup& setup, double h) {
+  const std::size_t n = setup.size();
+  std::vector<NeighbourLists> of_body(setup.bodies.size());
+  for (std::size_t b = 0; b < setup.bodies.size(); ++b) {
+    const BodySetup& body = setup.bodies[b];
+    if (body.kind == BodyKind::fluid) continue;
+    const auto first = setup.position.begin() + static_cast<std::ptrdiff_t>(body.first);
+    of_body[b] = find_neighbours({first, first + static_cast<std::ptrdiff_t>(body.count)}, h);
+  }
+  NeighbourLists lists;
+  lists.offsets.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const BodySetup& body = setup.bodies[setup.body[i]];
+    const NeighbourLists& local = of_body[setup.body[i]];
+    lists.offsets[i + 1] = lists.offsets[i] + (local.offsets.empty() ? 0 : local.count(i - body.first));
+  }
+  lists.indices.reserve(lists.offsets[n]);
+  for (std::size_t i = 0; i < n; ++i) {
+    const BodySetup& body = setup.bodies[setup.body[i]];
+    const NeighbourLists& local = of_body[setup.body[i]];
+    if (local.offsets.empty()) continue;
+    for (const std::size_t* j = local.begin(i - body.first); j != local.end(i - body.first); ++j) {
+      lists.indices.push_back(body.first + *j);
+    }
+  }
+  return lists;
+}
+
+}  // namespace
+
 DeformableRestState build_deformable_rest_state(const ParticleSetup& setup) {
   const std::size_t n = setup.size();
   const double h = setup.smoothing_length;
@@ -33,13 +68,13 @@ DeformableRestState build_deformable_rest_state(const ParticleSetup& setup) {
   rest.own_rest_number_density.assign(n, 0.0);
 
   // Same-body pairs of deformable particles within h, self excluded.
-  const NeighbourLists all = find_neighbours(setup.position, h);
+  const NeighbourLists own_body = same_body_neighbours(setup, h);
   rest.neighbours.offsets.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
     rest.neighbours.offsets[i + 1] = rest.neighbours.offsets[i];
     if (!is_deformable(setup, i)) continue;
-    for (const std::size_t* j = all.begin(i); j != all.end(i); ++j) {
-      if (*j == i || setup.body[*j] != setup.body[i]) continue;
+    for (const std::size_t* j = own_body.begin(i); j != own_body.end(i); ++j) {
+      if (*j == i) continue;
       rest.neighbours.indices.push_back(*j);
       ++rest.neighbours.offsets[i + 1];
     }
@@ -62,8 +97,8 @@ DeformableRestState build_deformable_rest_state(const ParticleSetup& setup) {
   for (std::size_t i = 0; i < n; ++i) {
     if (!has_own_rest_number_density(setup.bodies[setup.body[i]].kind)) continue;
     double delta = w_density(0.0);
-    for (const std::size_t* j = all.begin(i); j != all.end(i); ++j) {
-      if (*j == i || setup.body[*j] != setup.body[i]) continue;
+    for (const std::size_t* j = own_body.begin(i); j != own_body.end(i); ++j) {
+      if (*j == i) continue;
       delta += w_density((setup.position[*j] - setup.position[i]).norm());
     }
     rest.own_rest_number_density[i] = delta;
