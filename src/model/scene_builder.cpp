@@ -9,6 +9,7 @@
 #include "util/errors.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <sstream>
 
@@ -37,30 +38,59 @@ void set_rigid_mass_properties(BodySetup& body, const std::vector<Vector3d>& wor
   body.inertia_body = inertia;
 }
 
+// The error for particles i and j of two bodies that overlap (check_overlaps).
+InputError overlap_error(const Scene& scene, const ParticleSetup& setup, const Vector3d& site_i, std::size_t i,
+                         std::size_t j) {
+  const std::string& a = setup.bodies[setup.body[std::min(i, j)]].name;
+  const std::string& b = setup.bodies[setup.body[std::max(i, j)]].name;
+  std::ostringstream where;
+  where << "[" << site_i.x() << ", " << site_i.y() << ", " << site_i.z() << "]";
+  return InputError(scene.source_file + ": /bodies/" + b + "/position: bodies \"" + a + "\" and \"" + b +
+                    "\" overlap near " + where.str() + " m (their particles' cells of side " +
+                    std::to_string(setup.spacing) + " m intersect by half a spacing or more); move them apart");
+}
+
 // Each particle stands for the cube of side dx around its lattice site, aligned with its body. A
 // particle of one body inside (or on the boundary of) a cube of another body means their volumes
 // overlap by half a spacing or more, e.g. a ball placed inside a block whatever the offset of
 // their lattices: such a start state would explode at the first step. Tested on the lattice sites
-// before jitter; hashed cells of side dx keep this linear.
+// before jitter; hashed cells of side dx keep this linear. Threads take ascending ranges of
+// particles and each stops at its first overlap; the lowest particle's is reported, the one a
+// single thread finds first.
 void check_overlaps(const Scene& scene, const ParticleSetup& setup, const std::vector<Vector3d>& site) {
-  const double dx = setup.spacing;
-  const double half = 0.5 * dx * (1.0 + 1e-9);  // boundary included: interleaved lattices overlap
-  const HashedCells cells(site, dx);
+  const double half = 0.5 * setup.spacing * (1.0 + 1e-9);  // boundary included: interleaved lattices overlap
+  const HashedCells cells(site, setup.spacing);
   std::vector<Eigen::Matrix3d> to_body_frame;
   for (const BodySetup& b : setup.bodies) to_body_frame.push_back(b.orientation.toRotationMatrix().transpose());
-  for (std::size_t i = 0; i < setup.size(); ++i) {
-    cells.for_each_in_neighbourhood(cells.cell(i), [&](std::size_t j, const Vector3d& site_j) {
-      if (setup.body[j] == setup.body[i]) return true;
-      const Vector3d offset = to_body_frame[setup.body[j]] * (site[i] - site_j);
-      if (offset.cwiseAbs().maxCoeff() > half) return true;
-      const std::string& a = setup.bodies[setup.body[std::min(i, j)]].name;
-      const std::string& b = setup.bodies[setup.body[std::max(i, j)]].name;
-      std::ostringstream where;
-      where << "[" << site[i].x() << ", " << site[i].y() << ", " << site[i].z() << "]";
-      throw InputError(scene.source_file + ": /bodies/" + b + "/position: bodies \"" + a + "\" and \"" + b +
-                       "\" overlap near " + where.str() + " m (their particles' cells of side " + std::to_string(dx) +
-                       " m intersect by half a spacing or more); move them apart");
-    });
+  const auto n = static_cast<std::int64_t>(setup.size());
+  std::int64_t first = n;  // the lowest particle that overlaps another body's, n for none
+  std::size_t partner = 0;
+#pragma omp parallel
+  {
+    std::int64_t mine = n;
+    std::size_t my_partner = 0;
+#pragma omp for schedule(static)
+    for (std::int64_t i = 0; i < n; ++i) {
+      if (mine < n) continue;
+      const auto s = static_cast<std::size_t>(i);
+      cells.for_each_in_neighbourhood(cells.cell(s), [&](std::size_t j, const Vector3d& site_j) {
+        if (setup.body[j] == setup.body[s]) return true;
+        const Vector3d offset = to_body_frame[setup.body[j]] * (site[s] - site_j);
+        if (offset.cwiseAbs().maxCoeff() > half) return true;
+        mine = i;
+        my_partner = j;
+        return false;
+      });
+    }
+#pragma omp critical(mssph_first_overlap)
+    if (mine < first) {
+      first = mine;
+      partner = my_partner;
+    }
+  }
+  if (first < n) {
+    const auto i = static_cast<std::size_t>(first);
+    throw overlap_error(scene, setup, site[i], i, partner);
   }
 }
 

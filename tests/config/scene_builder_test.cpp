@@ -1,5 +1,6 @@
 // build_particles: placement, rotation and jitter of each body, SPH and rigid-body masses, fixed
-// regions, and the scenes it refuses (empty or overlapping bodies).
+// regions, and the scenes it refuses (empty or overlapping bodies; the overlap reported the same
+// whatever the thread count).
 #include "model/scene_builder.hpp"
 
 #include "config/scene_loader.hpp"
@@ -15,6 +16,8 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+
+#include <omp.h>
 
 namespace mssph {
 namespace {
@@ -269,6 +272,21 @@ TEST(SceneBuilder, RejectsABodyInsideAnotherWhateverTheirLatticesOffset) {
   json turned = body("deformable", box({0.3, 0.3, 0.3}));
   turned["orientation"] = {0.0, 0.0, std::sin(std::numbers::pi / 8), std::cos(std::numbers::pi / 8)};
   EXPECT_THROW(build_particles(scene_of({{"block", turned}, {"ball", ball}})), InputError);
+}
+
+// Many particle pairs overlap; the error names the one a single thread meets first, whatever the
+// number of threads that search.
+TEST(SceneBuilder, TheOverlapReportedIsTheSameWhateverTheThreadCount) {
+  json ball = body("rigid", {{"type", "sphere"}, {"radius", 0.05}}, {0.5 * kDx, 0.5 * kDx, 0.5 * kDx});
+  const Scene scene = scene_of({{"block", body("deformable", box({0.3, 0.3, 0.3}))}, {"ball", ball}});
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const std::string one = input_error_of([&] { build_particles(scene); });
+  omp_set_num_threads(3);
+  const std::string three = input_error_of([&] { build_particles(scene); });
+  omp_set_num_threads(threads);
+  EXPECT_THAT(one, HasSubstr("overlap near"));
+  EXPECT_EQ(three, one);
 }
 
 TEST(SceneBuilder, OverlapMeansCloserThanHalfASpacing) {

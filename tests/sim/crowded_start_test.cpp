@@ -1,6 +1,6 @@
 // The start-up check of bodies whose particles start closer than a spacing: a fluid in a
 // container whose inner height is not a whole number of spacings is warned of, one that is is
-// not, and no shipped scene starts crowded.
+// not, whatever the number of threads, and no shipped scene starts crowded.
 #include "run/crowded_start.hpp"
 
 #include "config/scene_loader.hpp"
@@ -11,6 +11,9 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
+
+#include <omp.h>
 
 namespace mssph {
 namespace {
@@ -53,6 +56,31 @@ TEST(CrowdedStart, FluidInATankOfWholeSpacingsStartsOneSpacingFromItsWalls) {
 TEST(CrowdedStart, TankOfAQuarterSpacingMoreCrowdsItsFluid) {
   EXPECT_THAT(warnings_for(0.205),
               ElementsAre(AllOf(HasSubstr("\"tank\" and \"water\""), HasSubstr("0.875 spacings"))));
+}
+
+// A wall and a fluid whose closest pairs tie exactly, half a spacing apart at ten places spread
+// over the particle order: the warning names the first, whatever the number of threads that search.
+TEST(CrowdedStart, ATieNamesThePairMetFirstWhateverTheThreadCount) {
+  ParticleSetup setup;
+  setup.spacing = 1.0;
+  setup.bodies = {BodySetup{.name = "wall", .kind = BodyKind::boundary, .first = 0, .count = 10},
+                  BodySetup{.name = "water", .kind = BodyKind::fluid, .first = 10, .count = 10}};
+  for (const double y : {0.0, 0.5}) {
+    for (int k = 0; k < 10; ++k) {
+      setup.position.emplace_back(4.0 * (k + 1), y, 0.0);
+      setup.body.push_back(y == 0.0 ? 0u : 1u);
+    }
+  }
+  const int threads = omp_get_max_threads();
+  std::vector<std::vector<std::string>> warnings;
+  for (const int count : {1, 3, 10}) {
+    omp_set_num_threads(count);
+    warnings.push_back(crowded_start_warnings(setup, 0.0));
+  }
+  omp_set_num_threads(threads);
+  EXPECT_THAT(warnings[0], ElementsAre(AllOf(HasSubstr("0.5 spacings"), HasSubstr("near [4, 0, 0]"))));
+  EXPECT_EQ(warnings[1], warnings[0]);
+  EXPECT_EQ(warnings[2], warnings[0]);
 }
 
 TEST(CrowdedStart, JitterOfAFifthOfASpacingLeavesNothingToCheck) { EXPECT_THAT(warnings_for(0.205, 0.2), IsEmpty()); }
