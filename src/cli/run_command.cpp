@@ -43,9 +43,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
                 "Check everything, print particles per body, the memory estimate, the time-step bounds and the "
                 "step count, and write nothing");
   cmd->add_option("--threads", args->threads,
-                  "Host threads for the reference and cpu backends (default: $OMP_NUM_THREADS if set, else the "
-                  "CPUs this process may use less the 1-minute load average, at least 1; give concurrent runs their "
-                  "share)")
+                  "Host threads for the start-up checks and the reference and cpu backends (default: "
+                  "$OMP_NUM_THREADS if set, else the CPUs this process may use less the 1-minute load average, at "
+                  "least 1; give concurrent runs their share)")
       ->check(CLI::Range(1, 4096));
   // One PATH=VALUE per --set, so that `--set a=1 scene.json` leaves the scene file positional.
   cmd->add_option("--set", args->overrides,

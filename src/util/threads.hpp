@@ -1,5 +1,6 @@
 #pragma once
-// Host threads for the OpenMP loops of the reference and cpu backends (--threads N).
+// Host threads for the OpenMP loops of the start-up checks and the reference and cpu backends
+// (--threads N).
 #include <string>
 
 namespace mssph {
