@@ -63,8 +63,13 @@ TEST(CrowdedStart, TankOfAQuarterSpacingMoreCrowdsItsFluid) {
 TEST(CrowdedStart, ATieNamesThePairMetFirstWhateverTheThreadCount) {
   ParticleSetup setup;
   setup.spacing = 1.0;
-  setup.bodies = {BodySetup{.name = "wall", .kind = BodyKind::boundary, .first = 0, .count = 10},
-                  BodySetup{.name = "water", .kind = BodyKind::fluid, .first = 10, .count = 10}};
+  setup.bodies.resize(2);
+  setup.bodies[0].name = "wall";
+  setup.bodies[0].kind = BodyKind::boundary;
+  setup.bodies[0].count = 10;
+  setup.bodies[1].name = "water";
+  setup.bodies[1].first = 10;
+  setup.bodies[1].count = 10;
   for (const double y : {0.0, 0.5}) {
     for (int k = 0; k < 10; ++k) {
       setup.position.emplace_back(4.0 * (k + 1), y, 0.0);
