@@ -4,6 +4,7 @@
 #include "../common/fluid_physics.hpp"
 #include "../common/list_skin.hpp"
 #include "cuda_check.hpp"
+#include "dependent_launch.cuh"
 #include "thread_blocks.cuh"
 
 #include <cooperative_groups.h>
@@ -132,6 +133,7 @@ __device__ bool lists_expired(const GridArrays& a) { return a.refresh->moved_far
 // kernel or conditional graph node. A rebuild with lists also records where each particle stands,
 // marks the step as one whose density pass records the lists, and takes back what caused it.
 __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check) {
+  follow_previous_kernel();
   const cg::grid_group grid = cg::this_grid();
   if (check && !lists_expired(a)) {
     for_each_grid_item(a.n, [&](std::uint32_t s) { a.copy_into_cell_order(s); });

@@ -1,6 +1,7 @@
 #include "rigid_bodies.cuh"
 
 #include "chunk_particles.cuh"
+#include "dependent_launch.cuh"
 #include "list_check.cuh"
 
 #include <cub/cub.cuh>
@@ -27,6 +28,7 @@ __device__ Wrench load_chunk_wrench(const Wrench* partial, std::uint32_t c) {
 __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBody* bodies, RigidBody* host_copy,
                                               CanonicalState state, Wrench* partial, const std::uint32_t* first_chunk,
                                               std::uint32_t* tickets, StepParameters step) {
+  follow_previous_kernel();
   using BlockReduce = cub::BlockReduce<Wrench, kBlock>;
   __shared__ typename BlockReduce::TempStorage reduce_storage;
   __shared__ bool last;
@@ -68,6 +70,7 @@ __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBod
 // each place many particles one after another.
 __global__ void rigid_place_kernel(const RigidChunk* chunks, const RigidBody* bodies, CanonicalState state,
                                    const Vec4* rest_offset, const std::uint32_t* body_of_particle, ListCheck check) {
+  follow_previous_kernel();
   __shared__ RigidBody body;
   __shared__ Mat3 rotation;
   __shared__ Vec3 omega;
@@ -93,12 +96,13 @@ void launch_rigid_bodies(const FloatScene& scene, const ChunkTables& chunks, Dev
                          cudaStream_t stream) {
   if (scene.rigid_bodies.empty()) return;
   const auto blocks = static_cast<unsigned>(chunks.rigid.size());
-  rigid_wrench_integrate_kernel<<<blocks, kBlock, 0, stream>>>(
-      state.rigid_chunks.data(), state.rigid_bodies.data(), host_copy, canonical_state(state),
-      state.chunk_wrench.data(), state.first_rigid_chunk.data(), state.rigid_tickets.data(), scene.step);
-  rigid_place_kernel<<<dim3(blocks, chunks.rigid_chunk_strides), kBlock, 0, stream>>>(
-      state.rigid_chunks.data(), state.rigid_bodies.data(), canonical_state(state), state.rest_offset.data(),
-      state.body.data(), list_check(state));
+  launch_after_previous(rigid_wrench_integrate_kernel, blocks, kBlock, stream, "launch the rigid bodies' dynamics",
+                        state.rigid_chunks.data(), state.rigid_bodies.data(), host_copy, canonical_state(state),
+                        state.chunk_wrench.data(), state.first_rigid_chunk.data(), state.rigid_tickets.data(),
+                        scene.step);
+  launch_after_previous(rigid_place_kernel, dim3(blocks, chunks.rigid_chunk_strides), kBlock, stream,
+                        "launch the rigid particles' placement", state.rigid_chunks.data(), state.rigid_bodies.data(),
+                        canonical_state(state), state.rest_offset.data(), state.body.data(), list_check(state));
 }
 
 }  // namespace mssph::kernels

@@ -3,6 +3,7 @@
 #include "../common/fluid_physics.hpp"
 #include "../common/list_skin.hpp"
 #include "contact_order.cuh"
+#include "dependent_launch.cuh"
 #include "list_check.cuh"
 #include "thread_blocks.cuh"
 #include "warp_cell_checks.cuh"
@@ -75,6 +76,7 @@ inline constexpr int kBondBlocksPerMultiprocessor = 4;
 template <unsigned Lanes, bool Viscous>
 __global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor)
     rotation_stress_kernel(DeviceDeformableView view) {
+  follow_previous_kernel();
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t d = seat.member, lane = seat.lane;
   const bool active = d < view.count;
@@ -114,6 +116,7 @@ __global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor)
 template <unsigned Lanes>
 __global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor)
     elastic_force_kernel(DeviceDeformableView view) {
+  follow_previous_kernel();
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t d = seat.member, lane = seat.lane;
   const bool active = d < view.count;
@@ -170,6 +173,7 @@ template <unsigned Lanes>
 __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(Lanes) / kSumBlock)
     density_kernel(SortedView view, VolumePressure* volume_pressure, ForceWalks walks, NeighbourLists lists,
                    ListRefreshState* refresh, float record_radius2, NearNotes notes) {
+  follow_previous_kernel();
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
@@ -204,6 +208,7 @@ __global__ void __launch_bounds__(kSumBlock, density_threads_per_multiprocessor(
 template <unsigned Lanes>
 __global__ void __launch_bounds__(kSumBlock)
     velocity_gradient_kernel(SortedView view, Mat3* velocity_gradient, NeighbourLists lists) {
+  follow_previous_kernel();
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t s = seat.member, lane = seat.lane;
   const bool active = s < view.step.particle_count;
@@ -253,6 +258,7 @@ template <unsigned Lanes, bool FullStress>
 __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kSumBlock)
     forces_kernel(SortedView view, CanonicalState state, ForceWalks walks, NeighbourLists lists, NearNotes notes,
                   ListCheck check) {
+  follow_previous_kernel();
   const TeamSeat team = team_seat<Lanes>();
   const ForceSeat seat = force_seat(view, walks, team.member);
   const std::uint32_t s = seat.s, lane = team.lane;
@@ -329,12 +335,10 @@ void launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned tea
                                    [](const ElasticParameters& body) { return body.retardation_time > 0.0f; });
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
-    if (viscous) {
-      rotation_stress_kernel<L, true><<<blocks_for(std::size_t{view.count} * L), kBlock, 0, stream>>>(view);
-    } else {
-      rotation_stress_kernel<L, false><<<blocks_for(std::size_t{view.count} * L), kBlock, 0, stream>>>(view);
-    }
-    elastic_force_kernel<L><<<blocks_for(std::size_t{view.count} * L), kBlock, 0, stream>>>(view);
+    const unsigned blocks = blocks_for(std::size_t{view.count} * L);
+    launch_after_previous(viscous ? rotation_stress_kernel<L, true> : rotation_stress_kernel<L, false>, blocks, kBlock,
+                          stream, "launch the rotations", view);
+    launch_after_previous(elastic_force_kernel<L>, blocks, kBlock, stream, "launch the elastic forces", view);
   });
 }
 
@@ -346,12 +350,13 @@ void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team
     cuda_check(cudaMemsetAsync(walks.contact_taken, 0, sizeof(std::uint32_t), stream), "clear the contact order");
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
-    density_kernel<L><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
-        sorted_view(scene, state), state.volume_pressure.data(), walks, team_lists(state, L), state.list_refresh.data(),
-        list_skin(scene.step.smoothing.h).record_radius2, notes);
+    launch_after_previous(density_kernel<L>, blocks_for(n * L, kSumBlock), kSumBlock, stream, "launch the densities",
+                          sorted_view(scene, state), state.volume_pressure.data(), walks, team_lists(state, L),
+                          state.list_refresh.data(), list_skin(scene.step.smoothing.h).record_radius2, notes);
     if (scene.full_stress_viscosity) {
-      velocity_gradient_kernel<L><<<blocks_for(n * L, kSumBlock), kSumBlock, 0, stream>>>(
-          sorted_view(scene, state), state.velocity_gradient.data(), team_lists(state, L));
+      launch_after_previous(velocity_gradient_kernel<L>, blocks_for(n * L, kSumBlock), kSumBlock, stream,
+                            "launch the velocity gradients", sorted_view(scene, state), state.velocity_gradient.data(),
+                            team_lists(state, L));
     }
   });
 }
@@ -362,14 +367,10 @@ void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_la
   const std::size_t teams = state.position.size() + walks.contact_capacity;
   with_team_lanes(team_lanes, [&](auto lanes) {
     constexpr unsigned L = decltype(lanes)::value;
-    const SortedView view = sorted_view(scene, state);
-    if (scene.full_stress_viscosity) {
-      forces_kernel<L, true><<<blocks_for(teams * L, kSumBlock), kSumBlock, 0, stream>>>(
-          view, canonical_state(state), walks, team_lists(state, L), notes, list_check(state));
-    } else {
-      forces_kernel<L, false><<<blocks_for(teams * L, kSumBlock), kSumBlock, 0, stream>>>(
-          view, canonical_state(state), walks, team_lists(state, L), notes, list_check(state));
-    }
+    launch_after_previous(scene.full_stress_viscosity ? forces_kernel<L, true> : forces_kernel<L, false>,
+                          blocks_for(teams * L, kSumBlock), kSumBlock, stream, "launch the forces",
+                          sorted_view(scene, state), canonical_state(state), walks, team_lists(state, L), notes,
+                          list_check(state));
   });
 }
 

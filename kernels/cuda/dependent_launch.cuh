@@ -1,0 +1,39 @@
+#pragma once
+// Programmatic dependent launch (compute capability 9.0): a step kernel launched by
+// launch_after_previous may be scheduled while the kernel before it in the stream still runs, onto
+// the multiprocessors that kernel's finished blocks free, instead of after its last block ends and
+// the launch's own latency. Every step kernel calls follow_previous_kernel before it touches device
+// memory: that waits until the kernel before it has finished and its writes are visible, so each
+// kernel reads what it read before, and lets the kernel after it be scheduled in turn.
+#include "cuda_check.hpp"
+
+#include <utility>
+
+namespace mssph::kernels {
+
+// Called first by every thread of a step kernel. Below compute capability 9.0 a launch never
+// overlaps the one before it, and there is nothing to wait for.
+__device__ inline void follow_previous_kernel() {
+#if defined(__CUDA_ARCH__) && __CUDA_ARCH__ >= 900
+  cudaGridDependencySynchronize();
+  cudaTriggerProgrammaticLaunchCompletion();
+#endif
+}
+
+// Launches kernel(args...) on `stream`, allowed to be scheduled before the kernel before it ends.
+template <class... Params, class... Args>
+void launch_after_previous(void (*kernel)(Params...), dim3 blocks, dim3 threads, cudaStream_t stream, const char* what,
+                           Args&&... args) {
+  cudaLaunchAttribute overlap{};
+  overlap.id = cudaLaunchAttributeProgrammaticStreamSerialization;
+  overlap.val.programmaticStreamSerializationAllowed = 1;
+  cudaLaunchConfig_t config{};
+  config.gridDim = blocks;
+  config.blockDim = threads;
+  config.stream = stream;
+  config.attrs = &overlap;
+  config.numAttrs = 1;
+  cuda_check(cudaLaunchKernelEx(&config, kernel, std::forward<Args>(args)...), what);
+}
+
+}  // namespace mssph::kernels
