@@ -328,8 +328,9 @@ MSSPH_HD Vec3 transposed_stress_force_pair(float mu, float volume_i, const Mat3&
 MSSPH_HD Vec3 interaction_force(Vec3 pressure, Vec3 viscosity) { return pressure + viscosity; }
 
 // What the force sum and the leap-frog need of particle i, loaded once, from its cell-ordered
-// copy: the grid made it from the canonical state at the step's start, and nothing has moved a
-// particle since (its position and velocity are the canonical ones, bit for bit).
+// copy: the grid made it from the canonical state at the step's start (or, while the GPU's lists
+// hold, the step before wrote it where it moved the particle), and nothing has moved a particle
+// since (its position and velocity are the canonical ones, bit for bit).
 struct ForceParticle {
   std::uint32_t s;
   std::uint32_t body;

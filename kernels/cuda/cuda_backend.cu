@@ -4,7 +4,9 @@
 // loop read back (body_readback). A scene small
 // enough for teams of lanes, or one that asks for lists (team_lanes.hpp), keeps neighbour lists with
 // a skin and rebuilds the grid only when they expire (list_skin.hpp), a decision the grid kernel
-// takes on the device.
+// takes on the device; its steps read the particles in cell order from one pair of arrays and
+// write them for the next step into the other (next_cell_order.cuh), so each graph comes in two
+// ways round.
 #include "cuda_backend.hpp"
 
 #include "../common/eigen_conversion.hpp"
@@ -72,6 +74,7 @@ class CudaBackend final : public Backend {
     cudaGraphExec_t exec = nullptr;
   };
   StepGraph capture_step(bool timed);
+  void swap_cell_orders();
   void record_step(cudaStream_t stream, bool timed);
   void record_neighbour_grid(cudaStream_t stream);
   bool keeps_lists() const { return team_lanes_ > 1; }
@@ -91,8 +94,12 @@ class CudaBackend final : public Backend {
 
   cudaStream_t stream_ = nullptr;
   std::array<cudaEvent_t, kPhaseCount + 1> events_{};  // events_[p], events_[p + 1] enclose phase p
-  StepGraph plain_step_;                               // the step alone
-  StepGraph timed_step_;  // the step with the phase events, which lengthen it (Backend::set_phase_timing)
+  // Per way round (with lists: way_ reads sorted_*, writes next_sorted_*; the other way the
+  // reverse; without lists only way 0): the step alone, and the step with the phase events,
+  // which lengthen it (Backend::set_phase_timing).
+  std::array<StepGraph, 2> plain_step_;
+  std::array<StepGraph, 2> timed_step_;
+  std::size_t way_ = 0;
   bool phase_timing_ = false;
   bool last_step_timed_ = false;
   double time_ = 0.0;
@@ -112,15 +119,20 @@ CudaBackend::CudaBackend(ParticleSetup setup)
   cuda_check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "create stream");
   for (cudaEvent_t& e : events_) cuda_check(cudaEventCreate(&e), "create event");
 
-  plain_step_ = capture_step(false);
-  timed_step_ = capture_step(true);
+  for (std::size_t way = 0; way < (keeps_lists() ? 2u : 1u); ++way) {
+    plain_step_[way] = capture_step(false);
+    timed_step_[way] = capture_step(true);
+    if (keeps_lists()) swap_cell_orders();
+  }
   cuda_check(cudaStreamSynchronize(stream_), "synchronise after set-up");
 }
 
 CudaBackend::~CudaBackend() {
-  for (StepGraph* g : {&plain_step_, &timed_step_}) {
-    if (g->exec) cudaGraphExecDestroy(g->exec);
-    if (g->graph) cudaGraphDestroy(g->graph);
+  for (std::array<StepGraph, 2>* graphs : {&plain_step_, &timed_step_}) {
+    for (StepGraph& g : *graphs) {
+      if (g.exec) cudaGraphExecDestroy(g.exec);
+      if (g.graph) cudaGraphDestroy(g.graph);
+    }
   }
   for (cudaEvent_t e : events_) {
     if (e) cudaEventDestroy(e);
@@ -173,6 +185,14 @@ void CudaBackend::record_neighbour_grid(cudaStream_t stream) {
   } else {
     launch_neighbour_grid(state_, scene_.grid, stream);
   }
+}
+
+// The arrays the step just wrote become the ones the next step reads (next_cell_order.cuh); the
+// device arrays stay where they are, and the graph of the other way round holds their addresses.
+void CudaBackend::swap_cell_orders() {
+  std::swap(state_.sorted_position, state_.next_sorted_position);
+  std::swap(state_.sorted_velocity, state_.next_sorted_velocity);
+  way_ = 1 - way_;
 }
 
 // The next step rebuilds the grid and records the lists: the particles were moved from the host.
@@ -258,6 +278,7 @@ void CudaBackend::restore_state(const StateArrays& saved) {
   state_.velocity.upload(restored.velocity);
   state_.fixed.upload(restored.fixed);
   state_.rigid_bodies.upload(restored.rigid_bodies);
+  if (keeps_lists()) launch_cell_order_copy(state_, scene_.grid, stream_);
   readback_.set_rigid_bodies(restored.rigid_bodies);
   if (!restored.rotation.empty()) state_.rotation.upload(restored.rotation);
   for (std::size_t b = 0; b < restored.rigid_bodies.size(); ++b) {
@@ -268,7 +289,9 @@ void CudaBackend::restore_state(const StateArrays& saved) {
 }
 
 void CudaBackend::step() {
-  cuda_check(cudaGraphLaunch(phase_timing_ ? timed_step_.exec : plain_step_.exec, stream_), "launch step graph");
+  cuda_check(cudaGraphLaunch(phase_timing_ ? timed_step_[way_].exec : plain_step_[way_].exec, stream_),
+             "launch step graph");
+  if (keeps_lists()) swap_cell_orders();
   time_ += setup_.dt;
   ++steps_;
   last_step_timed_ = phase_timing_;
@@ -277,9 +300,9 @@ void CudaBackend::step() {
 // The untimed step's graph: what one launch of step() runs.
 std::optional<Backend::StepGraphSize> CudaBackend::step_graph_size() const {
   std::size_t count = 0;
-  cuda_check(cudaGraphGetNodes(plain_step_.graph, nullptr, &count), "count the step graph's nodes");
+  cuda_check(cudaGraphGetNodes(plain_step_[way_].graph, nullptr, &count), "count the step graph's nodes");
   std::vector<cudaGraphNode_t> nodes(count);
-  cuda_check(cudaGraphGetNodes(plain_step_.graph, nodes.data(), &count), "list the step graph's nodes");
+  cuda_check(cudaGraphGetNodes(plain_step_[way_].graph, nodes.data(), &count), "list the step graph's nodes");
   StepGraphSize size{count, 0};
   for (cudaGraphNode_t node : nodes) {
     cudaGraphNodeType type{};

@@ -60,6 +60,11 @@ struct DeviceArrays {
   Array<Vec4> list_origin;
   Array<float> list_trigger2;  // per body (FloatScene::list_trigger2)
   Array<ListRefreshState> list_refresh;
+  // With lists, the next step's cell-ordered copy, written where the particles move; it and
+  // sorted_position, sorted_velocity trade places after each step (next_cell_order.cuh). place_of:
+  // each particle's place in cell order (sorted_id's inverse), for the rigid placement.
+  Array<Vec4> next_sorted_position, next_sorted_velocity;
+  Array<std::uint32_t> place_of;
   // Rigid and deformable bodies (empty without them): canonical, n entries.
   Array<float> own_rest_number_density;
   // Deformable bodies (empty without them).
@@ -164,6 +169,11 @@ void for_each_device_array(DeviceArrays<Array>& a, const FloatScene& scene, cons
         CopyOf<float>{&scene.list_trigger2, listing ? scene.list_trigger2.size() : 0});
   // A rebuild requested: the first step has no lists yet.
   visit("list_refresh", a.list_refresh, Filled<ListRefreshState>{listing ? 1u : 0u, ListRefreshState{1, 0, 0, 0}});
+  // The force pass writes every particle's before the next step reads them; each rebuild, every
+  // particle's place.
+  visit("next_sorted_position", a.next_sorted_position, Uninitialised{listing ? n : 0});
+  visit("next_sorted_velocity", a.next_sorted_velocity, Uninitialised{listing ? n : 0});
+  visit("place_of", a.place_of, Uninitialised{listing && !scene.rigid_bodies.empty() ? n : 0});
   visit("bodies", a.bodies, copy_of(scene.bodies));
   visit("rigid_bodies", a.rigid_bodies, copy_of(scene.rigid_bodies));
   visit("rigid_chunks", a.rigid_chunks, copy_of(chunks.rigid));

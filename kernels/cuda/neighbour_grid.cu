@@ -32,6 +32,7 @@ struct GridArrays {
   std::uint32_t* unordered_id;  // half ids (half_id)
   std::uint32_t* block_total;   // one per block of the kernel (scan_cell_counts)
   std::uint32_t* sorted_id;
+  std::uint32_t* place_of;  // null without lists or without rigid bodies (next_cell_order.cuh)
   Vec4* sorted_position;
   Vec4* sorted_velocity;
   Vec4* list_origin;          // canonical: where each particle stood at the last rebuild
@@ -128,15 +129,16 @@ __device__ bool lists_expired(const GridArrays& a) { return a.refresh->moved_far
 //    (each particle copying itself to its place would scatter the writes, and a lattice's
 //    particle and its next along x, whose 16-byte entries share a 32-byte sector, land in the two
 //    halves of their cell); a particle whose body is not its cell's first's marks the cell mixed.
-// With lists (`check`), while they hold (lists_expired), the kernel only copies the particles into
-// the last rebuild's cell order: one launch per step, with no grid-wide barrier, separate check
-// kernel or conditional graph node. A rebuild with lists also records where each particle stands,
-// marks the step as one whose density pass records the lists, and takes back what caused it.
+// With lists (`check`), while they hold (lists_expired), the kernel only marks the step as one
+// whose density pass visits the lists: the step before wrote the particles in the last rebuild's
+// cell order where it moved them (next_cell_order.cuh). One launch per step, with no grid-wide
+// barrier, separate check kernel or conditional graph node. A rebuild with lists also records
+// where each particle stands and its place in cell order, marks the step as one whose density pass
+// records the lists, and takes back what caused it.
 __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check) {
   follow_previous_kernel();
   const cg::grid_group grid = cg::this_grid();
   if (check && !lists_expired(a)) {
-    for_each_grid_item(a.n, [&](std::uint32_t s) { a.copy_into_cell_order(s); });
     if (grid.thread_rank() == 0) a.refresh->recorded = 0;
     return;
   }
@@ -177,12 +179,20 @@ __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check) 
       if (a.cell_body) a.cell_body[cell] = sole_body_entry(a.body[i]);
     }
     a.sorted_id[first + rank] = i;
+    if (a.place_of) a.place_of[i] = first + rank;
   });
   grid.sync();
   for_each_grid_item(a.n, [&](std::uint32_t s) {
     a.copy_into_cell_order(s);
     if (a.cell_body) a.join_cell_body(s);
   });
+}
+
+// Copies every particle into the last rebuild's cell order: the host replaced the canonical state
+// and kept the cells.
+__global__ void __launch_bounds__(kBlock) cell_order_copy_kernel(GridArrays a) {
+  const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
+  if (s < a.n) a.copy_into_cell_order(s);
 }
 
 GridArrays grid_arrays(DeviceState& state, const GridShape& grid) {
@@ -199,6 +209,7 @@ GridArrays grid_arrays(DeviceState& state, const GridShape& grid) {
           state.unordered_id.data(),
           state.block_total.data(),
           state.sorted_id.data(),
+          state.place_of.data(),
           state.sorted_position.data(),
           state.sorted_velocity.data(),
           state.list_origin.data(),
@@ -236,6 +247,11 @@ void launch_neighbour_grid(DeviceState& state, const GridShape& grid, cudaStream
 
 void launch_list_step_grid(DeviceState& state, const GridShape& grid, cudaStream_t stream) {
   launch_grid_kernel(state, grid, true, stream);
+}
+
+void launch_cell_order_copy(DeviceState& state, const GridShape& grid, cudaStream_t stream) {
+  cell_order_copy_kernel<<<blocks_for(state.position.size()), kBlock, 0, stream>>>(grid_arrays(state, grid));
+  cuda_check(cudaGetLastError(), "copy the particles into cell order");
 }
 
 }  // namespace mssph::kernels

@@ -17,9 +17,13 @@ unsigned grid_kernel_blocks(std::size_t particles, std::uint32_t cells);
 // particle stands, for the check below, and that this step's density pass records the lists.
 void launch_neighbour_grid(DeviceState& state, const GridShape& grid, cudaStream_t stream);
 
-// With the teams' lists, a step's start: copies the particles into the cell order of the last
-// rebuild and, when the lists are no longer valid (list_skin.hpp), rebuilds the grid as
-// launch_neighbour_grid does. The decision is taken on the device.
+// With the teams' lists, a step's start: when the lists are no longer valid (list_skin.hpp),
+// rebuilds the grid as launch_neighbour_grid does; while they hold, the step before has written
+// the particles in cell order (next_cell_order.cuh). The decision is taken on the device.
 void launch_list_step_grid(DeviceState& state, const GridShape& grid, cudaStream_t stream);
+
+// Copies the particles' canonical state into the last rebuild's cell order, for a step that keeps
+// the lists after the host has replaced that state (a restart).
+void launch_cell_order_copy(DeviceState& state, const GridShape& grid, cudaStream_t stream);
 
 }  // namespace mssph::kernels

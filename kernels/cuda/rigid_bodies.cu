@@ -3,6 +3,7 @@
 #include "chunk_particles.cuh"
 #include "dependent_launch.cuh"
 #include "list_check.cuh"
+#include "next_cell_order.cuh"
 
 #include <cub/cub.cuh>
 
@@ -66,10 +67,12 @@ __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBod
 
 // A block per stride of kBlock particles of a chunk (blockIdx.y), a thread per particle: its
 // particles follow the body, and with lists each is checked against its trigger for the next step
-// (ListCheck). A small body's few chunks thus spread over many blocks, not over a few threads that
-// each place many particles one after another.
+// (ListCheck) and written in cell order for it (NextCellOrder). A small body's few chunks thus
+// spread over many blocks, not over a few threads that each place many particles one after
+// another.
 __global__ void rigid_place_kernel(const RigidChunk* chunks, const RigidBody* bodies, CanonicalState state,
-                                   const Vec4* rest_offset, const std::uint32_t* body_of_particle, ListCheck check) {
+                                   const Vec4* rest_offset, const std::uint32_t* body_of_particle, ListCheck check,
+                                   NextCellOrder next) {
   follow_previous_kernel();
   __shared__ RigidBody body;
   __shared__ Mat3 rotation;
@@ -85,6 +88,7 @@ __global__ void rigid_place_kernel(const RigidChunk* chunks, const RigidBody* bo
   const bool places = offset < chunk.count;
   const std::uint32_t i = chunk.first + offset;
   if (places) place_rigid_particle(body, rotation, omega, xyz(rest_offset[i]), state.position[i], state.velocity[i]);
+  if (places && next.active()) next.put(next.place_of[i], body_of_particle[i], state.position[i], state.velocity[i]);
   if (check.active()) {
     check.note(places, i, places ? body_of_particle[i] : 0u, places ? xyz(state.position[i]) : Vec3{0, 0, 0});
   }
@@ -102,7 +106,8 @@ void launch_rigid_bodies(const FloatScene& scene, const ChunkTables& chunks, Dev
                         scene.step);
   launch_after_previous(rigid_place_kernel, dim3(blocks, chunks.rigid_chunk_strides), kBlock, stream,
                         "launch the rigid particles' placement", state.rigid_chunks.data(), state.rigid_bodies.data(),
-                        canonical_state(state), state.rest_offset.data(), state.body.data(), list_check(state));
+                        canonical_state(state), state.rest_offset.data(), state.body.data(), list_check(state),
+                        next_cell_order(state));
 }
 
 }  // namespace mssph::kernels

@@ -5,6 +5,7 @@
 #include "contact_order.cuh"
 #include "dependent_launch.cuh"
 #include "list_check.cuh"
+#include "next_cell_order.cuh"
 #include "thread_blocks.cuh"
 #include "warp_cell_checks.cuh"
 
@@ -253,11 +254,11 @@ struct SharedHeldSegments {
 // A team serves the particle of its force_seat: those in cell order that hold no place in the
 // contact order, then those that do (contact_order.hpp).
 // Teams, which keep lists, check each particle they advance against its trigger for the next step
-// (ListCheck).
+// (ListCheck) and write it in cell order for the next step (NextCellOrder).
 template <unsigned Lanes, bool FullStress>
 __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kSumBlock)
     forces_kernel(SortedView view, CanonicalState state, ForceWalks walks, NeighbourLists lists, NearNotes notes,
-                  ListCheck check) {
+                  ListCheck check, NextCellOrder next) {
   follow_previous_kernel();
   const TeamSeat team = team_seat<Lanes>();
   const ForceSeat seat = force_seat(view, walks, team.member);
@@ -302,6 +303,13 @@ __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kS
   lanes_touching_wall = team_sum<Lanes>(lanes_touching_wall);
   const bool stores = active && lane == 0;
   if (stores) store_advance(view, state, sum, advance, lanes_touching_wall > 0);
+  if (kTeam && stores && next.active()) {
+    if (advance.integrates) {
+      next.put(s, particle.body, advance.position, advance.velocity);
+    } else {
+      next.put(s, particle.body, make_vec4(particle.x, 0.0f), make_vec4(particle.u, particle.position_carry));
+    }
+  }
   if (kTeam && check.active())
     check.note(stores && advance.integrates, advance.i, particle.body, xyz(advance.position));
 }
@@ -370,7 +378,7 @@ void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_la
     launch_after_previous(scene.full_stress_viscosity ? forces_kernel<L, true> : forces_kernel<L, false>,
                           blocks_for(teams * L, kSumBlock), kSumBlock, stream, "launch the forces",
                           sorted_view(scene, state), canonical_state(state), walks, team_lists(state, L), notes,
-                          list_check(state));
+                          list_check(state), next_cell_order(state));
   });
 }
 

@@ -134,6 +134,13 @@ TEST_F(DeviceArraysTest, ArraysHaveTheScenesSizes) {
   EXPECT_EQ(bytes_of(one_lane, "list_count"), 0u);
   EXPECT_EQ(bytes_of(listed, "list_count"), n * kTeamLanes * 4);
   EXPECT_EQ(bytes_of(listed, "list_index"), n * kTeamLanes * kernels::team_list_capacity(kTeamLanes) * 4);
+  // With lists, the next step's cell-ordered copy and, with rigid bodies, each particle's place
+  // (next_cell_order.cuh); one lane copies at every rebuild instead.
+  EXPECT_EQ(bytes_of(listed, "next_sorted_position"), n * 16);
+  EXPECT_EQ(bytes_of(listed, "next_sorted_velocity"), n * 16);
+  EXPECT_EQ(bytes_of(listed, "place_of"), n * 4);
+  EXPECT_EQ(bytes_of(one_lane, "next_sorted_position"), 0u);
+  EXPECT_EQ(bytes_of(one_lane, "place_of"), 0u);
   EXPECT_EQ(bytes_of(listed, "correction"), deformables * sizeof(kernels::Mat3));
   EXPECT_EQ(bytes_of(listed, "corrected_stress_action"), 9 * deformables * sizeof(float));
   EXPECT_EQ(bytes_of(listed, "rigid_bodies"), rigid_bodies * sizeof(kernels::RigidBody));
@@ -177,21 +184,23 @@ TEST_F(DeviceArraysTest, DeformableAndRestDensityArraysAddExactlyTheirBytes) {
 
 // Rest offsets place the particles of movable rigid bodies: a scene without one (here the same
 // scene with its rigid sphere taken out of the rigid-body list) holds none: 16 bytes per particle
-// less, and the body's record and ticket.
+// less, 4 more with lists (place_of, for the rigid placement's cell-ordered writes), and the
+// body's record and ticket.
 TEST_F(DeviceArraysTest, OnlyScenesWithRigidBodiesHoldRestOffsets) {
   FloatScene without = scene;
   without.rigid_bodies.clear();
   EXPECT_EQ(bytes_of(listed_arrays(without, chunks, kGridBlocks, kTeamLanes), "rest_offset"), 0u);
   EXPECT_EQ(kernels::device_array_sizes(scene, chunks, kGridBlocks, kTeamLanes).total_bytes -
                 kernels::device_array_sizes(without, chunks, kGridBlocks, kTeamLanes).total_bytes,
-            setup.size() * sizeof(kernels::Vec4) +
+            setup.size() * (sizeof(kernels::Vec4) + sizeof(std::uint32_t)) +
                 scene.rigid_bodies.size() * (sizeof(kernels::RigidBody) + sizeof(std::uint32_t)));
 }
 
 // Only a team keeps neighbour lists: one lane per particle (large scenes) spends no bytes on them,
 // and every team size has lists of at least two entries (a list holds capacity - 1 neighbours),
-// each particle's place at the rebuild (16 bytes), each body's trigger and one refresh state
-// (list_skin.hpp). The scene's cells are those of a team's (h + skin).
+// each particle's position at the rebuild (16 bytes), the next step's cell-ordered copy (32) and
+// its place in cell order (4: the scene has a rigid body), each body's trigger and one refresh
+// state (list_skin.hpp, next_cell_order.cuh). The scene's cells are those of a team's (h + skin).
 TEST_F(DeviceArraysTest, OnlyTeamsKeepNeighbourLists) {
   const FloatScene listing = kernels::make_float_scene_with_list_cells(setup);
   const std::size_t n = setup.size();
@@ -199,7 +208,8 @@ TEST_F(DeviceArraysTest, OnlyTeamsKeepNeighbourLists) {
   // Less the contact order, which teams do not keep.
   const std::size_t one_lane = kernels::device_array_sizes(listing, chunks, kGridBlocks, 1).total_bytes -
                                bytes_of(listed, "contact_order") - bytes_of(listed, "contact_taken");
-  for (const char* name : {"list_count", "list_index", "list_origin", "list_trigger2", "list_refresh"}) {
+  for (const char* name : {"list_count", "list_index", "list_origin", "list_trigger2", "list_refresh",
+                           "next_sorted_position", "next_sorted_velocity", "place_of"}) {
     EXPECT_EQ(bytes_of(listed, name), 0u) << name;
   }
   ASSERT_EQ(listing.list_trigger2.size(), setup.bodies.size());
@@ -208,8 +218,8 @@ TEST_F(DeviceArraysTest, OnlyTeamsKeepNeighbourLists) {
     const std::uint32_t capacity = kernels::team_list_capacity(lanes);
     EXPECT_GE(capacity, 2u);
     EXPECT_EQ(kernels::device_array_sizes(listing, chunks, kGridBlocks, lanes).total_bytes - one_lane,
-              n * lanes * (1 + capacity) * sizeof(std::uint32_t) + n * sizeof(kernels::Vec4) +
-                  setup.bodies.size() * sizeof(float) + sizeof(kernels::ListRefreshState));
+              n * lanes * (1 + capacity) * sizeof(std::uint32_t) + 3 * n * sizeof(kernels::Vec4) +
+                  n * sizeof(std::uint32_t) + setup.bodies.size() * sizeof(float) + sizeof(kernels::ListRefreshState));
   }
 }
 
