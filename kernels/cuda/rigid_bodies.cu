@@ -87,11 +87,19 @@ __global__ void rigid_place_kernel(const RigidChunk* chunks, const RigidBody* bo
   const std::uint32_t offset = blockIdx.y * kBlock + threadIdx.x;
   const bool places = offset < chunk.count;
   const std::uint32_t i = chunk.first + offset;
-  if (places) place_rigid_particle(body, rotation, omega, xyz(rest_offset[i]), state.position[i], state.velocity[i]);
-  if (places && next.active()) next.put(next.place_of[i], body_of_particle[i], state.position[i], state.velocity[i]);
-  if (check.active()) {
-    check.note(places, i, places ? body_of_particle[i] : 0u, places ? xyz(state.position[i]) : Vec3{0, 0, 0});
+  // The loads first, then the particle placed in registers and stored from there.
+  const bool lists = check.active();
+  const std::uint32_t particle_body = places && lists ? body_of_particle[i] : 0u;
+  const std::uint32_t place = places && next.active() ? next.place_of[i] : 0u;
+  Vec4 position{0, 0, 0, 0};
+  Vec4 velocity{0, 0, 0, 0};
+  if (places) {
+    place_rigid_particle(body, rotation, omega, xyz(rest_offset[i]), position, velocity);
+    state.position[i] = position;
+    state.velocity[i] = velocity;
+    if (next.active()) next.put(place, particle_body, position, velocity);
   }
+  if (lists) check.note(places, i, particle_body, xyz(position));
 }
 
 }  // namespace
