@@ -599,11 +599,15 @@ MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, const F
 
 // ---- The grid's last stage: particles in cell order ----
 
+// A particle's cell-ordered position record: where it stands, with its body's index in the fourth
+// component (body_of).
+MSSPH_HD Vec4 cell_ordered_position(Vec3 x, std::uint32_t body) { return make_vec4(x, index_as_float_bits(body)); }
+
 // Copies canonical particle i's position (with its body index) and velocity into cell order, as
 // sorted particle s.
 MSSPH_HD void place_in_cell_order(std::uint32_t s, std::uint32_t i, const Vec4* position, const Vec4* velocity,
                                   const std::uint32_t* body, Vec4* sorted_position, Vec4* sorted_velocity) {
-  sorted_position[s] = make_vec4(xyz(position[i]), index_as_float_bits(body[i]));
+  sorted_position[s] = cell_ordered_position(xyz(position[i]), body[i]);
   sorted_velocity[s] = velocity[i];
 }
 

@@ -17,10 +17,9 @@ struct NextCellOrder {
 
   __device__ bool active() const { return position != nullptr; }
 
-  // Particle of body `body` at place s, with its canonical position and velocity after this step.
-  __device__ void put(std::uint32_t s, std::uint32_t body, const Vec4& canonical_position,
-                      const Vec4& canonical_velocity) const {
-    position[s] = make_vec4(xyz(canonical_position), index_as_float_bits(body));
+  // Particle of body `body` at place s, standing at x with its canonical velocity after this step.
+  __device__ void put(std::uint32_t s, std::uint32_t body, Vec3 x, const Vec4& canonical_velocity) const {
+    position[s] = cell_ordered_position(x, body);
     velocity[s] = canonical_velocity;
   }
 };

@@ -97,7 +97,7 @@ __global__ void rigid_place_kernel(const RigidChunk* chunks, const RigidBody* bo
     place_rigid_particle(body, rotation, omega, xyz(rest_offset[i]), position, velocity);
     state.position[i] = position;
     state.velocity[i] = velocity;
-    if (next.active()) next.put(place, particle_body, position, velocity);
+    if (next.active()) next.put(place, particle_body, xyz(position), velocity);
   }
   if (lists) check.note(places, i, particle_body, xyz(position));
 }

@@ -305,9 +305,9 @@ __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kS
   if (stores) store_advance(view, state, sum, advance, lanes_touching_wall > 0);
   if (kTeam && stores && next.active()) {
     if (advance.integrates) {
-      next.put(s, particle.body, advance.position, advance.velocity);
+      next.put(s, particle.body, xyz(advance.position), advance.velocity);
     } else {
-      next.put(s, particle.body, make_vec4(particle.x, 0.0f), make_vec4(particle.u, particle.position_carry));
+      next.put(s, particle.body, particle.x, make_vec4(particle.u, particle.position_carry));
     }
   }
   if (kTeam && check.active())
