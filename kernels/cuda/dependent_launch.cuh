@@ -2,17 +2,20 @@
 // Programmatic dependent launch (compute capability 9.0): a step kernel launched by
 // launch_after_previous may be scheduled while the kernel before it in the stream still runs, onto
 // the multiprocessors that kernel's finished blocks free, instead of after its last block ends and
-// the launch's own latency. Every step kernel calls follow_previous_kernel before it touches device
-// memory: that waits until the kernel before it has finished and its writes are visible, so each
-// kernel reads what it read before, and lets the kernel after it be scheduled in turn.
+// the launch's own latency. Every step kernel calls follow_previous_kernel before it reads what the
+// kernel just before it writes: that waits until that kernel has finished and its writes are
+// visible, so each kernel reads what it read before, and lets the kernel after it be scheduled in
+// turn. A kernel is therefore scheduled only once the kernels two and more launches before it have
+// finished, and before its wait it may load what only those wrote (rigid_bodies.cu does).
 #include "cuda_check.hpp"
 
 #include <utility>
 
 namespace mssph::kernels {
 
-// Called first by every thread of a step kernel. Below compute capability 9.0 a launch never
-// overlaps the one before it, and there is nothing to wait for.
+// Called by every thread of a step kernel before it reads what the kernel before it writes. Below
+// compute capability 9.0 a launch never overlaps the one before it, and there is nothing to wait
+// for.
 __device__ inline void follow_previous_kernel() {
 #if defined(__CUDA_ARCH__) && __CUDA_ARCH__ >= 900
   cudaGridDependencySynchronize();

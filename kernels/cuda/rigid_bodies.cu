@@ -29,19 +29,21 @@ __device__ Wrench load_chunk_wrench(const Wrench* partial, std::uint32_t c) {
 __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBody* bodies, RigidBody* host_copy,
                                               CanonicalState state, Wrench* partial, const std::uint32_t* first_chunk,
                                               std::uint32_t* tickets, StepParameters step) {
+  // Loaded while the force kernel may still run (dependent_launch.cuh): the chunk tables are set
+  // at upload, the body by this kernel a step before.
+  const RigidChunk chunk = chunks[blockIdx.x];
+  const Vec3 centre = bodies[chunk.rigid].position;
+  const std::uint32_t first = first_chunk[chunk.rigid];
+  const std::uint32_t end = first_chunk[chunk.rigid + 1];
   follow_previous_kernel();
   using BlockReduce = cub::BlockReduce<Wrench, kBlock>;
   __shared__ typename BlockReduce::TempStorage reduce_storage;
   __shared__ bool last;
-  const RigidChunk chunk = chunks[blockIdx.x];
-  const Vec3 centre = bodies[chunk.rigid].position;
   Wrench wrench{{0, 0, 0}, {0, 0, 0}};
   for_each_chunk_particle(chunk.first, chunk.count, [&](std::uint32_t i) {
     wrench = wrench + particle_wrench(xyz(state.position[i]), xyz(state.interaction_force[i]), centre);
   });
   const Wrench total = BlockReduce(reduce_storage).Reduce(wrench, WrenchSum());
-  const std::uint32_t first = first_chunk[chunk.rigid];
-  const std::uint32_t end = first_chunk[chunk.rigid + 1];
   if (threadIdx.x == 0) {
     partial[blockIdx.x] = total;
     __threadfence();  // the partial is visible before the ticket is taken
@@ -73,28 +75,30 @@ __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBod
 __global__ void rigid_place_kernel(const RigidChunk* chunks, const RigidBody* bodies, CanonicalState state,
                                    const Vec4* rest_offset, const std::uint32_t* body_of_particle, ListCheck check,
                                    NextCellOrder next) {
+  // Loaded while the wrench kernel may still run (dependent_launch.cuh): chunks, rest offsets and
+  // bodies of particles are set at upload, the places in cell order by the grid kernel.
+  const RigidChunk chunk = chunks[blockIdx.x];
+  const std::uint32_t offset = blockIdx.y * kBlock + threadIdx.x;
+  const bool places = offset < chunk.count;
+  const std::uint32_t i = chunk.first + offset;
+  const bool lists = check.active();
+  const std::uint32_t particle_body = places && lists ? body_of_particle[i] : 0u;
+  const std::uint32_t place = places && next.active() ? next.place_of[i] : 0u;
+  const Vec3 rest = places ? xyz(rest_offset[i]) : Vec3{0, 0, 0};
   follow_previous_kernel();
   __shared__ RigidBody body;
   __shared__ Mat3 rotation;
   __shared__ Vec3 omega;
-  const RigidChunk chunk = chunks[blockIdx.x];
   if (threadIdx.x == 0) {
     body = bodies[chunk.rigid];
     rotation = rotation_matrix(body.orientation);
     omega = angular_velocity(body);
   }
   __syncthreads();
-  const std::uint32_t offset = blockIdx.y * kBlock + threadIdx.x;
-  const bool places = offset < chunk.count;
-  const std::uint32_t i = chunk.first + offset;
-  // The loads first, then the particle placed in registers and stored from there.
-  const bool lists = check.active();
-  const std::uint32_t particle_body = places && lists ? body_of_particle[i] : 0u;
-  const std::uint32_t place = places && next.active() ? next.place_of[i] : 0u;
   Vec4 position{0, 0, 0, 0};
   Vec4 velocity{0, 0, 0, 0};
   if (places) {
-    place_rigid_particle(body, rotation, omega, xyz(rest_offset[i]), position, velocity);
+    place_rigid_particle(body, rotation, omega, rest, position, velocity);
     state.position[i] = position;
     state.velocity[i] = velocity;
     if (next.active()) next.put(place, particle_body, xyz(position), velocity);
