@@ -94,7 +94,10 @@ class CudaBackend final : public Backend {
   std::uint64_t steps_ = 0;
 
   cudaStream_t stream_ = nullptr;
-  std::array<cudaEvent_t, kPhaseCount + 1> events_{};  // events_[p], events_[p + 1] enclose phase p
+  // The phases in the order record_step launches them; events_[k], events_[k + 1] enclose the k-th.
+  static constexpr std::array<Phase, kPhaseCount> kLaunchOrder{kNeighbours, kDensities, kRotations, kForces,
+                                                               kIntegration};
+  std::array<cudaEvent_t, kPhaseCount + 1> events_{};
   // Per way round (with lists: way_ reads sorted_*, writes next_sorted_*; the other way the
   // reverse; without lists only way 0): the step alone, and the step with the phase events,
   // which lengthen it (Backend::set_phase_timing).
@@ -151,30 +154,34 @@ CudaBackend::StepGraph CudaBackend::capture_step(bool timed) {
 }
 
 // Paper 3.2 as a kernel sequence, one phase of Backend's list each: the neighbour grid (counting
-// sort into cells, cell-ordered copies), rotations and elastic forces, densities, forces with the
-// leap-frog integration of the particles, rigid-body dynamics. When timed, events between the
-// phases time them.
+// sort into cells, cell-ordered copies), densities, rotations and elastic forces, forces with the
+// leap-frog integration of the particles, rigid-body dynamics. Steps 1 and 2 need only the last
+// step's particles, so the rotations, launched after the density pass, run beside it
+// (rotation_stress_kernel). When timed, events between the phases time them.
 void CudaBackend::record_step(cudaStream_t stream, bool timed) {
   // External event records: the graph's replays record them, so their times can be read after
-  // each launch (a plain record during capture only orders the graph's nodes).
-  const auto mark = [&](std::size_t event) {
+  // each launch (a plain record during capture only orders the graph's nodes). One before each
+  // phase, in kLaunchOrder, and one after the last.
+  std::size_t next_event = 0;
+  const auto mark = [&] {
     if (timed)
-      cuda_check(cudaEventRecordWithFlags(events_[event], stream, cudaEventRecordExternal), "record phase event");
+      cuda_check(cudaEventRecordWithFlags(events_[next_event], stream, cudaEventRecordExternal), "record phase event");
+    ++next_event;
   };
-  mark(kNeighbours);
+  mark();
   record_neighbour_grid(stream);
-  mark(kRotations);
-  launch_elasticity(scene_, state_, deformable_team_lanes_, stream);
+  mark();
   // One lane per particle: the density pass notes each fluid particle's near candidates for the
   // force pass (near_notes.hpp); teams visit their lists instead.
   const NearNotes notes = keeps_lists() ? NearNotes{} : step_near_notes(state_);
-  mark(kDensities);
   launch_densities(scene_, state_, team_lanes_, notes, stream);
-  mark(kForces);
+  mark();
+  launch_elasticity(scene_, state_, deformable_team_lanes_, stream);
+  mark();
   launch_forces(scene_, state_, team_lanes_, notes, stream);
-  mark(kIntegration);
+  mark();
   launch_rigid_bodies(scene_, chunks_, state_, readback_.rigid_bodies_on_device(), stream);
-  mark(kPhaseCount);
+  mark();
   cuda_check(cudaGetLastError(), "launch step kernels");
 }
 
@@ -318,10 +325,10 @@ std::vector<double> CudaBackend::last_phase_seconds() const {
   std::vector<double> seconds(kPhaseCount, std::numeric_limits<double>::quiet_NaN());
   if (!last_step_timed_) return seconds;
   cuda_check(cudaEventSynchronize(events_[kPhaseCount]), "wait for the step");
-  for (std::size_t p = 0; p < kPhaseCount; ++p) {
+  for (std::size_t k = 0; k < kPhaseCount; ++k) {
     float ms = 0.0f;
-    cuda_check(cudaEventElapsedTime(&ms, events_[p], events_[p + 1]), "read phase time");
-    seconds[p] = 1e-3 * ms;
+    cuda_check(cudaEventElapsedTime(&ms, events_[k], events_[k + 1]), "read phase time");
+    seconds[kLaunchOrder[k]] = 1e-3 * ms;
   }
   return seconds;
 }

@@ -92,9 +92,9 @@ ForceWalks force_walks(DeviceState& state) {
 // A fluid particle's canonical velocity and interaction force hold nothing from the density pass
 // to the force pass's store: the grid kernel has copied the velocity into cell order, and the force
 // pass writes both for every fluid particle (store_advance: fluid particles always integrate), in
-// the thread that read the particle's notes, after reading them; the bond passes, which read
-// deformable particles' velocities, run before the density pass. The grid's keys and unordered ids
-// are read only inside the grid kernel.
+// the thread that read the particle's notes, after reading them; the bond passes, which may run
+// while the density pass writes notes, read deformable particles' velocities only. The grid's keys
+// and unordered ids are read only inside the grid kernel.
 NearNotes step_near_notes(DeviceState& state) {
   return NearNotes{state.velocity.data(), state.interaction_force.data(), reinterpret_cast<float*>(state.keys.data()),
                    reinterpret_cast<float*>(state.unordered_id.data())};

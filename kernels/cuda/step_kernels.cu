@@ -77,7 +77,10 @@ inline constexpr int kBondBlocksPerMultiprocessor = 4;
 template <unsigned Lanes, bool Viscous>
 __global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor)
     rotation_stress_kernel(DeviceDeformableView view) {
-  follow_previous_kernel();
+  // Its reads (positions and velocities of the last step, rest bonds, last step's rotations) and
+  // writes (rotations, stresses, deformation gradients) are none of the grid's and density pass's,
+  // which may still run: it works at once and waits at its end (dependent_launch.cuh).
+  let_next_kernel_be_scheduled();
   const TeamSeat seat = team_seat<Lanes>();
   const std::uint32_t d = seat.member, lane = seat.lane;
   const bool active = d < view.count;
@@ -112,6 +115,7 @@ __global__ void __launch_bounds__(kBlock, kBondBlocksPerMultiprocessor)
       }
     }
   }
+  wait_for_previous_kernel();
 }
 
 template <unsigned Lanes>
