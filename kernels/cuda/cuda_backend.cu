@@ -157,7 +157,9 @@ CudaBackend::StepGraph CudaBackend::capture_step(bool timed) {
 // sort into cells, cell-ordered copies), densities, rotations and elastic forces, forces with the
 // leap-frog integration of the particles, rigid-body dynamics. Steps 1 and 2 need only the last
 // step's particles, so the rotations, launched after the density pass, run beside it
-// (rotation_stress_kernel). When timed, events between the phases time them.
+// (rotation_stress_kernel); the force pass sums beside the elastic one, whose forces only its
+// leap-frog reads (forces_kernel). When timed, events between the phases time them and keep them
+// apart.
 void CudaBackend::record_step(cudaStream_t stream, bool timed) {
   // External event records: the graph's replays record them, so their times can be read after
   // each launch (a plain record during capture only orders the graph's nodes). One before each
@@ -176,9 +178,9 @@ void CudaBackend::record_step(cudaStream_t stream, bool timed) {
   const NearNotes notes = keeps_lists() ? NearNotes{} : step_near_notes(state_);
   launch_densities(scene_, state_, team_lanes_, notes, stream);
   mark();
-  launch_elasticity(scene_, state_, deformable_team_lanes_, stream);
+  const bool elastic_forces = launch_elasticity(scene_, state_, deformable_team_lanes_, stream);
   mark();
-  launch_forces(scene_, state_, team_lanes_, notes, stream);
+  launch_forces(scene_, state_, team_lanes_, notes, elastic_forces, stream);
   mark();
   launch_rigid_bodies(scene_, chunks_, state_, readback_.rigid_bodies_on_device(), stream);
   mark();

@@ -7,10 +7,11 @@
 // visible, so each kernel reads what it read before, and lets the kernel after it be scheduled in
 // turn. A kernel that follows one that waited first is therefore scheduled only once the kernels
 // two and more launches before it have finished, and before its wait it may load what only those
-// wrote (rigid_bodies.cu does). A kernel that neither reads what the kernels still running before
-// it write nor writes what they read may do all its work first: it lets the next kernel be
-// scheduled at its start and waits at its end (rotation_stress_kernel, step_kernels.cu), so the
-// kernel after it still finds every earlier kernel finished when its own wait returns.
+// wrote (rigid_bodies.cu's kernels load so; forces_kernel, step_kernels.cu, sums so after the
+// elastic pass). A kernel that neither reads what the kernels still running before it write nor
+// writes what they read may do all its work first: it lets the next kernel be scheduled at its
+// start and waits at its end (rotation_stress_kernel, step_kernels.cu), so the kernel after it
+// still finds every earlier kernel finished when its own wait returns.
 #include "cuda_check.hpp"
 
 #include <utility>

@@ -259,11 +259,15 @@ struct SharedHeldSegments {
 // contact order, then those that do (contact_order.hpp).
 // Teams, which keep lists, check each particle they advance against its trigger for the next step
 // (ListCheck) and write it in cell order for the next step (NextCellOrder).
+// After the elastic pass (`after_elastic_forces`), whose one write, the elastic forces, only the
+// leap-frog reads, a team sums first and waits after: what the sums read was written by kernels
+// that finished before the elastic pass was scheduled (dependent_launch.cuh), so the force pass
+// runs beside the elastic one.
 template <unsigned Lanes, bool FullStress>
 __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kSumBlock)
     forces_kernel(SortedView view, CanonicalState state, ForceWalks walks, NeighbourLists lists, NearNotes notes,
-                  ListCheck check, NextCellOrder next) {
-  follow_previous_kernel();
+                  ListCheck check, NextCellOrder next, bool after_elastic_forces) {
+  if (!after_elastic_forces) follow_previous_kernel();
   const TeamSeat team = team_seat<Lanes>();
   const ForceSeat seat = force_seat(view, walks, team.member);
   const std::uint32_t s = seat.s, lane = team.lane;
@@ -292,6 +296,7 @@ __global__ void __launch_bounds__(kSumBlock, kForceThreadsPerMultiprocessor / kS
   }
   sum = {team_sum<Lanes>(sum.pressure), team_sum<Lanes>(sum.viscosity), team_sum<Lanes>(sum.interaction),
          team_min<Lanes>(sum.nearest_boundary2)};
+  if (after_elastic_forces) follow_previous_kernel();
   // apply_forces split over the team: every lane advances the particle from the same team sum
   // (same bits), tests its list again (one lane: every candidate around the new position) for a
   // wall, and the team counts the lanes that found one; lane 0 then rejects the move if any did
@@ -340,9 +345,9 @@ void with_team_lanes(unsigned lanes, Launch&& launch) {
 
 }  // namespace
 
-void launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream) {
+bool launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned team_lanes, cudaStream_t stream) {
   const DeviceDeformableView view = deformable_view(scene, state);
-  if (view.count == 0) return;
+  if (view.count == 0) return false;
   const bool viscous = std::any_of(scene.elastic_bodies.begin(), scene.elastic_bodies.end(),
                                    [](const ElasticParameters& body) { return body.retardation_time > 0.0f; });
   with_team_lanes(team_lanes, [&](auto lanes) {
@@ -352,6 +357,7 @@ void launch_elasticity(const FloatScene& scene, DeviceState& state, unsigned tea
                           stream, "launch the rotations", view);
     launch_after_previous(elastic_force_kernel<L>, blocks, kBlock, stream, "launch the elastic forces", view);
   });
+  return true;
 }
 
 void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team_lanes, const NearNotes& notes,
@@ -374,7 +380,7 @@ void launch_densities(const FloatScene& scene, DeviceState& state, unsigned team
 }
 
 void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_lanes, const NearNotes& notes,
-                   cudaStream_t stream) {
+                   bool after_elastic_forces, cudaStream_t stream) {
   const ForceWalks walks = force_walks(state);
   const std::size_t teams = state.position.size() + walks.contact_capacity;
   with_team_lanes(team_lanes, [&](auto lanes) {
@@ -382,7 +388,7 @@ void launch_forces(const FloatScene& scene, DeviceState& state, unsigned team_la
     launch_after_previous(scene.full_stress_viscosity ? forces_kernel<L, true> : forces_kernel<L, false>,
                           blocks_for(teams * L, kSumBlock), kSumBlock, stream, "launch the forces",
                           sorted_view(scene, state), canonical_state(state), walks, team_lists(state, L), notes,
-                          list_check(state), next_cell_order(state));
+                          list_check(state), next_cell_order(state), after_elastic_forces);
   });
 }
 
