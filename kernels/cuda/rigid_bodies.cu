@@ -6,6 +6,7 @@
 #include "next_cell_order.cuh"
 
 #include <cub/cub.cuh>
+#include <cuda/atomic>
 
 namespace mssph::kernels {
 namespace {
@@ -22,17 +23,21 @@ __device__ Wrench load_chunk_wrench(const Wrench* partial, std::uint32_t c) {
 
 // One block per chunk (chunk_tables.hpp), thread t taking its particles t, t + kBlock, ... in
 // order (for_each_chunk_particle): the wrench of the chunk's interaction forces about the body's
-// centre. The block that finishes a body's last chunk (a ticket counter tells) then adds the
-// body's chunk wrenches, thread t those of chunks t, t + kBlock, ... in order and CUB's block tree
+// centre. The block that finishes a body's last chunk (a ticket counter tells; the add that takes
+// the ticket publishes the block's partial and sees every earlier block's) then adds the body's
+// chunk wrenches, thread t those of chunks t, t + kBlock, ... in order and CUB's block tree
 // the threads' sums, and integrates the body (eq. 8, 9): which block does it varies, the sums'
 // order does not, so runs repeat bit for bit. The body goes to `host_copy` too.
 __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBody* bodies, RigidBody* host_copy,
                                               CanonicalState state, Wrench* partial, const std::uint32_t* first_chunk,
                                               std::uint32_t* tickets, StepParameters step) {
   // Loaded while the force kernel may still run (dependent_launch.cuh): the chunk tables are set
-  // at upload, the body by this kernel a step before.
+  // at upload, the body by this kernel a step before. Thread 0 loads the whole body now, so the
+  // last block does not wait for it after its sums.
   const RigidChunk chunk = chunks[blockIdx.x];
   const Vec3 centre = bodies[chunk.rigid].position;
+  RigidBody body{};
+  if (threadIdx.x == 0) body = bodies[chunk.rigid];
   const std::uint32_t first = first_chunk[chunk.rigid];
   const std::uint32_t end = first_chunk[chunk.rigid + 1];
   follow_previous_kernel();
@@ -46,12 +51,12 @@ __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBod
   const Wrench total = BlockReduce(reduce_storage).Reduce(wrench, WrenchSum());
   if (threadIdx.x == 0) {
     partial[blockIdx.x] = total;
-    __threadfence();  // the partial is visible before the ticket is taken
-    last = atomicAdd(&tickets[chunk.rigid], 1u) + 1u == end - first;
+    cuda::atomic_ref<std::uint32_t, cuda::thread_scope_device> ticket(tickets[chunk.rigid]);
+    last = ticket.fetch_add(1u, cuda::memory_order_acq_rel) + 1u == end - first;
   }
   __syncthreads();
   if (!last) return;
-  __threadfence();
+  __threadfence();  // the block's other threads read the partials after thread 0's acquire
   Wrench share{{0, 0, 0}, {0, 0, 0}};
 #pragma unroll 4  // loads in flight together; a body has more than kBlock chunks only above ~1M particles
   for (std::uint32_t c = first + threadIdx.x; c < end; c += kBlock) share = share + load_chunk_wrench(partial, c);
@@ -59,7 +64,6 @@ __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBod
   const Wrench sum = BlockReduce(reduce_storage).Reduce(share, WrenchSum());
   if (threadIdx.x != 0) return;
   tickets[chunk.rigid] = 0;  // ready for the next step
-  RigidBody body = bodies[chunk.rigid];
   body.interaction_force = sum.force;
   body.interaction_torque = sum.torque;
   integrate_rigid_body(body, step.gravity, step.dt);
