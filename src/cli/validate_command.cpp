@@ -113,12 +113,14 @@ void check_report_outputs(const ValidateArgs& args, const std::vector<const Vali
   }
 }
 
-std::string command_line(const ValidateArgs& args) {
+// The command that repeats the run: with the seed it used, fresh or given.
+std::string command_line(const ValidateArgs& args, std::uint64_t seed) {
   std::string line = "mssph validate";
   if (args.quick) line += " --quick";
   line += " --backend " + args.backend;
   for (const std::string& s : args.suites) line += " --suite " + s;
   for (const std::string& c : args.cases) line += " --case " + c;
+  line += " --seed " + std::to_string(seed);
   line += " --out " + args.out;
   return line;
 }
@@ -155,7 +157,7 @@ int run_validate(const ValidateArgs& args) {
   info.mssph_version = build_info().version;
   info.git_commit = build_info().git_commit;
   info.date = utc_now();
-  info.command_line = command_line(args);
+  info.command_line = command_line(args, context.seed);
   info.mode = args.quick ? "quick" : "full";
   info.physics_backend = context.physics_backend;
   info.physics_precision = context.physics_backend == "reference" ? "float64" : "float32";

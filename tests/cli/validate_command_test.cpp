@@ -29,6 +29,9 @@ TEST_F(Validate, TinyCaseWritesTheTableAndEveryReportFile) {
 
   const nlohmann::json report = read_json(work("report/report.json"));
   EXPECT_EQ(report["run"]["mode"], "quick");
+  // The recorded command repeats the run: it names the fresh seed the run drew.
+  EXPECT_THAT(report["run"]["command_line"].get<std::string>(),
+              HasSubstr("--case coupling_step --seed " + std::to_string(report["run"]["seed"].get<std::uint64_t>())));
   for (const char* key : {"git_commit", "date", "physics_backend", "physics_device", "physics_precision", "host_cpu"}) {
     EXPECT_FALSE(report["run"][key].get<std::string>().empty()) << key;
   }
