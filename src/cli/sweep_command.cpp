@@ -60,6 +60,7 @@ struct SweepArgs {
 // The metric names scripts/analysis/log_metrics.py defines: the one list a sweep file's
 // "metrics" is checked against.
 std::vector<std::string> known_metrics() {
+  check_plotting_python();  // the metrics and the summary are scripts that need it
   std::string output;
   const int code = run_python_script_capturing(kMetricsScript, {"--list"}, output);
   if (code != 0) {

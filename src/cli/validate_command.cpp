@@ -104,7 +104,7 @@ void check_report_outputs(const ValidateArgs& args, const std::vector<const Vali
       if (name.rfind(prefix, 0) == 0 && entry.path().extension() == ".png") names.push_back(name);
     }
   }
-  for (const std::string& name : names) check_output_file("--out", (out / name).string(), args.force);
+  check_script_outputs(args.out, names, args.force);
   const fs::path runs = out / "runs";
   if (!args.force && fs::is_directory(runs, error) && !fs::is_empty(runs, error)) {
     throw InputError("--out " + args.out + ": " + runs.string() +

@@ -10,7 +10,8 @@
 namespace mssph::cli {
 
 // The checks before a command starts the work whose files a script will draw into `out`: throws
-// InputError "--out <out>/<name>: ..." when one of `names` may not be written (check_output_file).
+// InputError "--out <out>/<name>: ..." when one of `names` may not be written (check_output_file),
+// and std::runtime_error when the script could not run (check_plotting_python).
 void check_script_outputs(const std::string& out, const std::vector<std::string>& names, bool replace);
 
 // Runs `relative` with the arguments `arguments` makes for the folder it is to write into, then
