@@ -77,8 +77,8 @@ void add_figure3(CLI::App& figure, int& exit_code) {
       "DIR/figure3_checks.json. Redraw or re-check with: python3 scripts/figures/figure3.py --out DIR\n"
       "DIR/sphere_drop_*.h5.\n"
       "\n"
-      "Exit codes: 0 all checks pass; 1 a check failed or a run did not complete; 2 bad input;\n"
-      "3 a run blew up.");
+      "Exit codes: 0 all checks pass; 1 a check failed, a run did not complete, or Python lacks\n"
+      "h5py, NumPy or matplotlib (checked before the runs); 2 bad input; 3 a run blew up.");
   cmd->callback([o, &exit_code] { guarded(exit_code, [&] { return make_figure3(*o); }); });
 }
 
@@ -102,8 +102,8 @@ void add_figure_tss(CLI::App& figure, int& exit_code) {
       "force comes from the body touched (by the change of each body's interaction force) and reports\n"
       "the device's saturation, written to DIR/tss_checks.json.\n"
       "\n"
-      "Exit codes: 0 all checks pass; 1 a check failed or the run did not complete; 2 bad input;\n"
-      "3 the run blew up.");
+      "Exit codes: 0 all checks pass; 1 a check failed, the run did not complete, or Python lacks\n"
+      "h5py, NumPy or matplotlib (checked before the run); 2 bad input; 3 the run blew up.");
   cmd->callback([o, &exit_code] { guarded(exit_code, [&] { return make_figure_tss(*o); }); });
 }
 

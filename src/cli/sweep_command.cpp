@@ -60,7 +60,7 @@ struct SweepArgs {
 // The metric names scripts/analysis/log_metrics.py defines: the one list a sweep file's
 // "metrics" is checked against.
 std::vector<std::string> known_metrics() {
-  check_plotting_python();  // the metrics and the summary are scripts that need it
+  check_python_modules(kDataModules);  // the metrics and the summary are scripts that import them
   std::string output;
   const int code = run_python_script_capturing(kMetricsScript, {"--list"}, output);
   if (code != 0) {
@@ -315,10 +315,12 @@ int run_sweep(const SweepArgs& args) {
   return final_counts.failed > 0 ? kExitSimulationFailure : kExitOk;
 }
 
-int run_script_on_directory(const char* script, const std::string& directory, std::vector<std::string> extra) {
+int run_script_on_directory(const char* script, const std::vector<std::string>& modules, const std::string& directory,
+                            std::vector<std::string> extra) {
   if (!fs::is_regular_file(fs::path(directory) / kManifestName)) {
     throw InputError(directory + ": no " + std::string(kManifestName) + " here: not the --out folder of a sweep");
   }
+  check_python_modules(modules);
   std::vector<std::string> arguments{directory};
   arguments.insert(arguments.end(), extra.begin(), extra.end());
   return run_python_script(script, arguments);
@@ -390,9 +392,10 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       "Without --shard (and outside a Slurm array) a sweep ends by writing DIR/summary.h5 and\n"
       "DIR/summary.csv, as `mssph sweep merge DIR` does.\n"
       "\n"
-      "Exit codes: 0 every point completed; 1 interrupted, or a point did not complete, or another\n"
-      "error; 2 bad input (sweep file, a point the scene loader rejects, arguments): nothing runs;\n"
-      "3 a point failed (its log is kept, marked \"failed: ...\").");
+      "Exit codes: 0 every point completed; 1 interrupted, or a point did not complete, or Python\n"
+      "lacks h5py or NumPy (checked first: nothing runs), or another error; 2 bad input (sweep\n"
+      "file, a point the scene loader rejects, arguments): nothing runs; 3 a point failed (its log is\n"
+      "kept, marked \"failed: ...\").");
 
   auto merge_dir = std::make_shared<std::string>();
   CLI::App* merge = cmd->add_subcommand(
@@ -400,7 +403,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       "Summarise a sweep's folder: DIR/summary.h5 and DIR/summary.csv from the finished points; lists the missing");
   merge->add_option("dir", *merge_dir, "The sweep's --out folder")->required();
   merge->callback([merge_dir, &exit_code] {
-    guarded(exit_code, [&] { return run_script_on_directory(kSummaryScript, *merge_dir, {}); });
+    guarded(exit_code, [&] { return run_script_on_directory(kSummaryScript, kDataModules, *merge_dir, {}); });
   });
 
   auto plot_dir = std::make_shared<std::string>();
@@ -414,7 +417,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   plot->callback([plot_dir, plot_metric, &exit_code] {
     guarded(exit_code, [&] {
       return run_script_on_directory(
-          kPlotScript, *plot_dir,
+          kPlotScript, kPlottingModules, *plot_dir,
           plot_metric->empty() ? std::vector<std::string>{} : std::vector<std::string>{"--metric", *plot_metric});
     });
   });

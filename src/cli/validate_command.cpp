@@ -244,8 +244,9 @@ void add_validate_command(CLI::App& app, int& exit_code) {
       "\n"
       "An earlier report in --out is replaced only with --force.\n"
       "\n"
-      "Exit codes: 0 every case passed or was skipped; 1 a case failed (or the report could not be\n"
-      "written); 2 bad arguments, or an earlier report in the way (nothing is run).");
+      "Exit codes: 0 every case passed or was skipped; 1 a case failed, the report could not be\n"
+      "written, or Python lacks h5py, NumPy or matplotlib (checked first: nothing is run); 2 bad\n"
+      "arguments, or an earlier report in the way (nothing is run).");
   cmd->callback([args, seed_text, &exit_code] {
     guarded(exit_code, [&] {
       if (!seed_text->empty()) args->seed = parse_seed(*seed_text);

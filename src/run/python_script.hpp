@@ -15,10 +15,15 @@ std::string python_interpreter();
 // (e.g. "figures/figure3.py"); $MSSPH_SCRIPTS_DIR overrides the folder.
 std::string python_script_path(const std::string& relative);
 
-// Throws std::runtime_error unless the interpreter starts and imports h5py, NumPy and matplotlib,
-// which the scripts need: a command that ends in a script checks this before its runs, so a
-// machine without them fails at once, not after hours of simulation.
-void check_plotting_python();
+// The modules the scripts import: the figures, the validation report and `sweep plot` need all
+// three; a sweep's metrics and summary need the first two.
+inline const std::vector<std::string> kPlottingModules{"h5py", "numpy", "matplotlib"};
+inline const std::vector<std::string> kDataModules{"h5py", "numpy"};
+
+// Throws std::runtime_error unless the interpreter runs Python 3 and imports every one of
+// `modules`: a command that ends in a script checks this before its runs, so a machine without
+// them fails at once, not after hours of simulation.
+void check_python_modules(const std::vector<std::string>& modules);
 
 // Runs the script with the arguments, its stdout and stderr passed through, and returns its exit
 // code (127 when the interpreter could not be started, 128 + N when killed by signal N).

@@ -16,7 +16,7 @@ namespace mssph::cli {
 void check_script_outputs(const std::string& out, const std::vector<std::string>& names, bool replace) {
   for (const std::string& name : names)
     check_output_file("--out", (std::filesystem::path(out) / name).string(), replace);
-  check_plotting_python();
+  check_python_modules(kPlottingModules);
 }
 
 int run_python_script_into(const std::string& relative,

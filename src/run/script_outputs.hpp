@@ -11,7 +11,7 @@ namespace mssph::cli {
 
 // The checks before a command starts the work whose files a script will draw into `out`: throws
 // InputError "--out <out>/<name>: ..." when one of `names` may not be written (check_output_file),
-// and std::runtime_error when the script could not run (check_plotting_python).
+// and std::runtime_error when the script could not run (check_python_modules, kPlottingModules).
 void check_script_outputs(const std::string& out, const std::vector<std::string>& names, bool replace);
 
 // Runs `relative` with the arguments `arguments` makes for the folder it is to write into, then
