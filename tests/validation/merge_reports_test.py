@@ -61,7 +61,7 @@ class MergeReports(unittest.TestCase):
             self.assertEqual(case, by_name[case["case"]])
         self.assertEqual(merged["run"]["seed"], 7)
         self.assertIn("--case coupling_step", merged["run"]["command_line"])
-        self.assertIn("--case one_step --case patch_tests", merged["run"]["command_line"])
+        self.assertIn("--case one_step --case patch_tests --seed 7", merged["run"]["command_line"])
         with h5py.File(os.path.join(out, "validation.h5")) as h5:
             for part in (self.a, self.b):
                 with h5py.File(os.path.join(part, "validation.h5")) as source:
