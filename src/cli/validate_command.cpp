@@ -113,7 +113,7 @@ void check_report_outputs(const ValidateArgs& args, const std::vector<const Vali
   }
 }
 
-// The command that repeats the run: with the seed it used, fresh or given.
+// The command that repeats the run into a fresh --out: with the seed it used, fresh or given.
 std::string command_line(const ValidateArgs& args, std::uint64_t seed) {
   std::string line = "mssph validate";
   if (args.quick) line += " --quick";
