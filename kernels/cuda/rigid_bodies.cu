@@ -24,8 +24,9 @@ __device__ Wrench load_chunk_wrench(const Wrench* partial, std::uint32_t c) {
 // One block per chunk (chunk_tables.hpp), thread t taking its particles t, t + kBlock, ... in
 // order (for_each_chunk_particle): the wrench of the chunk's interaction forces about the body's
 // centre. The block that finishes a body's last chunk (a ticket counter tells; the add that takes
-// the ticket publishes the block's partial and sees every earlier block's) then adds the body's
-// chunk wrenches, thread t those of chunks t, t + kBlock, ... in order and CUB's block tree
+// the ticket publishes the block's partial and sees every earlier block's; the block barrier after
+// it orders the other threads' loads of the partials after that add) then adds the body's chunk
+// wrenches, thread t those of chunks t, t + kBlock, ... in order and CUB's block tree
 // the threads' sums, and integrates the body (eq. 8, 9): which block does it varies, the sums'
 // order does not, so runs repeat bit for bit. The body goes to `host_copy` too.
 __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBody* bodies, RigidBody* host_copy,
@@ -56,7 +57,6 @@ __global__ void rigid_wrench_integrate_kernel(const RigidChunk* chunks, RigidBod
   }
   __syncthreads();
   if (!last) return;
-  __threadfence();  // the block's other threads read the partials after thread 0's acquire
   Wrench share{{0, 0, 0}, {0, 0, 0}};
 #pragma unroll 4  // loads in flight together; a body has more than kBlock chunks only above ~1M particles
   for (std::uint32_t c = first + threadIdx.x; c < end; c += kBlock) share = share + load_chunk_wrench(partial, c);
