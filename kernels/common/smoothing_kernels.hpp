@@ -4,6 +4,9 @@
 // branches beyond the support test and, for a pair's distance, the coincident one).
 #include "vec_math.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace mssph::kernels {
 
 // A pair's distance r = |x_i - x_j| and 1 / r from r^2. On the GPU both come from one reciprocal
@@ -11,7 +14,9 @@ namespace mssph::kernels {
 // square root nor a division: those are IEEE instruction sequences with a slow-path branch, and a
 // warp runs a pair term whenever one of its 32 lanes meets a neighbour, at nearly every candidate.
 // The host takes the IEEE square root and division. Coincident particles (r <= 1e-12 h, where the
-// spiky gradient has no direction) get r = 0 and 1 / r = 0; a NaN r^2 gives a NaN r on both.
+// spiky gradient has no direction, and r^2 at most the smallest normal float) get r = 0 and
+// 1 / r = 0; a NaN r^2 gives a NaN r on both. Every r^2 past that test is a normal float, so the
+// GPU takes rsqrtf's approximation without its rescaling of subnormal arguments (the same bits).
 struct PairDistance {
   float r;        // [m]
   float inverse;  // 1 / r [1/m], 0 for coincident particles
@@ -24,7 +29,8 @@ struct SmoothingKernels {
   float spiky_value_coefficient;  // 15 / (pi h^6)
   float spiky_coefficient;        // -45 / (pi h^6)
   float laplacian_coefficient;    // 45 / (pi h^6)
-  float coincident2;              // (1e-12 h)^2: below it a pair counts as coincident (PairDistance)
+  float coincident2;              // (1e-12 h)^2, at least the smallest normal float: below it a
+                                  // pair counts as coincident (PairDistance)
 
   static SmoothingKernels for_support(double support) {
     const double pi = 3.14159265358979323846;
@@ -35,12 +41,12 @@ struct SmoothingKernels {
             static_cast<float>(15.0 / (pi * h6)),
             static_cast<float>(-45.0 / (pi * h6)),
             static_cast<float>(45.0 / (pi * h6)),
-            static_cast<float>(1e-24 * support * support)};
+            static_cast<float>(std::max(1e-24 * support * support, double{std::numeric_limits<float>::min()}))};
   }
 
   MSSPH_HD PairDistance pair_distance(float r2) const {
 #if defined(__CUDA_ARCH__)
-    const float inverse = r2 > coincident2 ? rsqrtf(r2) : 0.0f;
+    const float inverse = r2 > coincident2 ? normal_rsqrt(r2) : 0.0f;
     return {r2 * inverse, inverse};
 #else
     if (r2 <= coincident2) return {0.0f, 0.0f};

@@ -6,6 +6,7 @@
 #include "common/smoothing_kernels.hpp"
 #include "twin_support.hpp"
 
+#include <limits>
 #include <numbers>
 
 namespace mssph::testing {
@@ -54,8 +55,9 @@ TEST(SmoothingKernelTwins, SpikyGradient) {
 
 // A pair's distance and its inverse from r^2 (PairDistance), against double; and coincident
 // particles (r <= 1e-12 h), where the gradient has no direction: r = 0, 1 / r = 0, zero gradient.
-// This is the host's arithmetic; the GPU's rsqrtf is checked by the cuda agreement tests against
-// the float64 reference (tests/backends), which run where a GPU is present.
+// This is the host's arithmetic; the GPU's root (normal_rsqrt) is checked by the cuda agreement
+// tests against the float64 reference (tests/backends), which run where a GPU is present. The
+// threshold is at least the smallest normal float, the one argument that root must never take.
 TEST(SmoothingKernelTwins, PairDistance) {
   TwinDraws draws("SmoothingKernelTwins.PairDistance");
   TwinComparison distance("r from r^2", 0.9), inverse("1 / r from r^2", 0.9);
@@ -74,6 +76,10 @@ TEST(SmoothingKernelTwins, PairDistance) {
     const kernels::Vec3 gradient = kernel.spiky_gradient(kernels::Vec3{1e-15f, 0.0f, 0.0f}, d);
     EXPECT_EQ(gradient.x, 0.0f) << "r^2 = " << r2;
   }
+  // A support so small that (1e-12 h)^2 is subnormal: a subnormal r^2 is still coincident.
+  const kernels::SmoothingKernels tiny = kernels::SmoothingKernels::for_support(1e-9);
+  EXPECT_EQ(tiny.coincident2, std::numeric_limits<float>::min());
+  EXPECT_EQ(tiny.pair_distance(1e-39f).inverse, 0.0f);
 }
 
 TEST(SmoothingKernelTwins, ViscosityLaplacian) {
