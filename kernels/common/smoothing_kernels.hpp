@@ -10,13 +10,14 @@
 namespace mssph::kernels {
 
 // A pair's distance r = |x_i - x_j| and 1 / r from r^2. On the GPU both come from one reciprocal
-// square root, rsqrtf (within 2 ulp, CUDA C++ Programming Guide), so a pair term needs neither a
-// square root nor a division: those are IEEE instruction sequences with a slow-path branch, and a
-// warp runs a pair term whenever one of its 32 lanes meets a neighbour, at nearly every candidate.
-// The host takes the IEEE square root and division. Coincident particles (r <= 1e-12 h, where the
-// spiky gradient has no direction, and r^2 at most the smallest normal float) get r = 0 and
-// 1 / r = 0; a NaN r^2 gives a NaN r on both. Every r^2 past that test is a normal float, so the
-// GPU takes rsqrtf's approximation without its rescaling of subnormal arguments (the same bits).
+// square root, the hardware approximation behind rsqrtf (within 2 ulp, CUDA C++ Programming
+// Guide), so a pair term needs neither a square root nor a division: those are IEEE instruction
+// sequences with a slow-path branch, and a warp runs a pair term whenever one of its 32 lanes
+// meets a neighbour, at nearly every candidate. The host takes the IEEE square root and division.
+// Coincident particles (r <= 1e-12 h, where the spiky gradient has no direction, or r^2 at most
+// the smallest normal float) get r = 0 and 1 / r = 0; a NaN r^2 gives a NaN r on both. Every r^2
+// past that test is a normal float or +inf, so the GPU's root (normal_rsqrt) needs no rescaling
+// of subnormal arguments.
 struct PairDistance {
   float r;        // [m]
   float inverse;  // 1 / r [1/m], 0 for coincident particles

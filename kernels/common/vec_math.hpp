@@ -55,9 +55,10 @@ MSSPH_HD float fast_quotient(float x, float y) {
 }
 
 #if defined(__CUDA_ARCH__)
-// 1 / sqrt(x) for a normal float x > 0: the hardware approximation that rsqrtf takes (within
-// 2 ulp, CUDA C++ Programming Guide), without the rescaling rsqrtf wraps around it for subnormal
-// x, which such an x never takes: the same bits in fewer instructions.
+// 1 / sqrt(x) for a normal float x > 0 or +inf: the hardware approximation that rsqrtf takes
+// (within 2 ulp, CUDA C++ Programming Guide), without the rescaling rsqrtf wraps around it for a
+// subnormal x: for these arguments the same bits in fewer instructions. A subnormal or zero x is
+// flushed to +0 and gives +inf; callers keep it out (pair_distance's coincidence test).
 __device__ __forceinline__ float normal_rsqrt(float x) {
   float y;
   asm("rsqrt.approx.ftz.f32 %0, %1;" : "=f"(y) : "f"(x));

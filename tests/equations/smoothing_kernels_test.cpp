@@ -57,7 +57,7 @@ TEST(SmoothingKernelTwins, SpikyGradient) {
 // particles (r <= 1e-12 h), where the gradient has no direction: r = 0, 1 / r = 0, zero gradient.
 // This is the host's arithmetic; the GPU's root (normal_rsqrt) is checked by the cuda agreement
 // tests against the float64 reference (tests/backends), which run where a GPU is present. The
-// threshold is at least the smallest normal float, the one argument that root must never take.
+// threshold is at least the smallest normal float, so that root never takes a subnormal r^2.
 TEST(SmoothingKernelTwins, PairDistance) {
   TwinDraws draws("SmoothingKernelTwins.PairDistance");
   TwinComparison distance("r from r^2", 0.9), inverse("1 / r from r^2", 0.9);
