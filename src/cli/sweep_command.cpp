@@ -60,7 +60,6 @@ struct SweepArgs {
 // The metric names scripts/analysis/log_metrics.py defines: the one list a sweep file's
 // "metrics" is checked against.
 std::vector<std::string> known_metrics() {
-  check_python_modules(kDataModules);  // the metrics and the summary are scripts that import them
   std::string output;
   const int code = run_python_script_capturing(kMetricsScript, {"--list"}, output);
   if (code != 0) {
@@ -233,6 +232,7 @@ int print_dry_run(const SweepFile& sweep, const std::vector<SweepPoint>& points,
 
 int run_sweep(const SweepArgs& args) {
   check_arguments(args);
+  check_python_modules(kDataModules);  // the metrics and the summary are scripts that import them
   const SweepFile sweep = load_sweep_file(args.sweep_file, known_metrics());
   std::vector<SweepPoint> points = expand_points(sweep, args.overrides);
   validate_points(sweep, args.overrides, points);
