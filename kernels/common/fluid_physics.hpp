@@ -603,12 +603,25 @@ MSSPH_HD void apply_forces(const SortedView& v, const CanonicalState& c, const F
 // component (body_of).
 MSSPH_HD Vec4 cell_ordered_position(Vec3 x, std::uint32_t body) { return make_vec4(x, index_as_float_bits(body)); }
 
+// Canonical particle i as cell order holds it: its position record and its velocity.
+struct CellOrderedParticle {
+  Vec4 position;  // cell_ordered_position
+  Vec4 velocity;
+};
+MSSPH_HD CellOrderedParticle cell_ordered_particle(std::uint32_t i, const Vec4* position, const Vec4* velocity,
+                                                   const std::uint32_t* body) {
+  return {cell_ordered_position(xyz(position[i]), body[i]), velocity[i]};
+}
+
 // Copies canonical particle i's position (with its body index) and velocity into cell order, as
-// sorted particle s.
+// sorted particle s. Both are loaded before either is stored: a compiler that cannot tell the
+// arrays apart keeps a load after a store that comes before it, and each gather would wait for
+// the one before.
 MSSPH_HD void place_in_cell_order(std::uint32_t s, std::uint32_t i, const Vec4* position, const Vec4* velocity,
                                   const std::uint32_t* body, Vec4* sorted_position, Vec4* sorted_velocity) {
-  sorted_position[s] = cell_ordered_position(xyz(position[i]), body[i]);
-  sorted_velocity[s] = velocity[i];
+  const CellOrderedParticle particle = cell_ordered_particle(i, position, velocity, body);
+  sorted_position[s] = particle.position;
+  sorted_velocity[s] = particle.velocity;
 }
 
 }  // namespace mssph::kernels

@@ -43,14 +43,18 @@ struct GridArrays {
     place_in_cell_order(s, sorted_id[s], position, velocity, body, sorted_position, sorted_velocity);
   }
 
-  // The second stage of CellRanges::cell_body (entry_joined_by), once each cell's first particle
-  // has written its sole_body_entry: the particle at place s marks its cell mixed where its body
-  // differs. All such writes store kMixedCell, so their order does not matter.
-  __device__ void join_cell_body(std::uint32_t s) const {
-    const Vec4 p = sorted_position[s];
-    const std::uint32_t cell = grid.key_of(xyz(p));
-    const std::uint16_t entry = cell_body[cell];
-    if (entry_joined_by(entry, body_of(p)) != entry) cell_body[cell] = kMixedCell;
+  // The grid's last stage (grid_kernel): copies the particle of place s in cell order there and,
+  // where cells note their body, takes the second stage of CellRanges::cell_body (entry_joined_by)
+  // once each cell's first particle has written its sole_body_entry: the particle marks its cell
+  // mixed where its body differs. All such writes store kMixedCell, so their order does not
+  // matter. Every load comes before the stores, for the reason place_in_cell_order gives.
+  __device__ void copy_into_cell_order_and_join(std::uint32_t s) const {
+    const CellOrderedParticle particle = cell_ordered_particle(sorted_id[s], position, velocity, body);
+    const std::uint32_t cell = cell_body ? grid.key_of(xyz(particle.position)) : 0u;
+    const std::uint16_t entry = cell_body ? cell_body[cell] : kMixedCell;
+    sorted_position[s] = particle.position;
+    sorted_velocity[s] = particle.velocity;
+    if (cell_body && entry_joined_by(entry, body_of(particle.position)) != entry) cell_body[cell] = kMixedCell;
   }
 };
 
@@ -182,10 +186,7 @@ __global__ void __launch_bounds__(kBlock) grid_kernel(GridArrays a, bool check) 
     if (a.place_of) a.place_of[i] = first + rank;
   });
   grid.sync();
-  for_each_grid_item(a.n, [&](std::uint32_t s) {
-    a.copy_into_cell_order(s);
-    if (a.cell_body) a.join_cell_body(s);
-  });
+  for_each_grid_item(a.n, [&](std::uint32_t s) { a.copy_into_cell_order_and_join(s); });
 }
 
 // Copies every particle into the last rebuild's cell order: the host replaced the canonical state
