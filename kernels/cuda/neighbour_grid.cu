@@ -49,12 +49,13 @@ struct GridArrays {
   // mixed where its body differs. All such writes store kMixedCell, so their order does not
   // matter. Every load comes before the stores, for the reason place_in_cell_order gives.
   __device__ void copy_into_cell_order_and_join(std::uint32_t s) const {
+    if (!cell_body) return copy_into_cell_order(s);
     const CellOrderedParticle particle = cell_ordered_particle(sorted_id[s], position, velocity, body);
-    const std::uint32_t cell = cell_body ? grid.key_of(xyz(particle.position)) : 0u;
-    const std::uint16_t entry = cell_body ? cell_body[cell] : kMixedCell;
+    const std::uint32_t cell = grid.key_of(xyz(particle.position));
+    const std::uint16_t entry = cell_body[cell];
     sorted_position[s] = particle.position;
     sorted_velocity[s] = particle.velocity;
-    if (cell_body && entry_joined_by(entry, body_of(particle.position)) != entry) cell_body[cell] = kMixedCell;
+    if (entry_joined_by(entry, body_of(particle.position)) != entry) cell_body[cell] = kMixedCell;
   }
 };
 
